@@ -1,0 +1,43 @@
+// One ball's kinematic state. Each ball carries the time its state refers to, so an event
+// touches only the balls it involves; every other ball keeps its closed-form trajectory.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "cue_sim/physics/types.hpp"
+
+namespace cue_sim
+{
+namespace physics
+{
+/// Values match cue_sim/BallState.msg.
+enum class Motion : std::uint8_t
+{
+  Stationary = 0,
+  Spinning = 1,  ///< only z-spin is left
+  Sliding = 2,   ///< the contact point slips on the cloth
+  Rolling = 3,   ///< no slip: w_xy = (z x v) / R
+  Pocketed = 4,  ///< out of play
+};
+
+const char* motionName(Motion motion);
+
+template <typename S>
+struct Ball
+{
+  int id = 0;  ///< 0 is the cue ball; 1-15 the object balls.
+  Motion motion = Motion::Stationary;
+  S time = S(0);             ///< time [s] that r, v, w refer to
+  Vec3<S> r = Vec3<S>::Zero();  ///< centre in the table frame [m]; z = R on the cloth
+  Vec3<S> v = Vec3<S>::Zero();  ///< velocity [m/s]; z = 0
+  Vec3<S> w = Vec3<S>::Zero();  ///< angular velocity [rad/s]
+  int pocket = -1;           ///< index into TableModel::pockets when pocketed
+
+  bool inPlay() const { return motion != Motion::Pocketed; }
+  bool moving() const { return motion == Motion::Sliding || motion == Motion::Rolling || motion == Motion::Spinning; }
+  bool translating() const { return motion == Motion::Sliding || motion == Motion::Rolling; }
+};
+
+}  // namespace physics
+}  // namespace cue_sim

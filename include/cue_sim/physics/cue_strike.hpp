@@ -1,0 +1,46 @@
+// The cue's impulse on a ball (Alciatore TP A-30; Leckie and Greenspan 2005, eq. 1).
+#pragma once
+
+#include <string>
+
+#include "cue_sim/physics/ball.hpp"
+#include "cue_sim/physics/physics_params.hpp"
+
+namespace cue_sim
+{
+namespace physics
+{
+/// A cue strike. Sign conventions (shooter behind the ball, looking along phi):
+///  - phi: heading in the table frame, from +x towards +y [rad];
+///  - theta: cue elevation above the cloth [rad], 0 = level, in [0, max_elevation];
+///  - a: tip offset to the shooter's right, b: tip offset up, both in units of R.
+///    b > 0 is follow (topspin), b < 0 draw; a > 0 hits right of centre and gives the
+///    ball w_z > 0 (counter-clockwise seen from above).
+template <typename S>
+struct CueStrike
+{
+  S speed = S(0);  ///< V0, the cue's speed at impact [m/s]
+  S phi = S(0);
+  S theta = S(0);
+  S a = S(0);
+  S b = S(0);
+};
+
+struct CueLimits
+{
+  static constexpr double max_speed = 12.0;  ///< [m/s]: a very hard break is about 11 m/s.
+  static constexpr double max_offset = 0.5;  ///< sqrt(a^2 + b^2) [R]: beyond it the tip miscues.
+  static constexpr double max_elevation = 1.5707963267948966;  ///< [rad]: vertical (masse).
+};
+
+/// Empty if the strike is in range, else which field is out of range and what the range is.
+template <typename S>
+std::string validateStrike(const CueStrike<S>& strike);
+
+/// The ball's velocity and spin right after the cue leaves it (the cue's vertical momentum
+/// goes into the cloth; squirt and the tip's curvature come with issue 3's model).
+template <typename S>
+void applyCueStrike(Ball<S>& ball, const CueStrike<S>& strike, const PhysicsParams<S>& p);
+
+}  // namespace physics
+}  // namespace cue_sim

@@ -1,0 +1,42 @@
+// What happened during a shot: one record per processed event.
+#pragma once
+
+#include "cue_sim/physics/types.hpp"
+
+namespace cue_sim
+{
+namespace physics
+{
+/// Values match cue_sim/Event kinds documented in README.md.
+enum class EventKind : int
+{
+  None = -1,
+  SlideToRoll = 0,   ///< slip reached zero: natural roll begins
+  RollToSpin = 1,    ///< rolling stopped with z-spin left
+  RollToStop = 2,    ///< rolling stopped
+  SpinToStop = 3,    ///< z-spin ran out
+  SlideToSpin = 4,   ///< sliding ended with no translation left (a pure spin)
+  SlideToStop = 5,   ///< sliding ended with nothing left
+  BallBall = 10,     ///< balls `ball` and `other` collided
+  BallCushion = 11,  ///< `ball` hit straight cushion `obstacle`
+  BallCircle = 12,   ///< `ball` hit circular cushion `obstacle` (jaw or cushion end)
+  Pocketed = 13,     ///< `ball` dropped into pocket `obstacle`
+};
+
+const char* eventKindName(EventKind kind);
+
+template <typename S>
+struct Event
+{
+  EventKind kind = EventKind::None;
+  S time = infinity<S>();  ///< [s]
+  int ball = -1;           ///< id of the (first) ball
+  int other = -1;          ///< id of the second ball (BallBall) or -1
+  int obstacle = -1;       ///< index of the cushion, circle or pocket, or -1
+
+  bool valid() const { return kind != EventKind::None; }
+  bool isCollision() const { return kind == EventKind::BallBall || kind == EventKind::BallCushion || kind == EventKind::BallCircle; }
+};
+
+}  // namespace physics
+}  // namespace cue_sim

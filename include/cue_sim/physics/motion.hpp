@@ -1,0 +1,58 @@
+// The closed-form motion of a ball between events: sliding, rolling, spinning (Leckie and
+// Greenspan 2005; Alciatore, "Pool and Billiards Physics Principles", TP 4.1; the derivation
+// is in README.md). Nothing here integrates: every state at every time is a formula.
+#pragma once
+
+#include "cue_sim/physics/ball.hpp"
+#include "cue_sim/physics/event.hpp"
+#include "cue_sim/physics/physics_params.hpp"
+
+namespace cue_sim
+{
+namespace physics
+{
+/// Velocity of the ball's contact point with the cloth, u = v + w x (-R z); its z part is 0.
+template <typename S>
+Vec3<S> slipVelocity(const Vec3<S>& v, const Vec3<S>& w, S radius);
+
+/// Motion state implied by v and w (Sliding, Rolling, Spinning or Stationary).
+template <typename S>
+Motion classifyMotion(const Vec3<S>& v, const Vec3<S>& w, S radius);
+
+/// Gives the ball the motion its v and w imply, snapping to exact rolling/rest when the slip
+/// or speed is below zeroSpeed() so that no spurious transition follows.
+template <typename S>
+void settleMotion(Ball<S>& ball, S radius);
+
+/// Duration [s] of the ball's current motion state from ball.time; +inf if it never ends.
+template <typename S>
+S timeToTransition(const Ball<S>& ball, const PhysicsParams<S>& p);
+
+/// The ball at time t >= ball.time, t no later than its transition: pure, closed form.
+template <typename S>
+Ball<S> evolve(const Ball<S>& ball, S t, const PhysicsParams<S>& p);
+
+/// Position in the current motion state as a quadratic in tau = t - t_base:
+/// r(tau) = c0 + c1 tau + c2 tau^2 (xy; valid until the ball's next transition).
+template <typename S>
+struct Trajectory
+{
+  Vec2<S> c0, c1, c2;
+  Vec2<S> at(S tau) const { return c0 + tau * (c1 + tau * c2); }
+  Vec2<S> velocityAt(S tau) const { return c1 + S(2) * tau * c2; }
+};
+
+template <typename S>
+Trajectory<S> trajectoryFrom(const Ball<S>& ball, S t_base, const PhysicsParams<S>& p);
+
+/// Applies the transition that ends the ball's current motion state (the ball must be at its
+/// transition time) and returns which it was.
+template <typename S>
+EventKind applyTransition(Ball<S>& ball, const PhysicsParams<S>& p);
+
+/// Kinetic energy [J] of translation and rotation (solid sphere, I = 2/5 m R^2).
+template <typename S>
+S kineticEnergy(const Ball<S>& ball, const PhysicsParams<S>& p);
+
+}  // namespace physics
+}  // namespace cue_sim

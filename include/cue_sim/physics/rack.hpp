@@ -1,0 +1,34 @@
+// Standard racks on a table model: ball positions only; all balls at rest.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cue_sim/physics/table_model.hpp"
+#include "cue_sim/physics/table_state.hpp"
+
+namespace cue_sim
+{
+namespace physics
+{
+struct RackOptions
+{
+  /// Gap [m] between neighbouring balls of the triangle or diamond (a tight rack has small
+  /// gaps; 0 freezes the balls together).
+  double gap = 1e-5;
+};
+
+/// The names rackLayout() accepts.
+std::vector<std::string> rackNames();
+
+/// "eight": cue ball on the head string, balls 1-15 in a triangle with the apex on the foot
+/// spot (8 in the centre, a solid and a stripe in the back corners). "nine": balls 1-9 in a
+/// diamond, 1 at the apex, 9 in the centre. "empty": the cue ball alone on the head string.
+/// The head string and foot spot are a quarter of the cloth length from each end. Throws
+/// std::invalid_argument for another name.
+template <typename S>
+TableState<S> rackLayout(const std::string& name, const TableModel& table, S ball_radius,
+                         const RackOptions& options = {});
+
+}  // namespace physics
+}  // namespace cue_sim

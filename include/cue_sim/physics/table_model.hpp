@@ -1,0 +1,83 @@
+// The table's geometry: built once (from URDF or in code), never changed by a simulation.
+// All coordinates are in the table frame: origin at the centre of the playing surface, x along
+// the long axis, y across, z up, the cloth at z = 0.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+namespace cue_sim
+{
+namespace physics
+{
+/// A straight cushion: the line of the rubber nose, from start to end. The playing area lies
+/// on the side of `normal` (pointing from the cushion into play).
+struct CushionSegment
+{
+  std::string name;
+  Eigen::Vector2d start;
+  Eigen::Vector2d end;
+  Eigen::Vector2d direction;  ///< unit, start -> end
+  Eigen::Vector2d normal;     ///< unit, into the playing area
+  double length = 0;
+};
+
+/// A circular cushion (a pocket jaw, or the rounded end of a straight cushion): a ball touches
+/// it when its centre is radius + R from `centre`.
+struct CircularCushion
+{
+  std::string name;
+  Eigen::Vector2d centre;
+  double radius = 0;
+};
+
+/// A pocket: a ball whose centre enters the capture circle drops and leaves play.
+struct Pocket
+{
+  std::string name;
+  Eigen::Vector2d centre;
+  double radius = 0;
+};
+
+class TableModel
+{
+public:
+  /// The playing surface is the rectangle |x - cx| <= length/2, |y - cy| <= width/2.
+  TableModel(std::string name, Eigen::Vector2d cloth_centre, double cloth_length, double cloth_width,
+             std::vector<CushionSegment> segments, std::vector<CircularCushion> circles, std::vector<Pocket> pockets);
+
+  /// A segment from start to end whose playing side is to the left of start -> end.
+  static CushionSegment makeSegment(std::string name, const Eigen::Vector2d& start, const Eigen::Vector2d& end);
+
+  /// A 7-ft or 9-ft six-pocket pool table or a pocketless carom table built in code, the same
+  /// geometry the URDF files in urdf/ describe (for tests and benchmarks without urdfdom).
+  static TableModel pool(const std::string& name, double cloth_length, double cloth_width, double corner_mouth,
+                         double side_mouth);
+  static TableModel carom(const std::string& name, double cloth_length, double cloth_width);
+
+  const std::string& name() const { return name_; }
+  const Eigen::Vector2d& clothCentre() const { return cloth_centre_; }
+  double clothLength() const { return cloth_length_; }
+  double clothWidth() const { return cloth_width_; }
+  const std::vector<CushionSegment>& segments() const { return segments_; }
+  /// Jaws and segment end caps.
+  const std::vector<CircularCushion>& circles() const { return circles_; }
+  const std::vector<Pocket>& pockets() const { return pockets_; }
+
+  /// Empty if a ball of radius R can rest with its centre at p: on the cloth, clear of every
+  /// cushion, outside every pocket; otherwise why not.
+  std::string whyNotPlaceable(const Eigen::Vector2d& p, double ball_radius) const;
+
+private:
+  std::string name_;
+  Eigen::Vector2d cloth_centre_;
+  double cloth_length_;
+  double cloth_width_;
+  std::vector<CushionSegment> segments_;
+  std::vector<CircularCushion> circles_;
+  std::vector<Pocket> pockets_;
+};
+
+}  // namespace physics
+}  // namespace cue_sim

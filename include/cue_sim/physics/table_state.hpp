@@ -1,0 +1,63 @@
+// The mutable part of a simulation: the balls and the clock. Copy it to predict a shot; the
+// table model it runs on is shared and immutable.
+#pragma once
+
+#include <vector>
+
+#include "cue_sim/physics/ball.hpp"
+
+namespace cue_sim
+{
+namespace physics
+{
+template <typename S>
+struct TableState
+{
+  /// The time [s] the state has been advanced to. Balls keep their own reference times
+  /// (Ball::time <= time); Engine::ballAt() gives a ball at any time.
+  S time = S(0);
+  /// Time [s] of the last processed event. Predictions start from here, not from `time`, so a
+  /// shot's events do not depend on how often it was advanced.
+  S event_time = S(0);
+  std::vector<Ball<S>> balls;
+
+  /// Index of the ball with this id, or -1.
+  int indexOf(int id) const
+  {
+    for (std::size_t i = 0; i < balls.size(); ++i)
+      if (balls[i].id == id)
+        return static_cast<int>(i);
+    return -1;
+  }
+  bool anyMoving() const
+  {
+    for (const auto& b : balls)
+      if (b.moving())
+        return true;
+    return false;
+  }
+
+  template <typename T>
+  TableState<T> cast() const
+  {
+    TableState<T> out;
+    out.time = T(time);
+    out.event_time = T(event_time);
+    for (const auto& b : balls)
+    {
+      Ball<T> c;
+      c.id = b.id;
+      c.motion = b.motion;
+      c.time = T(b.time);
+      c.r = b.r.template cast<T>();
+      c.v = b.v.template cast<T>();
+      c.w = b.w.template cast<T>();
+      c.pocket = b.pocket;
+      out.balls.push_back(c);
+    }
+    return out;
+  }
+};
+
+}  // namespace physics
+}  // namespace cue_sim

@@ -1,0 +1,56 @@
+#include "cue_sim/physics/cue_strike.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace cue_sim
+{
+namespace physics
+{
+template <typename S>
+std::string validateStrike(const CueStrike<S>& s)
+{
+  std::ostringstream why;
+  const auto bad = [](S x) { return !std::isfinite(static_cast<double>(x)); };
+  if (bad(s.speed) || !(s.speed > S(0)) || s.speed > S(CueLimits::max_speed))
+    why << "speed must be in (0, " << CueLimits::max_speed << "] m/s, got " << static_cast<double>(s.speed);
+  else if (bad(s.phi))
+    why << "phi must be a finite angle in rad, got " << static_cast<double>(s.phi);
+  else if (bad(s.theta) || s.theta < S(0) || s.theta > S(CueLimits::max_elevation))
+    why << "theta must be in [0, " << CueLimits::max_elevation << "] rad, got " << static_cast<double>(s.theta);
+  else if (bad(s.a) || bad(s.b) || std::hypot(static_cast<double>(s.a), static_cast<double>(s.b)) > CueLimits::max_offset)
+    why << "a and b must be finite with sqrt(a^2 + b^2) <= " << CueLimits::max_offset << " (units of R), got a = "
+        << static_cast<double>(s.a) << ", b = " << static_cast<double>(s.b);
+  return why.str();
+}
+
+template <typename S>
+void applyCueStrike(Ball<S>& ball, const CueStrike<S>& s, const PhysicsParams<S>& p)
+{
+  const S R = p.ball_radius;
+  // Table-frame axes of the shot: h along the heading, side to the shooter's right, z up.
+  const Vec3<S> h(std::cos(s.phi), std::sin(s.phi), S(0));
+  const Vec3<S> side(h.y(), -h.x(), S(0));
+  const Vec3<S> z = Vec3<S>::UnitZ();
+  const S A = s.a * R, B = s.b * R;
+  const S C = std::sqrt(std::max(R * R - A * A - B * B, S(0)));
+  const S sin_t = std::sin(s.theta), cos_t = std::cos(s.theta);
+  // Contact point relative to the centre and the cue's direction into the ball.
+  const Vec3<S> contact = A * side + B * z - C * h;
+  const Vec3<S> cue_dir = cos_t * h - sin_t * z;
+  const Vec3<S> lever = contact.cross(cue_dir);
+  // Impulse of an elastic cue on a free sphere hit at `contact` (Alciatore TP A-30):
+  // v = 2 V0 / (1 + m/M + |contact x d|^2 / (2/5 R^2)).
+  const S speed = S(2) * s.speed / (S(1) + p.ball_mass / p.cue_mass + lever.squaredNorm() / (S(0.4) * R * R));
+  ball.v = speed * cos_t * h;  // the vertical part goes into the cloth
+  ball.w = (speed / (S(0.4) * R * R)) * lever;
+  ball.r.z() = R;
+}
+
+template std::string validateStrike(const CueStrike<double>&);
+template std::string validateStrike(const CueStrike<long double>&);
+template void applyCueStrike(Ball<double>&, const CueStrike<double>&, const PhysicsParams<double>&);
+template void applyCueStrike(Ball<long double>&, const CueStrike<long double>&, const PhysicsParams<long double>&);
+
+}  // namespace physics
+}  // namespace cue_sim

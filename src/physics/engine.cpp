@@ -1,0 +1,464 @@
+#include "cue_sim/physics/engine.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <sstream>
+
+#include "cue_sim/physics/motion.hpp"
+#include "cue_sim/physics/polynomial.hpp"
+
+namespace cue_sim
+{
+namespace physics
+{
+const char* eventKindName(EventKind kind)
+{
+  switch (kind)
+  {
+    case EventKind::None:
+      return "none";
+    case EventKind::SlideToRoll:
+      return "slide_to_roll";
+    case EventKind::RollToSpin:
+      return "roll_to_spin";
+    case EventKind::RollToStop:
+      return "roll_to_stop";
+    case EventKind::SpinToStop:
+      return "spin_to_stop";
+    case EventKind::SlideToSpin:
+      return "slide_to_spin";
+    case EventKind::SlideToStop:
+      return "slide_to_stop";
+    case EventKind::BallBall:
+      return "ball_ball";
+    case EventKind::BallCushion:
+      return "ball_cushion";
+    case EventKind::BallCircle:
+      return "ball_circle";
+    case EventKind::Pocketed:
+      return "pocketed";
+  }
+  return "unknown";
+}
+
+/// The table's geometry converted once to the engine's scalar type.
+template <typename S>
+struct Engine<S>::Obstacles
+{
+  struct Segment
+  {
+    Vec2<S> start, direction, normal;
+    S length;
+  };
+  struct Circle
+  {
+    Vec2<S> centre;
+    S radius;
+  };
+  std::vector<Segment> segments;
+  std::vector<Circle> circles;  // cushions with radius, then pockets with capture radius
+  std::vector<Circle> pockets;
+};
+
+namespace
+{
+/// Horizon for balls whose motion never ends (no friction): far beyond any shot, and fixed,
+/// so that predictions never depend on how far a caller asks to advance.
+template <typename S>
+constexpr S kEndlessHorizon = S(1e7);
+
+/// Time from the base at which a gap function (positive while apart) closes with the bodies
+/// approaching, within (0, limit]; 0 if they touch and approach now; +inf if never.
+/// `approach_slope` is the gap's rate of change that counts as approaching; `touch` is the gap
+/// within which two bodies count as touching (the rounding of the gap's constant term).
+///
+/// Bodies that touch and separate slowly may be pushed back together by their accelerations
+/// (two slow balls rolling in slightly different directions) before the computed gap ever
+/// becomes positive. For them the contact is when the gap returns to its starting value: the
+/// down-crossing of (gap(tau) - gap(0)) / tau, which has no cancellation.
+template <typename S>
+S contactTime(const Poly4<S>& gap, S limit, S approach_slope, S touch)
+{
+  if (gap[0] > touch)
+    return firstDownCrossing(gap, S(0), limit);
+  if (gap[1] < approach_slope)
+    return S(0);
+  const Poly4<S> relative = { gap[1], gap[2], gap[3], gap[4], S(0) };
+  return firstDownCrossing(relative, S(0), limit);
+}
+
+/// Gap values within this of zero are rounding: 64 ulps of the squared contact distance.
+template <typename S>
+S touchTolerance(S reach_squared)
+{
+  return S(64) * std::numeric_limits<S>::epsilon() * reach_squared;
+}
+
+/// |d(tau)|^2 - reach^2 for the relative position d(tau) = c0 + c1 tau + c2 tau^2.
+template <typename S>
+Poly4<S> distanceGap(const Vec2<S>& c0, const Vec2<S>& c1, const Vec2<S>& c2, S reach)
+{
+  return { c0.squaredNorm() - reach * reach, S(2) * c0.dot(c1), c1.squaredNorm() + S(2) * c0.dot(c2),
+           S(2) * c1.dot(c2), c2.squaredNorm() };
+}
+
+/// True if two bodies reach-apart at the base cannot meet within `limit`: a cheap bound on
+/// the relative travel, so that far pairs never reach the quartic solver.
+template <typename S>
+bool cannotMeet(const Vec2<S>& c0, const Vec2<S>& c1, const Vec2<S>& c2, S reach, S limit)
+{
+  return c0.norm() - reach > limit * (c1.norm() + limit * c2.norm());
+}
+}  // namespace
+
+template <typename S>
+Engine<S>::Engine(std::shared_ptr<const TableModel> table, const PhysicsParams<S>& params, const ModelChoice& models,
+                  const EngineLimits& limits)
+  : table_(std::move(table))
+  , params_(params)
+  , model_choice_(models)
+  , limits_(limits)
+  , ball_ball_(makeBallBallModel<S>(models.ball_ball))
+  , cushion_(makeCushionModel<S>(models.cushion))
+{
+  const std::string why = params_.validate();
+  if (!why.empty())
+    throw std::invalid_argument("physics parameter " + why);
+  auto obstacles = std::make_shared<Obstacles>();
+  for (const auto& s : table_->segments())
+    obstacles->segments.push_back({ s.start.cast<S>(), s.direction.cast<S>(), s.normal.cast<S>(), S(s.length) });
+  for (const auto& c : table_->circles())
+    obstacles->circles.push_back({ c.centre.cast<S>(), S(c.radius) });
+  for (const auto& p : table_->pockets())
+    obstacles->pockets.push_back({ p.centre.cast<S>(), S(p.radius) });
+  obstacles_ = obstacles;
+}
+
+template <typename S>
+Ball<S> Engine<S>::ballAt(const TableState<S>& state, std::size_t index, S t) const
+{
+  return evolve(state.balls.at(index), t, params_);
+}
+
+template <typename S>
+std::vector<Ball<S>> Engine<S>::snapshot(const TableState<S>& state) const
+{
+  std::vector<Ball<S>> balls;
+  balls.reserve(state.balls.size());
+  for (std::size_t i = 0; i < state.balls.size(); ++i)
+    balls.push_back(ballAt(state, i, state.time));
+  return balls;
+}
+
+template <typename S>
+Event<S> Engine<S>::nextEvent(const TableState<S>& state) const
+{
+  const S base = state.event_time;
+  const S R = params_.ball_radius;
+  const std::size_t n = state.balls.size();
+  Event<S> best;
+  int best_index = -1;
+
+  std::vector<S> ends(n, infinity<S>());  // absolute end of each ball's current motion
+  std::vector<Trajectory<S>> paths(n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const Ball<S>& b = state.balls[i];
+    if (!b.inPlay())
+      continue;
+    paths[i] = trajectoryFrom(b, base, params_);
+    if (!b.moving())
+      continue;
+    ends[i] = b.time + timeToTransition(b, params_);
+    if (ends[i] < best.time)
+    {
+      best.time = ends[i];
+      best_index = static_cast<int>(i);
+    }
+  }
+  if (best_index >= 0)
+  {
+    // Which transition it is follows from applying it to a copy.
+    Ball<S> copy = evolve(state.balls[best_index], best.time, params_);
+    best.kind = applyTransition(copy, params_);
+    best.ball = copy.id;
+  }
+
+  const auto limitFor = [&](S end) {
+    const S until = std::min(end, best.time);
+    return std::isfinite(static_cast<double>(until)) ? until - base : kEndlessHorizon<S>;
+  };
+  const auto consider = [&](S tau, EventKind kind, int ball, int other, int obstacle) {
+    if (base + tau < best.time)
+    {
+      best.time = base + tau;
+      best.kind = kind;
+      best.ball = ball;
+      best.other = other;
+      best.obstacle = obstacle;
+    }
+  };
+
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const Ball<S>& bi = state.balls[i];
+    if (!bi.translating())
+      continue;
+    const Trajectory<S>& pi = paths[i];
+    for (std::size_t k = 0; k < obstacles_->segments.size(); ++k)
+    {
+      const auto& seg = obstacles_->segments[k];
+      const S limit = limitFor(ends[i]);
+      const Poly4<S> gap = { seg.normal.dot(pi.c0 - seg.start) - R, seg.normal.dot(pi.c1), seg.normal.dot(pi.c2), S(0),
+                             S(0) };
+      const S tau = contactTime(gap, limit, -zeroSpeed<S>(), touchTolerance(R));
+      if (tau <= limit)
+      {
+        const S along = seg.direction.dot(pi.at(tau) - seg.start);
+        if (along >= S(0) && along <= seg.length)
+          consider(tau, EventKind::BallCushion, bi.id, -1, static_cast<int>(k));
+      }
+    }
+    for (std::size_t k = 0; k < obstacles_->circles.size(); ++k)
+    {
+      const auto& c = obstacles_->circles[k];
+      const S limit = limitFor(ends[i]);
+      const S reach = R + c.radius;
+      if (cannotMeet<S>(pi.c0 - c.centre, pi.c1, pi.c2, reach, limit))
+        continue;
+      const S tau = contactTime(distanceGap<S>(pi.c0 - c.centre, pi.c1, pi.c2, reach), limit,
+                                -S(2) * reach * zeroSpeed<S>(), touchTolerance(reach * reach));
+      if (tau <= limit)
+        consider(tau, EventKind::BallCircle, bi.id, -1, static_cast<int>(k));
+    }
+    for (std::size_t k = 0; k < obstacles_->pockets.size(); ++k)
+    {
+      const auto& p = obstacles_->pockets[k];
+      const S limit = limitFor(ends[i]);
+      if (cannotMeet<S>(pi.c0 - p.centre, pi.c1, pi.c2, p.radius, limit))
+        continue;
+      const S tau = contactTime(distanceGap<S>(pi.c0 - p.centre, pi.c1, pi.c2, p.radius), limit, S(0),
+                                touchTolerance(p.radius * p.radius));
+      if (tau <= limit)
+        consider(tau, EventKind::Pocketed, bi.id, -1, static_cast<int>(k));
+    }
+    for (std::size_t j = 0; j < n; ++j)
+    {
+      const Ball<S>& bj = state.balls[j];
+      if (j == i || !bj.inPlay() || (bj.translating() && j < i))
+        continue;  // a pair of translating balls is examined once, from its lower index
+      const S limit = limitFor(std::min(ends[i], bj.translating() ? ends[j] : infinity<S>()));
+      const Vec2<S> c0 = pi.c0 - paths[j].c0, c1 = pi.c1 - paths[j].c1, c2 = pi.c2 - paths[j].c2;
+      if (cannotMeet<S>(c0, c1, c2, S(2) * R, limit))
+        continue;
+      const S tau = contactTime(distanceGap<S>(c0, c1, c2, S(2) * R), limit, -S(4) * R * zeroSpeed<S>(),
+                                touchTolerance(S(4) * R * R));
+      if (tau <= limit)
+        consider(tau, EventKind::BallBall, bi.id, bj.id, -1);
+    }
+  }
+  return best;
+}
+
+template <typename S>
+void Engine<S>::pocketBall(TableState<S>& state, Ball<S>& ball, int pocket) const
+{
+  // Pocketed balls rest below the cloth at their pocket's centre, stacked in arrival order.
+  int already = 0;
+  for (const auto& b : state.balls)
+    if (b.motion == Motion::Pocketed && b.pocket == pocket)
+      ++already;
+  const auto& p = obstacles_->pockets[pocket];
+  const S R = params_.ball_radius;
+  ball.motion = Motion::Pocketed;
+  ball.pocket = pocket;
+  ball.r = Vec3<S>(p.centre.x(), p.centre.y(), -R - S(2) * R * S(already));
+  ball.v.setZero();
+  ball.w.setZero();
+}
+
+template <typename S>
+bool Engine<S>::inSustainedContact(const Ball<S>& a, const Ball<S>& b) const
+{
+  const Trajectory<S> pa = trajectoryFrom(a, a.time, params_), pb = trajectoryFrom(b, b.time, params_);
+  const Vec2<S> d = pa.c0 - pb.c0;
+  const Vec2<S> n = d.normalized();
+  const Vec2<S> v_rel = pa.c1 - pb.c1;
+  const S closing = -v_rel.dot(n);
+  if (!(closing < S(limits_.sustained_contact_speed)))
+    return false;
+  // After a bounce that removes the closing speed, the squared distance grows as
+  // (|v_t|^2 + d.a_rel) tau^2: negative means the accelerations press the balls back together.
+  const Vec2<S> v_t = v_rel + closing * n;
+  return v_t.squaredNorm() + d.dot(S(2) * (pa.c2 - pb.c2)) < S(0);
+}
+
+template <typename S>
+void Engine<S>::processEvent(TableState<S>& state, const Event<S>& event) const
+{
+  state.event_time = std::max(state.event_time, event.time);
+  Ball<S>& ball = state.balls[state.indexOf(event.ball)];
+  ball = evolve(ball, event.time, params_);
+  const S R = params_.ball_radius;
+  switch (event.kind)
+  {
+    case EventKind::BallBall:
+    {
+      Ball<S>& other = state.balls[state.indexOf(event.other)];
+      other = evolve(other, event.time, params_);
+      if (inSustainedContact(ball, other))
+      {
+        const Vec3<S> v = S(0.5) * (ball.v + other.v), w = S(0.5) * (ball.w + other.w);
+        ball.v = other.v = v;
+        ball.w = other.w = w;
+      }
+      else
+        ball_ball_->resolve(ball, other, params_);
+      settleMotion(ball, R);
+      settleMotion(other, R);
+      break;
+    }
+    case EventKind::BallCushion:
+    {
+      const auto& n = obstacles_->segments[event.obstacle].normal;
+      cushion_->resolve(ball, Vec3<S>(n.x(), n.y(), S(0)), params_);
+      settleMotion(ball, R);
+      break;
+    }
+    case EventKind::BallCircle:
+    {
+      const Vec2<S> n = (ball.r.template head<2>() - obstacles_->circles[event.obstacle].centre).normalized();
+      cushion_->resolve(ball, Vec3<S>(n.x(), n.y(), S(0)), params_);
+      settleMotion(ball, R);
+      break;
+    }
+    case EventKind::Pocketed:
+      pocketBall(state, ball, event.obstacle);
+      break;
+    default:
+      applyTransition(ball, params_);
+      break;
+  }
+}
+
+template <typename S>
+Event<S> Engine<S>::step(TableState<S>& state) const
+{
+  const Event<S> event = nextEvent(state);
+  if (event.valid())
+  {
+    processEvent(state, event);
+    state.time = std::max(state.time, event.time);
+  }
+  return event;
+}
+
+template <typename S>
+void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* events) const
+{
+  long processed = 0;
+  for (;;)
+  {
+    const Event<S> event = nextEvent(state);
+    if (!event.valid() || event.time > t_end)
+      break;
+    if (++processed > limits_.max_events)
+    {
+      std::ostringstream why;
+      why << "event limit reached: more than " << limits_.max_events << " events before t = "
+          << static_cast<double>(event.time) << " s (EngineLimits::max_events)";
+      throw EventLimitError(why.str());
+    }
+    processEvent(state, event);
+    if (events)
+      events->push_back(event);
+  }
+  state.time = std::max(state.time, t_end);
+}
+
+template <typename S>
+ShotResult<S> Engine<S>::simulateToRest(TableState<S>& state) const
+{
+  const S start = state.time;
+  const S stop = start + S(limits_.max_shot_time);
+  ShotResult<S> result;
+  advance(state, stop, &result.events);
+  result.at_rest = !state.anyMoving();
+  if (result.at_rest)
+    state.time = std::max(start, state.event_time);
+  result.duration = state.time - start;
+  return result;
+}
+
+template <typename S>
+std::string Engine<S>::whyNotStrikable(const TableState<S>& state, int ball_id, const CueStrike<S>& strike) const
+{
+  const int index = state.indexOf(ball_id);
+  if (index < 0)
+    return "ball_id " + std::to_string(ball_id) + " is not on the table";
+  if (!state.balls[index].inPlay())
+    return "ball_id " + std::to_string(ball_id) + " is pocketed";
+  return validateStrike(strike);
+}
+
+template <typename S>
+void Engine<S>::strike(TableState<S>& state, int ball_id, const CueStrike<S>& strike) const
+{
+  const std::string why = whyNotStrikable(state, ball_id, strike);
+  if (!why.empty())
+    throw std::invalid_argument(why);
+  Ball<S>& ball = state.balls[state.indexOf(ball_id)];
+  ball = evolve(ball, state.time, params_);
+  applyCueStrike(ball, strike, params_);
+  settleMotion(ball, params_.ball_radius);
+  // The strike is an event: predictions restart from it.
+  state.event_time = state.time;
+}
+
+template <typename S>
+std::string Engine<S>::whyInvalid(const TableState<S>& state, double tolerance) const
+{
+  const double R = static_cast<double>(params_.ball_radius);
+  std::set<int> ids;
+  std::ostringstream why;
+  for (const auto& b : state.balls)
+  {
+    const std::string label = "ball " + std::to_string(b.id);
+    if (b.id < 0)
+      return label + ": id must be >= 0";
+    if (!ids.insert(b.id).second)
+      return label + ": id appears twice";
+    if (!isFinite(b.r) || !isFinite(b.v) || !isFinite(b.w) || !std::isfinite(static_cast<double>(b.time)))
+      return label + ": position, velocity, angular velocity and time must be finite";
+    if (!b.inPlay())
+      continue;
+    if (std::abs(static_cast<double>(b.r.z()) - R) > tolerance)
+      return label + ": a ball on the cloth has z = R = " + std::to_string(R) + " m";
+    const std::string where = table_->whyNotPlaceable(b.r.template head<2>().template cast<double>(), R);
+    if (!where.empty())
+      return label + ": " + where;
+  }
+  for (std::size_t i = 0; i < state.balls.size(); ++i)
+    for (std::size_t j = i + 1; j < state.balls.size(); ++j)
+    {
+      const Ball<S>& a = state.balls[i];
+      const Ball<S>& b = state.balls[j];
+      if (!a.inPlay() || !b.inPlay())
+        continue;
+      const double d = static_cast<double>((evolve(a, state.time, params_).r - evolve(b, state.time, params_).r).norm());
+      if (d < 2 * R - tolerance)
+      {
+        why << "balls " << a.id << " and " << b.id << " overlap: centres " << d << " m apart, less than 2R = " << 2 * R;
+        return why.str();
+      }
+    }
+  return {};
+}
+
+template class Engine<double>;
+template class Engine<long double>;
+
+}  // namespace physics
+}  // namespace cue_sim

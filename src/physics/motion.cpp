@@ -1,0 +1,225 @@
+#include "cue_sim/physics/motion.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cue_sim
+{
+namespace physics
+{
+const char* motionName(Motion motion)
+{
+  switch (motion)
+  {
+    case Motion::Stationary:
+      return "stationary";
+    case Motion::Spinning:
+      return "spinning";
+    case Motion::Sliding:
+      return "sliding";
+    case Motion::Rolling:
+      return "rolling";
+    case Motion::Pocketed:
+      return "pocketed";
+  }
+  return "unknown";
+}
+
+template <typename S>
+Vec3<S> slipVelocity(const Vec3<S>& v, const Vec3<S>& w, S radius)
+{
+  // u = v + w x (-R z) = (v_x - R w_y, v_y + R w_x, 0)
+  return Vec3<S>(v.x() - radius * w.y(), v.y() + radius * w.x(), S(0));
+}
+
+template <typename S>
+Motion classifyMotion(const Vec3<S>& v, const Vec3<S>& w, S radius)
+{
+  if (slipVelocity(v, w, radius).norm() > zeroSpeed<S>())
+    return Motion::Sliding;
+  if (v.norm() > zeroSpeed<S>())
+    return Motion::Rolling;
+  if (std::abs(w.z()) > zeroSpeed<S>())
+    return Motion::Spinning;
+  return Motion::Stationary;
+}
+
+template <typename S>
+void settleMotion(Ball<S>& ball, S radius)
+{
+  if (!ball.inPlay())
+    return;
+  ball.v.z() = S(0);
+  ball.r.z() = radius;
+  ball.motion = classifyMotion(ball.v, ball.w, radius);
+  switch (ball.motion)
+  {
+    case Motion::Rolling:
+      ball.w.x() = -ball.v.y() / radius;
+      ball.w.y() = ball.v.x() / radius;
+      break;
+    case Motion::Spinning:
+      ball.v.setZero();
+      ball.w.x() = ball.w.y() = S(0);
+      break;
+    case Motion::Stationary:
+      ball.v.setZero();
+      ball.w.setZero();
+      break;
+    default:
+      break;
+  }
+}
+
+template <typename S>
+S timeToTransition(const Ball<S>& ball, const PhysicsParams<S>& p)
+{
+  S rate = S(0), amount = S(0);
+  switch (ball.motion)
+  {
+    case Motion::Sliding:  // |u| falls at 7/2 mu_s g
+      rate = S(3.5) * p.slideDecel();
+      amount = slipVelocity(ball.v, ball.w, p.ball_radius).norm();
+      break;
+    case Motion::Rolling:
+      rate = p.rollDecel();
+      amount = ball.v.norm();
+      break;
+    case Motion::Spinning:
+      rate = p.spinDecel();
+      amount = std::abs(ball.w.z());
+      break;
+    default:
+      return infinity<S>();
+  }
+  return rate > S(0) ? amount / rate : infinity<S>();
+}
+
+namespace
+{
+/// z-spin falls linearly to zero in every state (Alciatore TP 4.1, the spin decay).
+template <typename S>
+S decayedSpin(S w_z, S dt, const PhysicsParams<S>& p)
+{
+  const S left = std::max(std::abs(w_z) - p.spinDecel() * dt, S(0));
+  return std::copysign(left, w_z);
+}
+}  // namespace
+
+template <typename S>
+Ball<S> evolve(const Ball<S>& ball, S t, const PhysicsParams<S>& p)
+{
+  Ball<S> out = ball;
+  if (!ball.moving() || !(t > ball.time))
+  {
+    if (ball.inPlay())
+      out.time = std::max(t, ball.time);
+    return out;
+  }
+  const S dt = std::min(t - ball.time, timeToTransition(ball, p));
+  const S R = p.ball_radius;
+  out.time = t;
+  out.w.z() = decayedSpin(ball.w.z(), dt, p);
+  if (ball.motion == Motion::Sliding)
+  {
+    const Vec3<S> u_hat = slipVelocity(ball.v, ball.w, R).normalized();
+    const S decel = p.slideDecel();
+    out.r += ball.v * dt - S(0.5) * decel * dt * dt * u_hat;
+    out.v -= decel * dt * u_hat;
+    // Friction's torque turns w_xy towards z x u_hat at 5 mu_s g / (2R).
+    const S spin_rate = S(2.5) * decel / R * dt;
+    out.w.x() += -u_hat.y() * spin_rate;
+    out.w.y() += u_hat.x() * spin_rate;
+  }
+  else if (ball.motion == Motion::Rolling)
+  {
+    const Vec3<S> v_hat = ball.v.normalized();
+    const S decel = p.rollDecel();
+    out.r += ball.v * dt - S(0.5) * decel * dt * dt * v_hat;
+    out.v -= decel * dt * v_hat;
+    out.w.x() = -out.v.y() / R;
+    out.w.y() = out.v.x() / R;
+  }
+  return out;
+}
+
+template <typename S>
+Trajectory<S> trajectoryFrom(const Ball<S>& ball, S t_base, const PhysicsParams<S>& p)
+{
+  const Ball<S> now = evolve(ball, t_base, p);
+  Trajectory<S> traj;
+  traj.c0 = now.r.template head<2>();
+  traj.c1 = Vec2<S>::Zero();
+  traj.c2 = Vec2<S>::Zero();
+  if (now.motion == Motion::Sliding)
+  {
+    traj.c1 = now.v.template head<2>();
+    traj.c2 = S(-0.5) * p.slideDecel() * slipVelocity(now.v, now.w, p.ball_radius).template head<2>().normalized();
+  }
+  else if (now.motion == Motion::Rolling)
+  {
+    traj.c1 = now.v.template head<2>();
+    traj.c2 = S(-0.5) * p.rollDecel() * traj.c1.normalized();
+  }
+  return traj;
+}
+
+template <typename S>
+EventKind applyTransition(Ball<S>& ball, const PhysicsParams<S>& p)
+{
+  const S R = p.ball_radius;
+  switch (ball.motion)
+  {
+    case Motion::Sliding:
+    {
+      // The slip has just reached zero: the ball rolls with whatever velocity it has.
+      const bool translating = ball.v.norm() > zeroSpeed<S>();
+      if (translating)
+      {
+        ball.w.x() = -ball.v.y() / R;
+        ball.w.y() = ball.v.x() / R;
+        ball.motion = Motion::Rolling;
+        return EventKind::SlideToRoll;
+      }
+      ball.v.setZero();
+      ball.w.x() = ball.w.y() = S(0);
+      ball.motion = ball.w.z() != S(0) ? Motion::Spinning : Motion::Stationary;
+      return ball.motion == Motion::Spinning ? EventKind::SlideToSpin : EventKind::SlideToStop;
+    }
+    case Motion::Rolling:
+      ball.v.setZero();
+      ball.w.x() = ball.w.y() = S(0);
+      ball.motion = std::abs(ball.w.z()) > zeroSpeed<S>() ? Motion::Spinning : Motion::Stationary;
+      if (ball.motion == Motion::Stationary)
+        ball.w.z() = S(0);
+      return ball.motion == Motion::Spinning ? EventKind::RollToSpin : EventKind::RollToStop;
+    case Motion::Spinning:
+      ball.w.setZero();
+      ball.motion = Motion::Stationary;
+      return EventKind::SpinToStop;
+    default:
+      return EventKind::None;
+  }
+}
+
+template <typename S>
+S kineticEnergy(const Ball<S>& ball, const PhysicsParams<S>& p)
+{
+  const S inertia = S(0.4) * p.ball_mass * p.ball_radius * p.ball_radius;
+  return S(0.5) * p.ball_mass * ball.v.squaredNorm() + S(0.5) * inertia * ball.w.squaredNorm();
+}
+
+#define CUE_SIM_INSTANTIATE_MOTION(S)                                                                                  \
+  template Vec3<S> slipVelocity(const Vec3<S>&, const Vec3<S>&, S);                                                   \
+  template Motion classifyMotion(const Vec3<S>&, const Vec3<S>&, S);                                                  \
+  template void settleMotion(Ball<S>&, S);                                                                             \
+  template S timeToTransition(const Ball<S>&, const PhysicsParams<S>&);                                               \
+  template Ball<S> evolve(const Ball<S>&, S, const PhysicsParams<S>&);                                                \
+  template Trajectory<S> trajectoryFrom(const Ball<S>&, S, const PhysicsParams<S>&);                                  \
+  template EventKind applyTransition(Ball<S>&, const PhysicsParams<S>&);                                              \
+  template S kineticEnergy(const Ball<S>&, const PhysicsParams<S>&);
+CUE_SIM_INSTANTIATE_MOTION(double)
+CUE_SIM_INSTANTIATE_MOTION(long double)
+
+}  // namespace physics
+}  // namespace cue_sim

@@ -1,0 +1,68 @@
+#include "cue_sim/physics/rack.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace cue_sim
+{
+namespace physics
+{
+std::vector<std::string> rackNames()
+{
+  return { "eight", "nine", "empty" };
+}
+
+namespace
+{
+template <typename S>
+Ball<S> restingBall(int id, double x, double y, S radius)
+{
+  Ball<S> b;
+  b.id = id;
+  b.r = Vec3<S>(S(x), S(y), radius);
+  return b;
+}
+}  // namespace
+
+template <typename S>
+TableState<S> rackLayout(const std::string& name, const TableModel& table, S ball_radius, const RackOptions& options)
+{
+  // Rows of ball numbers from the apex back. Eight-ball: the 8 in the middle of the third row,
+  // a solid (6) and a stripe (12) in the back corners. Nine-ball: a diamond, 1 at the apex.
+  static const std::vector<std::vector<int>> eight_rows = {
+    { 1 }, { 11, 5 }, { 2, 8, 10 }, { 9, 7, 14, 4 }, { 6, 15, 13, 3, 12 }
+  };
+  static const std::vector<std::vector<int>> nine_rows = { { 1 }, { 2, 3 }, { 4, 9, 5 }, { 6, 7 }, { 8 } };
+  const std::vector<std::vector<int>>* rows = nullptr;
+  if (name == "eight")
+    rows = &eight_rows;
+  else if (name == "nine")
+    rows = &nine_rows;
+  else if (name != "empty")
+    throw std::invalid_argument("unknown rack '" + name + "' (known: eight, nine, empty)");
+
+  const Eigen::Vector2d centre = table.clothCentre();
+  const double quarter = table.clothLength() / 4;
+  TableState<S> state;
+  state.balls.push_back(restingBall<S>(0, centre.x() - quarter, centre.y(), ball_radius));
+  if (!rows)
+    return state;
+  const double spacing = 2 * static_cast<double>(ball_radius) + options.gap;
+  const double row_step = spacing * std::sqrt(3.0) / 2;
+  for (std::size_t k = 0; k < rows->size(); ++k)
+  {
+    const auto& row = (*rows)[k];
+    for (std::size_t j = 0; j < row.size(); ++j)
+    {
+      const double y = (static_cast<double>(j) - (row.size() - 1) / 2.0) * spacing;
+      state.balls.push_back(restingBall<S>(row[j], centre.x() + quarter + k * row_step, centre.y() + y, ball_radius));
+    }
+  }
+  return state;
+}
+
+template TableState<double> rackLayout(const std::string&, const TableModel&, double, const RackOptions&);
+template TableState<long double> rackLayout(const std::string&, const TableModel&, long double, const RackOptions&);
+
+}  // namespace physics
+}  // namespace cue_sim

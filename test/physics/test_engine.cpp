@@ -1,0 +1,318 @@
+// The event loop on whole shots: cushions, pockets, breaks, and the invariants at every event.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <random>
+
+#include "cue_sim/physics/engine.hpp"
+#include "cue_sim/physics/motion.hpp"
+#include "cue_sim/physics/rack.hpp"
+
+using namespace cue_sim::physics;
+
+namespace
+{
+std::shared_ptr<const TableModel> sevenFoot()
+{
+  return std::make_shared<const TableModel>(TableModel::pool("7ft", 1.9812, 0.9906, 0.118, 0.137));
+}
+
+Ball<double> rollingBall(int id, double x, double y, double speed, double heading, const PhysicsParams<double>& p)
+{
+  Ball<double> b;
+  b.id = id;
+  b.r = Vec3<double>(x, y, p.ball_radius);
+  b.v = speed * Vec3<double>(std::cos(heading), std::sin(heading), 0);
+  b.w = Vec3<double>(-b.v.y(), b.v.x(), 0) / p.ball_radius;
+  settleMotion(b, p.ball_radius);
+  return b;
+}
+
+double totalEnergy(const Engine<double>& engine, const TableState<double>& s, double t)
+{
+  double e = 0;
+  for (std::size_t i = 0; i < s.balls.size(); ++i)
+    e += kineticEnergy(engine.ballAt(s, i, t), engine.params());
+  return e;
+}
+
+double smallestGap(const Engine<double>& engine, const TableState<double>& s, double t)
+{
+  double gap = INFINITY;
+  for (std::size_t i = 0; i < s.balls.size(); ++i)
+    for (std::size_t j = i + 1; j < s.balls.size(); ++j)
+      if (s.balls[i].inPlay() && s.balls[j].inPlay())
+        gap = std::min(gap, (engine.ballAt(s, i, t).r - engine.ballAt(s, j, t).r).norm() -
+                                2 * engine.params().ball_radius);
+  return gap;
+}
+
+/// Runs a shot event by event and checks, at every event: momentum conserved at ball-ball
+/// events, kinetic energy never gained, no two balls overlapping, nothing NaN. Returns the
+/// number of events.
+int checkInvariantsEventByEvent(const Engine<double>& engine, TableState<double>& s)
+{
+  const double m = engine.params().ball_mass;
+  int count = 0;
+  for (;; ++count)
+  {
+    const Event<double> ev = engine.nextEvent(s);
+    if (!ev.valid())
+      break;
+    EXPECT_LT(count, 5000) << "runaway events";
+    if (count >= 5000)
+      break;
+    const double energy_before = totalEnergy(engine, s, ev.time);
+    Vec3<double> momentum_before = Vec3<double>::Zero();
+    if (ev.kind == EventKind::BallBall)
+      momentum_before = m * (engine.ballAt(s, s.indexOf(ev.ball), ev.time).v +
+                             engine.ballAt(s, s.indexOf(ev.other), ev.time).v);
+    const Event<double> done = engine.step(s);
+    EXPECT_EQ(done.time, ev.time);
+    const double energy_after = totalEnergy(engine, s, ev.time);
+    EXPECT_LE(energy_after, energy_before * (1 + 1e-12) + 1e-15) << eventKindName(ev.kind) << " at " << ev.time;
+    if (ev.kind == EventKind::BallBall)
+    {
+      const Vec3<double> after =
+          m * (s.balls[s.indexOf(ev.ball)].v + s.balls[s.indexOf(ev.other)].v);
+      EXPECT_NEAR((after - momentum_before).norm(), 0, 1e-12 * (1 + momentum_before.norm()));
+    }
+    EXPECT_GT(smallestGap(engine, s, ev.time), -1e-9) << "overlap at t = " << ev.time;
+    for (const auto& b : s.balls)
+      EXPECT_TRUE(isFinite(b.r) && isFinite(b.v) && isFinite(b.w)) << "ball " << b.id;
+  }
+  return count;
+}
+}  // namespace
+
+TEST(Engine, RollingBallHitsTheFootCushionWhereTheFormulaSays)
+{
+  const PhysicsParams<double> p;
+  Engine<double> engine(sevenFoot(), p);
+  const double v0 = 1.5, heading = 0.3, x0 = 0.2, y0 = -0.1;
+  TableState<double> s;
+  s.balls.push_back(rollingBall(0, x0, y0, v0, heading, p));
+  const Event<double> ev = engine.nextEvent(s);
+  ASSERT_EQ(ev.kind, EventKind::BallCushion);
+  EXPECT_EQ(engine.table().segments()[ev.obstacle].name, "cushion_foot");
+  // Travel along the heading to x = L/2 - R, decelerating at mu_r g.
+  const double distance = (1.9812 / 2 - p.ball_radius - x0) / std::cos(heading);
+  const double a = p.mu_roll * p.gravity;
+  const double t_hit = (v0 - std::sqrt(v0 * v0 - 2 * a * distance)) / a;
+  EXPECT_NEAR(ev.time, t_hit, 1e-12);
+  const Ball<double> before = engine.ballAt(s, 0, ev.time);
+  engine.advance(s, ev.time);
+  const Ball<double>& after = s.balls[0];
+  EXPECT_NEAR(after.v.x(), -p.e_cushion * before.v.x(), 1e-12);
+  EXPECT_NEAR(after.v.y(), before.v.y(), 1e-12);
+  EXPECT_EQ(after.motion, Motion::Sliding);  // its roll no longer matches its velocity
+}
+
+TEST(Engine, BallAimedAtACornerIsPocketedAndLeavesPlay)
+{
+  const PhysicsParams<double> p;
+  Engine<double> engine(sevenFoot(), p);
+  TableState<double> s;
+  const double heading = std::atan2(0.9906 / 2 - 0.1, 1.9812 / 2 - 0.3);
+  s.balls.push_back(rollingBall(3, 0.3, 0.1, 2.0, heading, p));
+  s.balls.push_back(rollingBall(4, -0.5, 0.0, 0.0, 0, p));
+  const ShotResult<double> result = engine.simulateToRest(s);
+  ASSERT_TRUE(result.at_rest);
+  ASSERT_EQ(result.events.size(), 1u);
+  EXPECT_EQ(result.events[0].kind, EventKind::Pocketed);
+  EXPECT_EQ(engine.table().pockets()[result.events[0].obstacle].name, "pocket_foot_ypos");
+  const Ball<double>& b = s.balls[0];
+  EXPECT_EQ(b.motion, Motion::Pocketed);
+  EXPECT_LT(b.r.z(), 0);  // below the cloth
+  EXPECT_FALSE(b.inPlay());
+}
+
+TEST(Engine, BreakKeepsEveryInvariantAtEveryEvent)
+{
+  const PhysicsParams<double> p;
+  Engine<double> engine(sevenFoot(), p);
+  TableState<double> s = rackLayout<double>("eight", engine.table(), p.ball_radius);
+  ASSERT_EQ(engine.whyInvalid(s), "");
+  CueStrike<double> cue;
+  cue.speed = 8.0;
+  engine.strike(s, 0, cue);
+  const int events = checkInvariantsEventByEvent(engine, s);
+  EXPECT_GT(events, 40);
+  EXPECT_FALSE(s.anyMoving());
+  EXPECT_EQ(engine.whyInvalid(s), "");
+}
+
+TEST(Engine, NoOverlapBetweenEvents)
+{
+  const PhysicsParams<double> p;
+  Engine<double> engine(sevenFoot(), p);
+  TableState<double> s = rackLayout<double>("nine", engine.table(), p.ball_radius);
+  CueStrike<double> cue;
+  cue.speed = 6.0;
+  cue.phi = 0.01;
+  engine.strike(s, 0, cue);
+  for (double t = 0.0005; t < 3.0; t += 0.0005)
+  {
+    engine.advance(s, t);
+    ASSERT_GT(smallestGap(engine, s, t), -1e-9) << "t = " << t;
+  }
+}
+
+TEST(Engine, ResultDoesNotDependOnHowOftenItIsAdvanced)
+{
+  const PhysicsParams<double> p;
+  Engine<double> engine(sevenFoot(), p);
+  TableState<double> once = rackLayout<double>("eight", engine.table(), p.ball_radius);
+  CueStrike<double> cue;
+  cue.speed = 7.0;
+  cue.phi = -0.004;
+  engine.strike(once, 0, cue);
+  TableState<double> stepped = once;
+  const ShotResult<double> whole = engine.simulateToRest(once);
+  std::vector<Event<double>> events;
+  for (double t = 0.01; stepped.anyMoving(); t += 0.01)
+    engine.advance(stepped, t, &events);
+  ASSERT_EQ(events.size(), whole.events.size());
+  for (std::size_t i = 0; i < events.size(); ++i)
+  {
+    EXPECT_EQ(events[i].time, whole.events[i].time) << i;  // bit for bit
+    EXPECT_EQ(events[i].kind, whole.events[i].kind) << i;
+  }
+  for (std::size_t i = 0; i < once.balls.size(); ++i)
+    EXPECT_EQ(once.balls[i].r, stepped.balls[i].r) << "ball " << once.balls[i].id;
+}
+
+TEST(Engine, RandomShotsKeepTheInvariants)
+{
+  const PhysicsParams<double> p;
+  Engine<double> engine(sevenFoot(), p);
+  std::mt19937 rng(12345);
+  std::uniform_real_distribution<double> heading(-M_PI, M_PI), speed(0.2, 10.0), x(-0.9, -0.3), y(-0.45, 0.45);
+  for (int shot = 0; shot < 200; ++shot)
+  {
+    TableState<double> s = rackLayout<double>(shot % 2 ? "eight" : "nine", engine.table(), p.ball_radius);
+    s.balls[0].r.x() = x(rng);
+    s.balls[0].r.y() = y(rng);
+    CueStrike<double> cue;
+    cue.speed = speed(rng);
+    cue.phi = heading(rng);
+    engine.strike(s, 0, cue);
+    checkInvariantsEventByEvent(engine, s);
+    EXPECT_FALSE(s.anyMoving()) << "shot " << shot;
+  }
+}
+
+TEST(Engine, FrozenBallsPassTheImpulseOn)
+{
+  // Two balls touching, the first hit straight into the second: with e = 1 the first stops
+  // dead and the second takes its whole velocity (the contact is found at tau = 0).
+  PhysicsParams<double> p;
+  p.e_ball = 1.0;
+  Engine<double> engine(sevenFoot(), p);
+  TableState<double> s;
+  s.balls.push_back(rollingBall(0, 0.0, 0.0, 0.0, 0, p));
+  s.balls.push_back(rollingBall(1, 2 * p.ball_radius, 0.0, 0.0, 0, p));
+  ASSERT_EQ(engine.whyInvalid(s), "");
+  s.balls[0].v = Vec3<double>(1.0, 0, 0);
+  settleMotion(s.balls[0], p.ball_radius);
+  const Event<double> ev = engine.nextEvent(s);
+  ASSERT_EQ(ev.kind, EventKind::BallBall);
+  EXPECT_EQ(ev.time, 0.0);
+  engine.advance(s, 0.0);
+  EXPECT_NEAR(s.balls[0].v.norm(), 0, 1e-15);
+  EXPECT_NEAR(s.balls[1].v.x(), 1.0, 1e-15);
+}
+
+TEST(Engine, CaromTableHasNoPocketsAndBallsStayOn)
+{
+  const PhysicsParams<double> p;
+  auto carom = std::make_shared<const TableModel>(TableModel::carom("carom", 2.84, 1.42));
+  Engine<double> engine(carom, p);
+  EXPECT_TRUE(carom->pockets().empty());
+  EXPECT_TRUE(carom->circles().empty());  // closed corners need no end caps
+  TableState<double> s;
+  s.balls.push_back(rollingBall(0, 0.0, 0.0, 0.0, 0, p));
+  CueStrike<double> cue;
+  cue.speed = 6.0;
+  cue.phi = 0.7;
+  engine.strike(s, 0, cue);
+  const ShotResult<double> r = engine.simulateToRest(s);
+  EXPECT_TRUE(r.at_rest);
+  int cushions = 0;
+  for (const auto& e : r.events)
+    cushions += e.kind == EventKind::BallCushion;
+  EXPECT_GE(cushions, 3);
+  EXPECT_EQ(engine.whyInvalid(s), "");
+}
+
+TEST(Engine, EventCapGivesAClearError)
+{
+  const PhysicsParams<double> p;
+  EngineLimits limits;
+  limits.max_events = 5;
+  Engine<double> engine(sevenFoot(), p, {}, limits);
+  TableState<double> s = rackLayout<double>("eight", engine.table(), p.ball_radius);
+  CueStrike<double> cue;
+  cue.speed = 8.0;
+  engine.strike(s, 0, cue);
+  try
+  {
+    engine.simulateToRest(s);
+    FAIL() << "no EventLimitError";
+  }
+  catch (const EventLimitError& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("max_events"), std::string::npos);
+  }
+}
+
+TEST(Engine, InvalidStatesAreNamed)
+{
+  const PhysicsParams<double> p;
+  Engine<double> engine(sevenFoot(), p);
+  TableState<double> s;
+  s.balls.push_back(rollingBall(0, 0.0, 0.0, 0.0, 0, p));
+  s.balls.push_back(rollingBall(1, p.ball_radius, 0.0, 0.0, 0, p));
+  EXPECT_NE(engine.whyInvalid(s).find("overlap"), std::string::npos);
+  s.balls[1].r.x() = 5.0;
+  EXPECT_NE(engine.whyInvalid(s).find("off the cloth"), std::string::npos);
+  s.balls[1].r.x() = 1.9812 / 2 - 0.03;
+  s.balls[1].r.y() = 0.9906 / 2 - 0.03;
+  EXPECT_NE(engine.whyInvalid(s).find("pocket_foot_ypos"), std::string::npos);
+  s.balls[1].r.x() = NAN;
+  EXPECT_NE(engine.whyInvalid(s).find("finite"), std::string::npos);
+  s.balls[1].r.x() = 0.5;
+  s.balls[1].id = 0;
+  EXPECT_NE(engine.whyInvalid(s).find("twice"), std::string::npos);
+  CueStrike<double> cue;
+  cue.speed = 1;
+  EXPECT_NE(engine.whyNotStrikable(s, 7, cue).find("not on the table"), std::string::npos);
+}
+
+TEST(Engine, LongDoubleEngineAgreesWithDouble)
+{
+  const PhysicsParams<double> p;
+  auto table = sevenFoot();
+  Engine<double> fast(table, p);
+  Engine<long double> exact(table, p.cast<long double>());
+  TableState<double> s = rackLayout<double>("nine", *table, p.ball_radius);
+  TableState<long double> s_exact = s.cast<long double>();
+  CueStrike<double> cue;
+  cue.speed = 3.0;
+  cue.phi = 0.002;
+  fast.strike(s, 0, cue);
+  CueStrike<long double> cue_exact;
+  cue_exact.speed = 3.0L;
+  cue_exact.phi = 0.002L;
+  exact.strike(s_exact, 0, cue_exact);
+  // A slow, nearly straight shot: a few collisions, not yet chaotic.
+  fast.advance(s, 0.4);
+  exact.advance(s_exact, 0.4L);
+  for (std::size_t i = 0; i < s.balls.size(); ++i)
+  {
+    const auto a = fast.ballAt(s, i, 0.4);
+    const auto b = exact.ballAt(s_exact, i, 0.4L);
+    EXPECT_NEAR((a.r - b.r.cast<double>()).norm(), 0, 1e-9) << "ball " << a.id;
+  }
+}
