@@ -46,3 +46,26 @@ template struct PhysicsParams<long double>;
 
 }  // namespace physics
 }  // namespace cue_sim
+
+namespace cue_sim
+{
+namespace physics
+{
+const std::vector<ParamField>& physicsParamFields()
+{
+  using P = PhysicsParams<double>;
+  static const std::vector<ParamField> fields = {
+    { "ball_mass", &P::ball_mass },       { "ball_radius", &P::ball_radius },
+    { "gravity", &P::gravity },           { "mu_slide", &P::mu_slide },
+    { "mu_roll", &P::mu_roll },           { "mu_spin", &P::mu_spin },
+    { "e_ball", &P::e_ball },             { "mu_ball_a", &P::mu_ball_a },
+    { "mu_ball_b", &P::mu_ball_b },       { "mu_ball_c", &P::mu_ball_c },
+    { "e_cushion", &P::e_cushion },       { "f_cushion", &P::f_cushion },
+    { "cushion_height", &P::cushion_height }, { "cue_mass", &P::cue_mass },
+    { "cue_end_mass", &P::cue_end_mass }, { "cue_tip_radius", &P::cue_tip_radius },
+  };
+  return fields;
+}
+
+}  // namespace physics
+}  // namespace cue_sim

@@ -66,3 +66,22 @@ struct PhysicsParams
 
 }  // namespace physics
 }  // namespace cue_sim
+
+#include <vector>
+
+namespace cue_sim
+{
+namespace physics
+{
+/// One coefficient by name, as scene files and ROS parameters spell it (config/physics.yaml).
+struct ParamField
+{
+  const char* name;
+  double PhysicsParams<double>::*member;
+};
+
+/// Every coefficient of PhysicsParams, in the order of config/physics.yaml.
+const std::vector<ParamField>& physicsParamFields();
+
+}  // namespace physics
+}  // namespace cue_sim

@@ -1,0 +1,49 @@
+// Scene files (YAML) for the `simulate` program: a table, physics, balls and an optional shot.
+// The format is documented in README.md, "Scene files".
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "cue_sim/physics/collision_models.hpp"
+#include "cue_sim/physics/cue_strike.hpp"
+#include "cue_sim/physics/physics_params.hpp"
+#include "cue_sim/physics/table_model.hpp"
+#include "cue_sim/physics/table_state.hpp"
+
+namespace cue_sim
+{
+/// Thrown for a scene that cannot be used; what() names the key and the allowed values.
+class SceneError : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Shot
+{
+  int ball = 0;
+  physics::CueStrike<double> strike;
+};
+
+struct Scene
+{
+  std::shared_ptr<const physics::TableModel> table;
+  physics::PhysicsParams<double> params;
+  physics::ModelChoice models;
+  physics::TableState<double> state;
+  std::optional<Shot> shot;
+  std::optional<double> duration;  ///< [s]; absent: run to rest
+};
+
+/// Reads physics coefficients and model names from a YAML map (keys of config/physics.yaml);
+/// keys it does not know are an error.
+void applyPhysicsYaml(const std::string& yaml_text, physics::PhysicsParams<double>& params,
+                      physics::ModelChoice& models);
+
+Scene loadScene(const std::string& yaml_text);
+Scene loadSceneFile(const std::string& path);
+
+}  // namespace cue_sim

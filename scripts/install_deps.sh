@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages cue_sim needs, only those missing. Needs root or sudo.
+set -euo pipefail
+
+PACKAGES=(
+  # build
+  g++ cmake make catkin python3-catkin-pkg ros-message-generation libeigen3-dev liburdfdom-dev
+  libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev
+  # ROS 1 (Debian's own packages, no /opt/ros)
+  ros-message-runtime libroscpp-dev ros-std-msgs ros-geometry-msgs libstd-msgs-dev libgeometry-msgs-dev
+  libvisualization-msgs-dev libstd-srvs-dev ros-std-srvs libtf2-ros-dev libtf2-geometry-msgs-dev
+  librosbag-dev librostest-dev rosout python3-rostest python3-roslaunch python3-rosbag python3-rosservice
+  python3-rostopic python3-rosnode rosbash python3-geometry-msgs python3-tf2-msgs python3-visualization-msgs
+  liburdfdom-tools
+  # rviz, and rviz without a screen (screenshots)
+  rviz xvfb xauth imagemagick
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install_deps: all ${#PACKAGES[@]} packages present"
+  exit 0
+fi
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install_deps: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+  SUDO="sudo"
+fi
+echo "install_deps: installing ${#missing[@]} packages: ${missing[*]}"
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,152 @@
+#include "node/table_markers.hpp"
+
+#include <array>
+#include <cmath>
+
+namespace cue_sim
+{
+namespace
+{
+using visualization_msgs::Marker;
+
+std_msgs::ColorRGBA rgba(float r, float g, float b, float a = 1.0f)
+{
+  std_msgs::ColorRGBA c;
+  c.r = r;
+  c.g = g;
+  c.b = b;
+  c.a = a;
+  return c;
+}
+
+/// Standard pool colours: 1 yellow, 2 blue, 3 red, 4 purple, 5 orange, 6 green, 7 maroon,
+/// 8 black; 9-15 are the stripes of 1-7; 0 is the white cue ball.
+std_msgs::ColorRGBA poolColour(int id)
+{
+  static const std::array<std::array<float, 3>, 8> colours = { {
+      { 0.97f, 0.97f, 0.93f },
+      { 1.0f, 0.82f, 0.0f },
+      { 0.0f, 0.2f, 0.8f },
+      { 0.85f, 0.05f, 0.05f },
+      { 0.4f, 0.1f, 0.55f },
+      { 1.0f, 0.45f, 0.0f },
+      { 0.0f, 0.5f, 0.2f },
+      { 0.5f, 0.08f, 0.1f },
+  } };
+  if (id == 8)
+    return rgba(0.05f, 0.05f, 0.05f);
+  const auto& c = colours[id >= 9 && id <= 15 ? id - 8 : (id >= 0 && id <= 7 ? id : 0)];
+  return rgba(c[0], c[1], c[2]);
+}
+
+Marker base(const std::string& frame, const std::string& ns, int id, int type)
+{
+  Marker m;
+  m.header.frame_id = frame;
+  m.ns = ns;
+  m.id = id;
+  m.type = type;
+  m.action = Marker::ADD;
+  m.pose.orientation.w = 1.0;
+  return m;
+}
+
+void setYaw(Marker& m, double yaw)
+{
+  m.pose.orientation.z = std::sin(yaw / 2);
+  m.pose.orientation.w = std::cos(yaw / 2);
+}
+}  // namespace
+
+visualization_msgs::MarkerArray tableMarkers(const physics::TableModel& table,
+                                             const physics::TableState<double>& state, double R,
+                                             double cushion_height, const MarkerFrames& frames)
+{
+  visualization_msgs::MarkerArray array;
+  Marker clear;
+  clear.action = Marker::DELETEALL;
+  array.markers.push_back(clear);
+
+  Marker cloth = base(frames.table, "cloth", 0, Marker::CUBE);
+  cloth.pose.position.x = table.clothCentre().x();
+  cloth.pose.position.y = table.clothCentre().y();
+  cloth.pose.position.z = -0.0005;
+  cloth.scale.x = table.clothLength();
+  cloth.scale.y = table.clothWidth();
+  cloth.scale.z = 0.001;
+  cloth.color = rgba(0.05f, 0.5f, 0.22f);
+  array.markers.push_back(cloth);
+
+  const double rubber = 0.03;  // drawn thickness of a cushion behind its nose line [m]
+  int id = 0;
+  for (const auto& s : table.segments())
+  {
+    Marker m = base(frames.table, "cushions", id++, Marker::CUBE);
+    const Eigen::Vector2d centre = (s.start + s.end) / 2 - s.normal * rubber / 2;
+    m.pose.position.x = centre.x();
+    m.pose.position.y = centre.y();
+    m.pose.position.z = cushion_height / 2;
+    setYaw(m, std::atan2(s.direction.y(), s.direction.x()));
+    m.scale.x = s.length;
+    m.scale.y = rubber;
+    m.scale.z = cushion_height;
+    m.color = rgba(0.02f, 0.36f, 0.15f);
+    array.markers.push_back(m);
+  }
+  id = 0;
+  for (const auto& c : table.circles())
+  {
+    if (c.radius <= 0)
+      continue;  // a cushion's end cap is a point
+    Marker m = base(frames.table, "jaws", id++, Marker::CYLINDER);
+    m.pose.position.x = c.centre.x();
+    m.pose.position.y = c.centre.y();
+    m.pose.position.z = cushion_height / 2;
+    m.scale.x = m.scale.y = 2 * c.radius;
+    m.scale.z = cushion_height;
+    m.color = rgba(0.02f, 0.36f, 0.15f);
+    array.markers.push_back(m);
+  }
+  id = 0;
+  for (const auto& p : table.pockets())
+  {
+    Marker m = base(frames.table, "pockets", id++, Marker::CYLINDER);
+    m.pose.position.x = p.centre.x();
+    m.pose.position.y = p.centre.y();
+    m.pose.position.z = 0.0005;
+    m.scale.x = m.scale.y = 2 * p.radius;
+    m.scale.z = 0.001;
+    m.color = rgba(0.0f, 0.0f, 0.0f, 0.9f);
+    array.markers.push_back(m);
+  }
+  for (const auto& b : state.balls)
+  {
+    const std::string frame = frames.ball_prefix + std::to_string(b.id);
+    const bool striped = b.id >= 9 && b.id <= 15;
+    Marker ball = base(frame, "balls", b.id, Marker::SPHERE);
+    ball.frame_locked = true;
+    ball.scale.x = ball.scale.y = ball.scale.z = 2 * R;
+    ball.color = striped ? poolColour(0) : poolColour(b.id);
+    array.markers.push_back(ball);
+    if (striped)
+    {
+      // A coloured band round the equator of a white ball: from above, a white cap in a ring.
+      Marker band = base(frame, "stripes", b.id, Marker::CYLINDER);
+      band.frame_locked = true;
+      band.scale.x = band.scale.y = 2.02 * R;
+      band.scale.z = R;
+      band.color = poolColour(b.id);
+      array.markers.push_back(band);
+    }
+    Marker label = base(frame, "labels", b.id, Marker::TEXT_VIEW_FACING);
+    label.frame_locked = true;
+    label.pose.position.z = 1.9 * R;
+    label.scale.z = 1.3 * R;
+    label.color = rgba(1.0f, 1.0f, 1.0f);
+    label.text = std::to_string(b.id);
+    array.markers.push_back(label);
+  }
+  return array;
+}
+
+}  // namespace cue_sim

@@ -1,0 +1,24 @@
+// The rviz picture of the table: cloth, cushions, pockets, and balls in standard pool colours.
+#pragma once
+
+#include <visualization_msgs/MarkerArray.h>
+
+#include "cue_sim/physics/table_model.hpp"
+#include "cue_sim/physics/table_state.hpp"
+
+namespace cue_sim
+{
+struct MarkerFrames
+{
+  std::string table;        ///< the table frame
+  std::string ball_prefix;  ///< ball frames are <ball_prefix><id>
+};
+
+/// Starts with DELETEALL, then one namespace per layer (cloth, cushions, jaws, pockets, balls,
+/// stripes, labels) with stable ids. Ball markers live in the balls' own tf frames and are
+/// frame-locked, so tf alone moves them: the array is published once, latched.
+visualization_msgs::MarkerArray tableMarkers(const physics::TableModel& table,
+                                             const physics::TableState<double>& state, double ball_radius,
+                                             double cushion_height, const MarkerFrames& frames);
+
+}  // namespace cue_sim

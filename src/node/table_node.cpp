@@ -1,0 +1,322 @@
+#include "node/table_node.hpp"
+
+#include <geometry_msgs/TransformStamped.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "cue_sim/TableState.h"
+#include "cue_sim/physics/rack.hpp"
+#include "cue_sim/table_description/table_catalog.hpp"
+#include "cue_sim/table_description/urdf_table_loader.hpp"
+#include "node/ros_conversions.hpp"
+#include "node/table_markers.hpp"
+
+namespace cue_sim
+{
+using physics::Ball;
+using PhysicsState = physics::TableState<double>;
+
+namespace
+{
+std::string readFile(const std::string& path)
+{
+  std::ifstream file(path);
+  if (!file)
+    throw std::runtime_error("cannot read URDF file '" + path + "'");
+  std::stringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+/// A rack placed at time t: every ball at rest, referred to t.
+PhysicsState placedAt(PhysicsState rack, double t)
+{
+  rack.time = rack.event_time = t;
+  for (auto& b : rack.balls)
+    b.time = t;
+  return rack;
+}
+
+geometry_msgs::TransformStamped makeTransform(const std::string& parent, const std::string& child,
+                                          const Eigen::Vector3d& p, const Eigen::Quaterniond& q, const ros::Time& stamp)
+{
+  geometry_msgs::TransformStamped t;
+  t.header.stamp = stamp;
+  t.header.frame_id = parent;
+  t.child_frame_id = child;
+  t.transform.translation.x = p.x();
+  t.transform.translation.y = p.y();
+  t.transform.translation.z = p.z();
+  t.transform.rotation.x = q.x();
+  t.transform.rotation.y = q.y();
+  t.transform.rotation.z = q.z();
+  t.transform.rotation.w = q.w();
+  return t;
+}
+}  // namespace
+
+TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
+{
+  private_node.param("publish_rate", config_.publish_rate, config_.publish_rate);
+  private_node.param("allow_strike_while_moving", config_.allow_strike_while_moving, false);
+  private_node.param("table_frame", config_.table_frame, config_.table_frame);
+  private_node.param("world_frame", config_.world_frame, config_.world_frame);
+  private_node.param("rack", config_.initial_rack, config_.initial_rack);
+  private_node.param("rack_gap", config_.rack_gap, config_.rack_gap);
+  if (!(config_.publish_rate > 0 && config_.publish_rate <= 10000))
+    throw std::runtime_error("~publish_rate must be in (0, 10000] Hz");
+  for (const std::string* frame : { &config_.table_frame, &config_.world_frame })
+    if (frame->empty() || frame->front() == '/')
+      throw std::runtime_error("frame ids must be non-empty and without a leading '/', got '" + *frame + "'");
+  if (!(config_.rack_gap >= 0 && config_.rack_gap < 0.01))
+    throw std::runtime_error("~rack_gap must be in [0, 0.01) m");
+
+  physics::PhysicsParams<double> params;
+  for (const auto& field : physics::physicsParamFields())
+    private_node.param(field.name, params.*field.member, params.*field.member);
+  const std::string why = params.validate();
+  if (!why.empty())
+    throw std::runtime_error("physics parameter ~" + why);
+  physics::ModelChoice models;
+  private_node.param("ball_ball_model", models.ball_ball, models.ball_ball);
+  private_node.param("cushion_model", models.cushion, models.cushion);
+
+  loadTable(node, private_node);
+  engine_ = std::make_unique<physics::Engine<double>>(table_, params, models);  // throws for unknown models
+
+  PhysicsState rack;
+  try
+  {
+    physics::RackOptions options;
+    options.gap = config_.rack_gap;
+    rack = physics::rackLayout<double>(config_.initial_rack, *table_, params.ball_radius, options);
+  }
+  catch (const std::invalid_argument& e)
+  {
+    throw std::runtime_error(std::string("~rack: ") + e.what());
+  }
+  const std::string invalid = engine_->whyInvalid(rack);
+  if (!invalid.empty())
+    throw std::runtime_error("~rack '" + config_.initial_rack + "' does not fit table '" + table_->name() +
+                             "': " + invalid);
+
+  state_publisher_ = private_node.advertise<cue_sim::TableState>("state", 10);
+  marker_publisher_ = private_node.advertise<visualization_msgs::MarkerArray>("markers", 1, true);
+  epoch_ = ros::Time::now();
+  setRack(rack, 0.0);
+  strike_service_ = private_node.advertiseService("strike", &TableNode::onStrike, this);
+  rack_service_ = private_node.advertiseService("rack", &TableNode::onRack, this);
+  reset_service_ = private_node.advertiseService("reset", &TableNode::onReset, this);
+  timer_ = node.createTimer(ros::Duration(1.0 / config_.publish_rate), &TableNode::tick, this);
+  ROS_INFO("cue_sim: table '%s' (%zu cushions, %zu pockets), rack '%s', models %s/%s, tf at %.0f Hz",
+           table_->name().c_str(), table_->segments().size(), table_->pockets().size(), config_.initial_rack.c_str(),
+           models.ball_ball.c_str(), models.cushion.c_str(), config_.publish_rate);
+}
+
+void TableNode::loadTable(ros::NodeHandle& node, ros::NodeHandle& private_node)
+{
+  // The table comes from ~urdf_file, else the robot_description parameter, else ~table by name.
+  std::string urdf_file, urdf_xml, table_name = "7ft";
+  private_node.param("urdf_file", urdf_file, urdf_file);
+  private_node.param("table", table_name, table_name);
+  try
+  {
+    if (!urdf_file.empty())
+      urdf_xml = readFile(urdf_file);
+    else if (!node.getParam("robot_description", urdf_xml))
+      urdf_xml = readFile(tableUrdfPath(table_name));
+    table_ = std::make_shared<const physics::TableModel>(tableFromUrdf(urdf_xml, config_.table_frame));
+    publishStaticFrames(urdf_xml);
+  }
+  catch (const TableDescriptionError& e)
+  {
+    throw std::runtime_error(std::string("table description: ") + e.what());
+  }
+}
+
+void TableNode::publishStaticFrames(const std::string& urdf_xml)
+{
+  // world -> table, and every link of the table description for rviz's RobotModel.
+  std::vector<geometry_msgs::TransformStamped> frames;
+  const ros::Time now = ros::Time::now();
+  frames.push_back(makeTransform(config_.world_frame, config_.table_frame, Eigen::Vector3d::Zero(),
+                             Eigen::Quaterniond::Identity(), now));
+  for (const auto& link : fixedLinkTransforms(urdf_xml))
+    frames.push_back(makeTransform(link.parent, link.child, link.translation, link.rotation, now));
+  static_broadcaster_.sendTransform(frames);
+}
+
+double TableNode::physicsTime(const ros::Time& stamp) const
+{
+  return (stamp - epoch_).toSec();
+}
+
+double TableNode::catchUp(const ros::Time& stamp)
+{
+  const double now = std::max(physicsTime(stamp), state_.time);
+  try
+  {
+    if (state_.anyMoving())
+      engine_->advance(state_, now);
+    else
+      state_.time = now;  // nothing moves: no physics to do
+  }
+  catch (const physics::EventLimitError& e)
+  {
+    // Not reachable for strikes (they are simulated to rest first); kept so that the node
+    // never dies on a pathological state. The state is left at its last event.
+    ROS_ERROR_THROTTLE(1.0, "cue_sim: %s", e.what());
+  }
+  return now;
+}
+
+void TableNode::tick(const ros::TimerEvent&)
+{
+  const ros::Time stamp = ros::Time::now();
+  if (stamp <= last_stamp_)
+    return;  // tf must never see the same stamp twice (TF_REPEATED_DATA)
+  catchUp(stamp);
+  const std::vector<Ball<double>> balls = engine_->snapshot(state_);
+  std::vector<geometry_msgs::TransformStamped> transforms;
+  transforms.reserve(balls.size());
+  for (const auto& b : balls)
+    transforms.push_back(makeTransform(config_.table_frame, config_.ball_frame_prefix + std::to_string(b.id), b.r,
+                                   Eigen::Quaterniond::Identity(), stamp));
+  tf_broadcaster_.sendTransform(transforms);
+  state_publisher_.publish(toTableStateMsg(balls, *table_, stamp, config_.table_frame));
+  last_stamp_ = stamp;
+}
+
+void TableNode::setRack(PhysicsState rack, double now)
+{
+  state_ = placedAt(rack, now);
+  last_rack_ = rack;
+  publishMarkers();
+}
+
+void TableNode::publishMarkers()
+{
+  marker_publisher_.publish(tableMarkers(*table_, state_, engine_->params().ball_radius,
+                                         engine_->params().cushion_height,
+                                         { config_.table_frame, config_.ball_frame_prefix }));
+}
+
+bool TableNode::onStrike(Strike::Request& request, Strike::Response& response)
+{
+  physics::CueStrike<double> strike;
+  strike.speed = request.speed;
+  strike.phi = request.phi;
+  strike.theta = request.theta;
+  strike.a = request.a;
+  strike.b = request.b;
+  const double now = catchUp(ros::Time::now());
+  std::string why = engine_->whyNotStrikable(state_, request.ball_id, strike);
+  if (why.empty() && state_.anyMoving() && !config_.allow_strike_while_moving)
+    why = "balls are still moving (set ~allow_strike_while_moving to strike anyway)";
+  if (!why.empty())
+  {
+    response.success = false;
+    response.message = why;
+    return true;
+  }
+  // Run the shot to rest on a copy first: it answers the request, and a shot the engine
+  // cannot finish is refused before it touches the table.
+  PhysicsState prediction = state_;
+  physics::ShotResult<double> result;
+  try
+  {
+    engine_->strike(prediction, request.ball_id, strike);
+    const Ball<double>& struck = prediction.balls[prediction.indexOf(request.ball_id)];
+    response.ball_velocity = toVector3(struck.v);
+    response.ball_angular_velocity = toVector3(struck.w);
+    result = engine_->simulateToRest(prediction);
+  }
+  catch (const physics::EventLimitError& e)
+  {
+    response.success = false;
+    response.message = std::string("the shot was not simulated: ") + e.what();
+    return true;
+  }
+  engine_->strike(state_, request.ball_id, strike);
+  response.success = true;
+  response.time_to_rest = result.duration;
+  response.num_events = static_cast<uint32_t>(result.events.size());
+  std::ostringstream message;
+  message << "struck ball " << request.ball_id << " at t = " << now << " s; "
+          << (result.at_rest ? "at rest after " : "still moving after ") << result.duration << " s, "
+          << result.events.size() << " events";
+  response.message = message.str();
+  return true;
+}
+
+bool TableNode::onRack(Rack::Request& request, Rack::Response& response)
+{
+  const double R = engine_->params().ball_radius;
+  PhysicsState rack;
+  response.success = false;
+  if (request.layout == "custom")
+  {
+    if (request.ids.size() != request.positions.size())
+    {
+      response.message = "ids and positions must have the same length (got " + std::to_string(request.ids.size()) +
+                         " and " + std::to_string(request.positions.size()) + ")";
+      return true;
+    }
+    for (std::size_t i = 0; i < request.ids.size(); ++i)
+    {
+      if (request.ids[i] < 0 || request.ids[i] > 15)
+      {
+        response.message = "ids[" + std::to_string(i) + "] = " + std::to_string(request.ids[i]) + " is not in [0, 15]";
+        return true;
+      }
+      Ball<double> b;
+      b.id = request.ids[i];
+      b.r = physics::Vec3<double>(request.positions[i].x, request.positions[i].y, R);
+      rack.balls.push_back(b);
+    }
+  }
+  else
+  {
+    if (!request.ids.empty() || !request.positions.empty())
+    {
+      response.message = "ids and positions are for layout 'custom' only";
+      return true;
+    }
+    try
+    {
+      physics::RackOptions options;
+      options.gap = config_.rack_gap;
+      rack = physics::rackLayout<double>(request.layout, *table_, R, options);
+    }
+    catch (const std::invalid_argument&)
+    {
+      response.message = "layout must be one of eight, nine, empty, custom; got '" + request.layout + "'";
+      return true;
+    }
+  }
+  const std::string why = engine_->whyInvalid(rack);
+  if (!why.empty())
+  {
+    response.message = "positions: " + why;
+    return true;
+  }
+  const double now = catchUp(ros::Time::now());
+  setRack(rack, now);
+  response.success = true;
+  response.message = "racked '" + request.layout + "': " + std::to_string(rack.balls.size()) + " balls";
+  return true;
+}
+
+bool TableNode::onReset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response)
+{
+  const double now = catchUp(ros::Time::now());
+  setRack(last_rack_, now);
+  response.success = true;
+  response.message = "back to the last rack (" + std::to_string(last_rack_.balls.size()) + " balls)";
+  return true;
+}
+
+}  // namespace cue_sim

@@ -1,0 +1,179 @@
+#include "cue_sim/table_description/urdf_table_loader.hpp"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <urdf_parser/urdf_parser.h>
+
+namespace cue_sim
+{
+namespace
+{
+using physics::CircularCushion;
+using physics::CushionSegment;
+using physics::Pocket;
+using physics::TableModel;
+
+Eigen::Isometry3d toIsometry(const urdf::Pose& pose)
+{
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  t.translation() = Eigen::Vector3d(pose.position.x, pose.position.y, pose.position.z);
+  t.linear() = Eigen::Quaterniond(pose.rotation.w, pose.rotation.x, pose.rotation.y, pose.rotation.z)
+                   .normalized()
+                   .toRotationMatrix();
+  return t;
+}
+
+bool startsWith(const std::string& s, const std::string& prefix)
+{
+  return s.compare(0, prefix.size(), prefix) == 0;
+}
+
+class UrdfTableReader
+{
+public:
+  UrdfTableReader(const urdf::ModelInterface& model, const std::string& root) : model_(model), root_(root) {}
+
+  TableModel read()
+  {
+    if (!model_.getRoot() || model_.getRoot()->name != root_)
+      fail("the root link must be '" + root_ + "' (the table frame), found '" +
+           (model_.getRoot() ? model_.getRoot()->name : std::string("none")) + "'");
+    const auto cloth = model_.getLink("cloth");
+    if (!cloth)
+      fail("no link named 'cloth' (a collision box whose footprint is the playing surface)");
+    const auto [cloth_pose, cloth_box] = boxOf(*cloth);
+    const Eigen::Vector3d top = cloth_pose * Eigen::Vector3d(0, 0, cloth_box.z() / 2);
+    if (std::abs(top.z()) > 1e-6)
+      fail("the top of link 'cloth' must be at z = 0 in the table frame, it is at z = " + std::to_string(top.z()));
+    if (!isLevel(cloth_pose) || std::abs(std::remainder(yawOf(cloth_pose), M_PI / 2)) > 1e-9)
+      fail("link 'cloth' must be level and aligned with the table axes");
+    const bool swapped = std::abs(std::sin(yawOf(cloth_pose))) > 0.5;
+    const double length = swapped ? cloth_box.y() : cloth_box.x();
+    const double width = swapped ? cloth_box.x() : cloth_box.y();
+
+    std::vector<CushionSegment> segments;
+    std::vector<CircularCushion> circles;
+    std::vector<Pocket> pockets;
+    for (const auto& [name, link] : model_.links_)
+    {
+      if (startsWith(name, "cushion_"))
+      {
+        const auto [pose, size] = boxOf(*link);
+        if (!isLevel(pose))
+          fail("link '" + name + "' must be level (rotated about z only)");
+        const Eigen::Vector3d start = pose * Eigen::Vector3d(-size.x() / 2, size.y() / 2, 0);
+        const Eigen::Vector3d end = pose * Eigen::Vector3d(size.x() / 2, size.y() / 2, 0);
+        segments.push_back(TableModel::makeSegment(name, start.head<2>(), end.head<2>()));
+      }
+      else if (startsWith(name, "pocket_"))
+      {
+        const auto [centre, radius] = cylinderOf(*link);
+        pockets.push_back({ name, centre, radius });
+      }
+      else if (startsWith(name, "jaw_"))
+      {
+        const auto [centre, radius] = cylinderOf(*link);
+        circles.push_back({ name, centre, radius });
+      }
+    }
+    if (segments.empty())
+      fail("no cushion links: name each straight cushion 'cushion_<name>' with a collision box");
+    const Eigen::Vector3d centre = cloth_pose.translation();
+    return TableModel(model_.getName(), centre.head<2>(), length, width, std::move(segments), std::move(circles),
+                      std::move(pockets));
+  }
+
+private:
+  [[noreturn]] void fail(const std::string& why) const { throw TableDescriptionError("URDF '" + model_.getName() + "': " + why); }
+
+  /// The link's pose in the root frame, through its chain of fixed joints.
+  Eigen::Isometry3d linkPose(const urdf::Link& link) const
+  {
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    const urdf::Link* current = &link;
+    while (current->parent_joint)
+    {
+      const auto& joint = *current->parent_joint;
+      if (joint.type != urdf::Joint::FIXED)
+        fail("joint '" + joint.name + "' must be fixed: a table does not move");
+      pose = toIsometry(joint.parent_to_joint_origin_transform) * pose;
+      current = current->getParent().get();
+    }
+    return pose;
+  }
+
+  std::pair<Eigen::Isometry3d, Eigen::Vector3d> boxOf(const urdf::Link& link) const
+  {
+    if (!link.collision || !link.collision->geometry || link.collision->geometry->type != urdf::Geometry::BOX)
+      fail("link '" + link.name + "' needs a <collision> with <box> geometry");
+    const auto& box = static_cast<const urdf::Box&>(*link.collision->geometry);
+    if (!(box.dim.x > 0 && box.dim.y > 0 && box.dim.z > 0))
+      fail("link '" + link.name + "': box sizes must be positive");
+    return { linkPose(link) * toIsometry(link.collision->origin), Eigen::Vector3d(box.dim.x, box.dim.y, box.dim.z) };
+  }
+
+  std::pair<Eigen::Vector2d, double> cylinderOf(const urdf::Link& link) const
+  {
+    if (!link.collision || !link.collision->geometry || link.collision->geometry->type != urdf::Geometry::CYLINDER)
+      fail("link '" + link.name + "' needs a <collision> with <cylinder> geometry");
+    const auto& cylinder = static_cast<const urdf::Cylinder&>(*link.collision->geometry);
+    if (!(cylinder.radius >= 0))
+      fail("link '" + link.name + "': cylinder radius must not be negative");
+    const Eigen::Isometry3d pose = linkPose(link) * toIsometry(link.collision->origin);
+    if (!isLevel(pose))
+      fail("link '" + link.name + "': the cylinder's axis must be vertical");
+    return { pose.translation().head<2>(), cylinder.radius };
+  }
+
+  static bool isLevel(const Eigen::Isometry3d& pose) { return (pose.linear().col(2) - Eigen::Vector3d::UnitZ()).norm() < 1e-9; }
+  static double yawOf(const Eigen::Isometry3d& pose) { return std::atan2(pose.linear()(1, 0), pose.linear()(0, 0)); }
+
+  const urdf::ModelInterface& model_;
+  std::string root_;
+};
+}  // namespace
+
+physics::TableModel tableFromUrdf(const std::string& urdf_xml, const std::string& root_frame)
+{
+  const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(urdf_xml);
+  if (!model)
+    throw TableDescriptionError("the table description is not valid URDF (urdfdom could not parse it)");
+  return UrdfTableReader(*model, root_frame).read();
+}
+
+physics::TableModel tableFromUrdfFile(const std::string& path, const std::string& root_frame)
+{
+  std::ifstream file(path);
+  if (!file)
+    throw TableDescriptionError("cannot read URDF file '" + path + "'");
+  std::stringstream text;
+  text << file.rdbuf();
+  return tableFromUrdf(text.str(), root_frame);
+}
+
+}  // namespace cue_sim
+
+namespace cue_sim
+{
+std::vector<FixedLinkTransform> fixedLinkTransforms(const std::string& urdf_xml)
+{
+  const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(urdf_xml);
+  if (!model)
+    throw TableDescriptionError("the table description is not valid URDF (urdfdom could not parse it)");
+  std::vector<FixedLinkTransform> out;
+  for (const auto& [name, joint] : model->joints_)
+  {
+    if (joint->type != urdf::Joint::FIXED)
+      throw TableDescriptionError("URDF '" + model->getName() + "': joint '" + name + "' must be fixed");
+    const auto& pose = joint->parent_to_joint_origin_transform;
+    out.push_back({ joint->parent_link_name, joint->child_link_name,
+                    Eigen::Vector3d(pose.position.x, pose.position.y, pose.position.z),
+                    Eigen::Quaterniond(pose.rotation.w, pose.rotation.x, pose.rotation.y, pose.rotation.z) });
+  }
+  return out;
+}
+
+}  // namespace cue_sim

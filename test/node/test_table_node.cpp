@@ -1,0 +1,348 @@
+// table_node through a real master: services, tf, markers and a real rosbag.
+#include <gtest/gtest.h>
+
+#include <cue_sim/Rack.h>
+#include <cue_sim/Strike.h>
+#include <cue_sim/TableState.h>
+#include <ros/ros.h>
+#include <rosbag/bag.h>
+#include <rosbag/view.h>
+#include <std_srvs/Trigger.h>
+#include <tf2_msgs/TFMessage.h>
+#include <tf2_ros/transform_listener.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <set>
+#include <thread>
+
+namespace
+{
+const double kRadius = 0.028575;
+const double kMassRatio = 0.170097 / 0.567;
+
+class TableNodeTest : public ::testing::Test
+{
+protected:
+  void SetUp() override
+  {
+    ASSERT_TRUE(ros::service::waitForService("/table/strike", ros::Duration(20)));
+    ASSERT_TRUE(ros::service::waitForService("/table/rack", ros::Duration(5)));
+    strike_ = nh_.serviceClient<cue_sim::Strike>("/table/strike");
+    rack_ = nh_.serviceClient<cue_sim::Rack>("/table/rack");
+    reset_ = nh_.serviceClient<std_srvs::Trigger>("/table/reset");
+    state_sub_ = nh_.subscribe<cue_sim::TableState>("/table/state", 10,
+                                                    [this](const cue_sim::TableStateConstPtr& m) { last_state_ = m; });
+  }
+
+  cue_sim::Rack::Response rack(const std::string& layout, const std::vector<int>& ids = {},
+                               const std::vector<std::pair<double, double>>& xy = {})
+  {
+    cue_sim::Rack srv;
+    srv.request.layout = layout;
+    for (int id : ids)
+      srv.request.ids.push_back(id);
+    for (const auto& p : xy)
+    {
+      geometry_msgs::Point point;
+      point.x = p.first;
+      point.y = p.second;
+      srv.request.positions.push_back(point);
+    }
+    EXPECT_TRUE(rack_.call(srv));
+    return srv.response;
+  }
+
+  cue_sim::Strike::Response strike(int ball, double speed, double phi, double theta = 0, double a = 0, double b = 0)
+  {
+    cue_sim::Strike srv;
+    srv.request.ball_id = ball;
+    srv.request.speed = speed;
+    srv.request.phi = phi;
+    srv.request.theta = theta;
+    srv.request.a = a;
+    srv.request.b = b;
+    EXPECT_TRUE(strike_.call(srv));
+    return srv.response;
+  }
+
+  /// The next ~state message published after now.
+  cue_sim::TableStateConstPtr freshState()
+  {
+    const ros::Time asked = ros::Time::now();
+    for (int i = 0; i < 500; ++i)
+    {
+      ros::Duration(0.01).sleep();
+      if (last_state_ && last_state_->header.stamp > asked)
+        return last_state_;
+    }
+    ADD_FAILURE() << "no ~state message";
+    return last_state_;
+  }
+
+  void waitUntilAtRest(double timeout)
+  {
+    const ros::Time until = ros::Time::now() + ros::Duration(timeout);
+    while (ros::Time::now() < until)
+      if (!freshState()->moving)
+        return;
+    ADD_FAILURE() << "balls still moving after " << timeout << " s";
+  }
+
+  static std::map<int, cue_sim::BallState> byId(const cue_sim::TableState& s)
+  {
+    std::map<int, cue_sim::BallState> out;
+    for (const auto& b : s.balls)
+      out[b.id] = b;
+    return out;
+  }
+
+  void expectUnchanged(const cue_sim::TableState& before, const std::string& what)
+  {
+    const auto after = byId(*freshState());
+    const auto was = byId(before);
+    ASSERT_EQ(after.size(), was.size()) << what;
+    for (const auto& [id, b] : was)
+    {
+      EXPECT_EQ(after.at(id).position.x, b.position.x) << what << ", ball " << id;
+      EXPECT_EQ(after.at(id).position.y, b.position.y) << what << ", ball " << id;
+      EXPECT_EQ(after.at(id).motion, b.motion) << what << ", ball " << id;
+    }
+  }
+
+  ros::NodeHandle nh_;
+  ros::ServiceClient strike_, rack_, reset_;
+  ros::Subscriber state_sub_;
+  cue_sim::TableStateConstPtr last_state_;
+};
+
+TEST_F(TableNodeTest, MarkersArriveLatchedWithEveryLayer)
+{
+  ASSERT_TRUE(rack("eight").success);
+  visualization_msgs::MarkerArrayConstPtr markers =
+      ros::topic::waitForMessage<visualization_msgs::MarkerArray>("/table/markers", nh_, ros::Duration(10));
+  ASSERT_TRUE(markers);
+  ASSERT_FALSE(markers->markers.empty());
+  EXPECT_EQ(markers->markers.front().action, visualization_msgs::Marker::DELETEALL);
+  std::map<std::string, int> per_ns;
+  for (const auto& m : markers->markers)
+    if (m.action == visualization_msgs::Marker::ADD)
+    {
+      ++per_ns[m.ns];
+      EXPECT_GT(m.color.a, 0.0f) << m.ns;
+      EXPECT_NE(m.header.frame_id.front(), '/');
+    }
+  EXPECT_EQ(per_ns["cloth"], 1);
+  EXPECT_EQ(per_ns["cushions"], 6);
+  EXPECT_EQ(per_ns["pockets"], 6);
+  EXPECT_EQ(per_ns["balls"], 16);
+  EXPECT_EQ(per_ns["stripes"], 7);
+  EXPECT_EQ(per_ns["labels"], 16);
+}
+
+TEST_F(TableNodeTest, StrikeMovesTheCueBallAlongItsHeadingInTf)
+{
+  ASSERT_TRUE(rack("empty").success);
+  tf2_ros::Buffer buffer;
+  tf2_ros::TransformListener listener(buffer);
+  ros::Duration(0.5).sleep();
+  const auto start = buffer.lookupTransform("table", "ball_0", ros::Time(0), ros::Duration(5)).transform.translation;
+  EXPECT_NEAR(start.z, kRadius, 1e-12);
+  const double phi = 0.6, speed = 1.0;
+  const auto response = strike(0, speed, phi);
+  ASSERT_TRUE(response.success) << response.message;
+  EXPECT_GT(response.time_to_rest, 1.0);
+  EXPECT_GE(response.num_events, 2u);  // slide to roll, roll to stop
+  EXPECT_NEAR(std::hypot(response.ball_velocity.x, response.ball_velocity.y), 2 * speed / (1 + kMassRatio), 1e-9);
+  ros::Duration(0.4).sleep();
+  const auto later = buffer.lookupTransform("table", "ball_0", ros::Time(0), ros::Duration(1)).transform.translation;
+  const double dx = later.x - start.x, dy = later.y - start.y;
+  EXPECT_GT(std::hypot(dx, dy), 0.2);
+  EXPECT_NEAR(std::atan2(dy, dx), phi, 1e-9);
+  // The world frame holds the table.
+  EXPECT_TRUE(buffer.canTransform("world", "ball_0", ros::Time(0), ros::Duration(1)));
+}
+
+TEST_F(TableNodeTest, EveryBallInOneTfMessageWithStrictlyIncreasingStamps)
+{
+  ASSERT_TRUE(rack("eight").success);
+  std::vector<tf2_msgs::TFMessage> messages;
+  ros::Subscriber sub = nh_.subscribe<tf2_msgs::TFMessage>("/tf", 100, [&](const tf2_msgs::TFMessageConstPtr& m) {
+    if (!m->transforms.empty() && m->transforms[0].child_frame_id.rfind("ball_", 0) == 0)
+      messages.push_back(*m);
+  });
+  ASSERT_TRUE(strike(0, 3.0, 0.0).success);
+  ros::Duration(1.0).sleep();
+  sub.shutdown();
+  ASSERT_GT(messages.size(), 50u);  // 100 Hz
+  ros::Time last;
+  for (const auto& m : messages)
+  {
+    EXPECT_EQ(m.transforms.size(), 16u);
+    EXPECT_GT(m.transforms[0].header.stamp, last);
+    last = m.transforms[0].header.stamp;
+    std::set<std::string> frames;
+    for (const auto& t : m.transforms)
+    {
+      frames.insert(t.child_frame_id);
+      EXPECT_EQ(t.header.frame_id, "table");
+      EXPECT_EQ(t.header.stamp, last);
+    }
+    EXPECT_EQ(frames.size(), 16u);
+  }
+  waitUntilAtRest(20);
+}
+
+TEST_F(TableNodeTest, BadStrikesAreRefusedAndChangeNothing)
+{
+  ASSERT_TRUE(rack("nine").success);
+  const auto before = *freshState();
+  struct Case
+  {
+    int ball;
+    double speed, phi, theta, a, b;
+    std::string field;
+  };
+  const std::vector<Case> cases = {
+    { 0, NAN, 0, 0, 0, 0, "speed" },       { 0, -1.0, 0, 0, 0, 0, "speed" },
+    { 0, 0.0, 0, 0, 0, 0, "speed" },       { 0, 12.5, 0, 0, 0, 0, "speed" },
+    { 0, INFINITY, 0, 0, 0, 0, "speed" },  { 0, 2.0, NAN, 0, 0, 0, "phi" },
+    { 0, 2.0, INFINITY, 0, 0, 0, "phi" },  { 0, 2.0, 0, -0.1, 0, 0, "theta" },
+    { 0, 2.0, 0, 2.0, 0, 0, "theta" },     { 0, 2.0, 0, 0, 0.4, 0.4, "sqrt(a^2 + b^2)" },
+    { 0, 2.0, 0, 0, NAN, 0, "a and b" },   { 12, 2.0, 0, 0, 0, 0, "ball_id 12 is not on the table" },
+    { -1, 2.0, 0, 0, 0, 0, "ball_id -1" },
+  };
+  for (const auto& c : cases)
+  {
+    const auto r = strike(c.ball, c.speed, c.phi, c.theta, c.a, c.b);
+    EXPECT_FALSE(r.success) << c.field;
+    EXPECT_NE(r.message.find(c.field), std::string::npos) << "message '" << r.message << "' should name " << c.field;
+  }
+  expectUnchanged(before, "after bad strikes");
+}
+
+TEST_F(TableNodeTest, StrikeWhileMovingIsRefused)
+{
+  ASSERT_TRUE(rack("empty").success);
+  ASSERT_TRUE(strike(0, 1.0, 0.0).success);
+  const auto r = strike(0, 1.0, 3.0);
+  EXPECT_FALSE(r.success);
+  EXPECT_NE(r.message.find("still moving"), std::string::npos) << r.message;
+  waitUntilAtRest(20);
+}
+
+TEST_F(TableNodeTest, PocketedBallCannotBeStruckAndRestsBelowTheCloth)
+{
+  // Ball 3 a short way from the foot-left corner, shot straight in.
+  const double hx = 1.9812 / 2, hy = 0.9906 / 2;
+  ASSERT_TRUE(rack("custom", { 0, 3 }, { { -0.5, 0.0 }, { hx - 0.2, hy - 0.2 } }).success);
+  const auto r = strike(3, 1.5, M_PI / 4);
+  ASSERT_TRUE(r.success) << r.message;
+  waitUntilAtRest(10);
+  const auto balls = byId(*freshState());
+  EXPECT_TRUE(balls.at(3).pocketed);
+  EXPECT_EQ(balls.at(3).pocket, "pocket_foot_ypos");
+  EXPECT_LT(balls.at(3).position.z, 0.0);
+  const auto before = *freshState();
+  const auto again = strike(3, 1.0, 0.0);
+  EXPECT_FALSE(again.success);
+  EXPECT_NE(again.message.find("pocketed"), std::string::npos) << again.message;
+  expectUnchanged(before, "after striking a pocketed ball");
+}
+
+TEST_F(TableNodeTest, BadRacksAreRefusedAndChangeNothing)
+{
+  ASSERT_TRUE(rack("nine").success);
+  const auto before = *freshState();
+  struct Case
+  {
+    std::string layout;
+    std::vector<int> ids;
+    std::vector<std::pair<double, double>> xy;
+    std::string words;
+  };
+  const std::vector<Case> cases = {
+    { "ten", {}, {}, "layout must be one of" },
+    { "custom", { 0, 1 }, { { 0, 0 } }, "same length" },
+    { "custom", { 0, 1 }, { { 0, 0 }, { kRadius, 0 } }, "overlap" },
+    { "custom", { 0 }, { { 5.0, 0 } }, "off the cloth" },
+    { "custom", { 0 }, { { NAN, 0 } }, "finite" },
+    { "custom", { 16 }, { { 0, 0 } }, "not in [0, 15]" },
+    { "custom", { 0, 0 }, { { 0, 0 }, { 0.3, 0 } }, "twice" },
+    { "custom", { 0 }, { { 1.9812 / 2 - 0.03, 0.9906 / 2 - 0.03 } }, "pocket" },
+    { "eight", { 1 }, { { 0, 0 } }, "custom only" },
+  };
+  for (const auto& c : cases)
+  {
+    const auto r = rack(c.layout, c.ids, c.xy);
+    EXPECT_FALSE(r.success) << c.words;
+    EXPECT_NE(r.message.find(c.words), std::string::npos) << "message '" << r.message << "' should say " << c.words;
+  }
+  expectUnchanged(before, "after bad racks");
+}
+
+TEST_F(TableNodeTest, ResetReturnsToTheLastRack)
+{
+  ASSERT_TRUE(rack("custom", { 0, 5 }, { { -0.3, 0.1 }, { 0.4, -0.2 } }).success);
+  const auto racked = *freshState();
+  ASSERT_TRUE(strike(0, 2.0, 1.0).success);
+  ros::Duration(0.3).sleep();
+  std_srvs::Trigger srv;
+  ASSERT_TRUE(reset_.call(srv));
+  EXPECT_TRUE(srv.response.success);
+  expectUnchanged(racked, "after reset");
+  EXPECT_FALSE(freshState()->moving);
+}
+
+TEST_F(TableNodeTest, RosbagOfABreakHoldsAllSixteenBallFrames)
+{
+  ASSERT_TRUE(rack("eight").success);
+  const std::string bag_path = std::string(CUE_SIM_TEST_DIR) + "/break_test.bag";
+  std::remove(bag_path.c_str());
+  // The real record.launch, as a user runs it, recording for 4 s.
+  std::thread recorder([&] {
+    const std::string command = "roslaunch cue_sim record.launch bag:=" + bag_path + " duration:=4 > " +
+                                std::string(CUE_SIM_TEST_DIR) + "/record_test.log 2>&1";
+    EXPECT_EQ(std::system(command.c_str()), 0);
+  });
+  ros::Duration(1.5).sleep();  // let rosbag subscribe
+  ASSERT_TRUE(strike(0, 8.0, 0.0).success);
+  recorder.join();
+  rosbag::Bag bag(bag_path, rosbag::bagmode::Read);
+  std::map<std::string, std::vector<double>> x_of_frame;
+  for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery(std::string("/tf"))))
+    if (const auto tf = m.instantiate<tf2_msgs::TFMessage>())
+      for (const auto& t : tf->transforms)
+        x_of_frame[t.child_frame_id].push_back(t.transform.translation.x);
+  for (int id = 0; id <= 15; ++id)
+  {
+    const std::string frame = "ball_" + std::to_string(id);
+    ASSERT_TRUE(x_of_frame.count(frame)) << frame << " missing from the bag";
+    EXPECT_GT(x_of_frame[frame].size(), 100u) << frame;
+  }
+  // The cue ball moved during the recording, and so did the apex ball it hit.
+  const auto moved = [&](const std::string& f) {
+    const auto& xs = x_of_frame[f];
+    return *std::max_element(xs.begin(), xs.end()) - *std::min_element(xs.begin(), xs.end());
+  };
+  EXPECT_GT(moved("ball_0"), 0.5);
+  EXPECT_GT(moved("ball_1"), 0.05);
+  rosbag::View statics(bag, rosbag::TopicQuery(std::string("/tf_static")));
+  EXPECT_GT(statics.size(), 0u);
+  bag.close();
+  waitUntilAtRest(30);
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "table_node_test");
+  ros::AsyncSpinner spinner(2);
+  spinner.start();
+  const int result = RUN_ALL_TESTS();
+  ros::shutdown();
+  return result;
+}

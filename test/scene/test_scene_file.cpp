@@ -1,0 +1,87 @@
+// Scene files: defaults agree with config/physics.yaml, and bad scenes name the bad key.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "cue_sim/scene/scene_file.hpp"
+
+using namespace cue_sim;
+
+namespace
+{
+std::string readConfig()
+{
+  std::ifstream f(std::string(CUE_SIM_SOURCE_DIR) + "/config/physics.yaml");
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+std::string errorOf(const std::string& scene)
+{
+  try
+  {
+    loadScene(scene);
+  }
+  catch (const SceneError& e)
+  {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST(SceneFile, ConfigPhysicsYamlHoldsTheBuiltInDefaults)
+{
+  // The node reads config/physics.yaml, simulate falls back to the compiled defaults: both
+  // must describe the same physics.
+  physics::PhysicsParams<double> from_yaml;
+  for (const auto& field : physics::physicsParamFields())
+    from_yaml.*field.member = -1;
+  physics::ModelChoice models;
+  models.ball_ball = models.cushion = "";
+  applyPhysicsYaml(readConfig(), from_yaml, models);
+  const physics::PhysicsParams<double> defaults;
+  for (const auto& field : physics::physicsParamFields())
+    EXPECT_NEAR(from_yaml.*field.member, defaults.*field.member, 1e-9 * std::abs(defaults.*field.member))
+        << field.name;
+  EXPECT_EQ(models.ball_ball, physics::ModelChoice().ball_ball);
+  EXPECT_EQ(models.cushion, physics::ModelChoice().cushion);
+}
+
+TEST(SceneFile, ReadsTableRackBallsAndShot)
+{
+  const Scene s = loadScene(R"(
+table: 9ft
+physics: {mu_roll: 0.012, e_ball: 0.9}
+rack: nine
+balls:
+  - {id: 0, position: [-0.5, 0.1]}
+  - {id: 12, position: [0.2, -0.3], velocity: [0.5, 0], angular_velocity: [0, 0, 3]}
+shot: {ball: 0, speed: 4.5, phi: 0.1}
+duration: 1.5
+)");
+  EXPECT_EQ(s.table->name(), "cue_sim_table_9ft");
+  EXPECT_DOUBLE_EQ(s.params.mu_roll, 0.012);
+  EXPECT_DOUBLE_EQ(s.params.e_ball, 0.9);
+  EXPECT_EQ(s.state.balls.size(), 11u);  // nine-ball rack plus ball 12
+  EXPECT_DOUBLE_EQ(s.state.balls[s.state.indexOf(0)].r.x(), -0.5);
+  EXPECT_EQ(s.state.balls[s.state.indexOf(12)].motion, physics::Motion::Sliding);
+  ASSERT_TRUE(s.shot.has_value());
+  EXPECT_DOUBLE_EQ(s.shot->strike.speed, 4.5);
+  EXPECT_DOUBLE_EQ(*s.duration, 1.5);
+}
+
+TEST(SceneFile, BadScenesNameTheProblem)
+{
+  EXPECT_NE(errorOf("table: 7ft\nfoo: 1\n").find("unknown key 'foo'"), std::string::npos);
+  EXPECT_NE(errorOf("physics: {mu_slid: 0.2}\n").find("unknown key 'mu_slid'"), std::string::npos);
+  EXPECT_NE(errorOf("physics: {e_ball: 1.5}\n").find("e_ball must be in [0, 1]"), std::string::npos);
+  EXPECT_NE(errorOf("table: 6ft\n").find("unknown table '6ft'"), std::string::npos);
+  EXPECT_NE(errorOf("rack: ten\n").find("unknown rack 'ten'"), std::string::npos);
+  EXPECT_NE(errorOf("balls: [{id: 0, position: [1]}]\n").find("'position' must be a list of 2"), std::string::npos);
+  EXPECT_NE(errorOf("shot: {speed: -2}\n").find("speed must be in (0, 12]"), std::string::npos);
+  EXPECT_NE(errorOf("shot: {phi: 1}\n").find("needs 'speed'"), std::string::npos);
+  EXPECT_NE(errorOf("duration: -1\n").find("duration"), std::string::npos);
+}

@@ -1,0 +1,75 @@
+// The `simulate` program, run as a user would, its JSON read back.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+namespace
+{
+struct ProgramRun
+{
+  int status;
+  std::string out;
+};
+
+ProgramRun simulate(const std::string& scene_text, const std::string& args = "")
+{
+  const std::string path = ::testing::TempDir() + "/scene.yaml";
+  std::ofstream(path) << scene_text;
+  const std::string command = std::string(CUE_SIM_SIMULATE) + " " + path + " " + args + " 2>&1";
+  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
+  std::string out;
+  std::array<char, 4096> buffer;
+  while (fgets(buffer.data(), buffer.size(), pipe.get()))
+    out += buffer.data();
+  const int status = pclose(pipe.release());
+  return { WEXITSTATUS(status), out };
+}
+}  // namespace
+
+TEST(SimulateProgram, BreakShotPrintsEventsAndAFinalStateAtRest)
+{
+  const ProgramRun run = simulate("table: 7ft\nrack: eight\nshot: {ball: 0, speed: 8.0, phi: 0.0}\n");
+  ASSERT_EQ(run.status, 0) << run.out;
+  const auto report = nlohmann::json::parse(run.out);
+  EXPECT_TRUE(report["at_rest"].get<bool>());
+  EXPECT_GT(report["events"].size(), 30u);
+  ASSERT_EQ(report["final_state"]["balls"].size(), 16u);
+  double last_t = 0;
+  bool first_is_ball_ball = false;
+  for (const auto& e : report["events"])
+  {
+    EXPECT_GE(e["t"].get<double>(), last_t);  // in time order
+    last_t = e["t"].get<double>();
+    if (e["kind"] == "ball_ball" && !first_is_ball_ball)
+      first_is_ball_ball = e["ball"] == 0 && e["other"] == 1;  // the cue ball meets the apex first
+  }
+  EXPECT_TRUE(first_is_ball_ball);
+  for (const auto& b : report["final_state"]["balls"])
+  {
+    const std::string motion = b["motion"];
+    EXPECT_TRUE(motion == "stationary" || motion == "pocketed") << b.dump();
+    EXPECT_TRUE(std::isfinite(b["position"][0].get<double>()));
+  }
+}
+
+TEST(SimulateProgram, DurationStopsMidShot)
+{
+  const ProgramRun run = simulate("rack: empty\nshot: {speed: 2.0, phi: 0.5}\nduration: 0.25\n");
+  ASSERT_EQ(run.status, 0) << run.out;
+  const auto report = nlohmann::json::parse(run.out);
+  EXPECT_FALSE(report["at_rest"].get<bool>());
+  const auto& ball = report["final_state"]["balls"][0];
+  EXPECT_NEAR(std::atan2(ball["velocity"][1].get<double>(), ball["velocity"][0].get<double>()), 0.5, 1e-12);
+}
+
+TEST(SimulateProgram, BadSceneExitsNonZeroWithTheReason)
+{
+  const ProgramRun run = simulate("rack: empty\nballs: [{id: 1, position: [-0.4954, 0.0]}]\n");
+  EXPECT_EQ(run.status, 1);
+  EXPECT_NE(run.out.find("overlap"), std::string::npos) << run.out;
+}

@@ -1,0 +1,126 @@
+// Tables from URDF: the shipped files describe the geometry PHYSICS.md gives, and a broken
+// description is refused with a message that names what is missing.
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "cue_sim/table_description/table_catalog.hpp"
+#include "cue_sim/table_description/urdf_table_loader.hpp"
+
+using cue_sim::TableDescriptionError;
+using cue_sim::tableFromUrdf;
+using cue_sim::tableFromUrdfFile;
+using cue_sim::tableUrdfPath;
+using cue_sim::physics::TableModel;
+
+namespace
+{
+void expectSameGeometry(const TableModel& a, const TableModel& b)
+{
+  EXPECT_NEAR(a.clothLength(), b.clothLength(), 1e-9);
+  EXPECT_NEAR(a.clothWidth(), b.clothWidth(), 1e-9);
+  std::map<std::string, const cue_sim::physics::CushionSegment*> segments;
+  for (const auto& s : b.segments())
+    segments[s.name] = &s;
+  ASSERT_EQ(a.segments().size(), b.segments().size());
+  for (const auto& s : a.segments())
+  {
+    ASSERT_TRUE(segments.count(s.name)) << s.name;
+    EXPECT_NEAR((s.start - segments[s.name]->start).norm(), 0, 1e-9) << s.name;
+    EXPECT_NEAR((s.end - segments[s.name]->end).norm(), 0, 1e-9) << s.name;
+    EXPECT_NEAR((s.normal - segments[s.name]->normal).norm(), 0, 1e-9) << s.name;
+  }
+  ASSERT_EQ(a.pockets().size(), b.pockets().size());
+  std::map<std::string, const cue_sim::physics::Pocket*> pockets;
+  for (const auto& p : b.pockets())
+    pockets[p.name] = &p;
+  for (const auto& p : a.pockets())
+  {
+    ASSERT_TRUE(pockets.count(p.name)) << p.name;
+    EXPECT_NEAR((p.centre - pockets[p.name]->centre).norm(), 0, 1e-9);
+    EXPECT_NEAR(p.radius, pockets[p.name]->radius, 1e-9);
+  }
+  EXPECT_EQ(a.circles().size(), b.circles().size());
+}
+
+std::string minimalTable(const std::string& extra_links, bool with_cloth = true)
+{
+  std::string urdf = R"(<robot name="test"><link name="table"/>)";
+  if (with_cloth)
+    urdf += R"(<link name="cloth"><collision><origin xyz="0 0 -0.01"/><geometry><box size="2 1 0.02"/></geometry></collision></link>
+               <joint name="j_cloth" type="fixed"><parent link="table"/><child link="cloth"/></joint>)";
+  return urdf + extra_links + "</robot>";
+}
+
+std::string errorOf(const std::string& urdf)
+{
+  try
+  {
+    tableFromUrdf(urdf);
+  }
+  catch (const TableDescriptionError& e)
+  {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST(UrdfTable, SevenFootFileMatchesTheBuiltInGeometry)
+{
+  expectSameGeometry(tableFromUrdfFile(tableUrdfPath("7ft")), TableModel::pool("7ft", 1.9812, 0.9906, 0.118, 0.137));
+}
+
+TEST(UrdfTable, NineFootAndCaromFilesMatch)
+{
+  expectSameGeometry(tableFromUrdfFile(tableUrdfPath("9ft")), TableModel::pool("9ft", 2.54, 1.27, 0.118, 0.137));
+  expectSameGeometry(tableFromUrdfFile(tableUrdfPath("carom")), TableModel::carom("carom", 2.84, 1.42));
+}
+
+TEST(UrdfTable, UnknownTableNamesTheKnownOnes)
+{
+  try
+  {
+    tableUrdfPath("snooker");
+    FAIL();
+  }
+  catch (const TableDescriptionError& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("7ft, 9ft, carom"), std::string::npos);
+  }
+}
+
+TEST(UrdfTable, BrokenDescriptionsSayWhatIsMissing)
+{
+  EXPECT_NE(errorOf("<robot name='x'><link name='table'/"), "");  // not XML
+  EXPECT_NE(errorOf(minimalTable("", false)).find("no link named 'cloth'"), std::string::npos);
+  EXPECT_NE(errorOf(minimalTable("")).find("no cushion links"), std::string::npos);
+  const std::string cushion_without_box =
+      R"(<link name="cushion_a"><collision><geometry><cylinder radius="1" length="1"/></geometry></collision></link>
+         <joint name="j" type="fixed"><parent link="table"/><child link="cushion_a"/></joint>)";
+  EXPECT_NE(errorOf(minimalTable(cushion_without_box)).find("'cushion_a' needs a <collision> with <box>"),
+            std::string::npos);
+  const std::string moving_joint =
+      R"(<link name="cushion_a"><collision><geometry><box size="1 0.05 0.04"/></geometry></collision></link>
+         <joint name="j" type="revolute"><parent link="table"/><child link="cushion_a"/><axis xyz="0 0 1"/>
+         <limit lower="0" upper="1" effort="1" velocity="1"/></joint>)";
+  EXPECT_NE(errorOf(minimalTable(moving_joint)).find("must be fixed"), std::string::npos);
+  const std::string wrong_root = R"(<robot name="t"><link name="base"/></robot>)";
+  EXPECT_NE(errorOf(wrong_root).find("root link must be 'table'"), std::string::npos);
+}
+
+TEST(UrdfTable, AMinimalTableLoads)
+{
+  const std::string cushion =
+      R"(<link name="cushion_a"><collision><origin xyz="0 -0.025 0.02"/><geometry><box size="1 0.05 0.04"/></geometry></collision></link>
+         <joint name="j" type="fixed"><parent link="table"/><child link="cushion_a"/><origin xyz="0 -0.5 0" rpy="0 0 0"/></joint>
+         <link name="pocket_p"><collision><geometry><cylinder radius="0.06" length="0.1"/></geometry></collision></link>
+         <joint name="k" type="fixed"><parent link="table"/><child link="pocket_p"/><origin xyz="1 0.5 0"/></joint>)";
+  const TableModel t = tableFromUrdf(minimalTable(cushion));
+  ASSERT_EQ(t.segments().size(), 1u);
+  EXPECT_NEAR((t.segments()[0].start - Eigen::Vector2d(-0.5, -0.5)).norm(), 0, 1e-12);
+  EXPECT_NEAR((t.segments()[0].normal - Eigen::Vector2d(0, 1)).norm(), 0, 1e-12);
+  ASSERT_EQ(t.pockets().size(), 1u);
+  EXPECT_NEAR(t.pockets()[0].radius, 0.06, 1e-12);
+  EXPECT_EQ(t.circles().size(), 2u);  // the lone cushion's two free ends
+}

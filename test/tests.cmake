@@ -1,0 +1,27 @@
+# Tests: gtest on the ROS-free core, rostest on the node. Run by scripts/test.sh (README).
+find_package(rostest REQUIRED)
+
+catkin_add_gtest(physics_tests
+  test/physics/test_polynomial.cpp
+  test/physics/test_motion.cpp
+  test/physics/test_collisions.cpp
+  test/physics/test_engine.cpp
+)
+target_link_libraries(physics_tests cue_sim_physics gtest_main)
+
+catkin_add_gtest(scene_tests
+  test/scene/test_urdf_table.cpp
+  test/scene/test_scene_file.cpp
+  test/scene/test_simulate_program.cpp
+)
+target_link_libraries(scene_tests cue_sim_table_description gtest_main)
+target_compile_definitions(scene_tests PRIVATE
+  CUE_SIM_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+  CUE_SIM_SIMULATE="$<TARGET_FILE:simulate>")
+add_dependencies(scene_tests simulate)
+
+add_rostest_gtest(node_tests test/node/table_node.test test/node/test_table_node.cpp)
+target_include_directories(node_tests PRIVATE ${catkin_INCLUDE_DIRS})
+target_link_libraries(node_tests ${catkin_LIBRARIES})
+add_dependencies(node_tests table_node ${PROJECT_NAME}_generate_messages_cpp)
+target_compile_definitions(node_tests PRIVATE CUE_SIM_TEST_DIR="${CMAKE_CURRENT_BINARY_DIR}")
