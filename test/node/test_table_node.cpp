@@ -272,7 +272,7 @@ TEST_F(TableNodeTest, BadRacksAreRefusedAndChangeNothing)
     { "custom", { 16 }, { { 0, 0 } }, "not in [0, 15]" },
     { "custom", { 0, 0 }, { { 0, 0 }, { 0.3, 0 } }, "twice" },
     { "custom", { 0 }, { { 1.9812 / 2 - 0.03, 0.9906 / 2 - 0.03 } }, "pocket" },
-    { "eight", { 1 }, { { 0, 0 } }, "custom only" },
+    { "eight", { 1 }, { { 0, 0 } }, "'custom' only" },
   };
   for (const auto& c : cases)
   {
