@@ -3,6 +3,8 @@
 CUE_SIM_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 export CUE_SIM_ROOT
 export CUE_SIM_BUILD="${CUE_SIM_BUILD:-$CUE_SIM_ROOT/build}"
+# The devel space sits beside build/, not in it: rosrun ignores executables under <package>/build/.
+export CUE_SIM_DEVEL="${CUE_SIM_DEVEL:-$CUE_SIM_ROOT/devel}"
 export PATH="/usr/bin:$PATH"
 export ROS_MASTER_URI="${ROS_MASTER_URI:-http://localhost:11311}"
 export ROS_HOSTNAME="${ROS_HOSTNAME:-localhost}"
@@ -14,7 +16,7 @@ cue_sim_source_devel() {
   # The generated setup reads unset variables.
   set +u
   # shellcheck disable=SC1091
-  source "$CUE_SIM_BUILD/devel/setup.bash"
+  source "$CUE_SIM_DEVEL/setup.bash"
   set -u
   # A standalone package build leaves its source out of ROS_PACKAGE_PATH: add it.
   export ROS_PACKAGE_PATH="$CUE_SIM_ROOT${ROS_PACKAGE_PATH:+:$ROS_PACKAGE_PATH}"

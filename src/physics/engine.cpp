@@ -78,12 +78,15 @@ constexpr S kEndlessHorizon = S(1e7);
 /// (two slow balls rolling in slightly different directions) before the computed gap ever
 /// becomes positive. For them the contact is when the gap returns to its starting value: the
 /// down-crossing of (gap(tau) - gap(0)) / tau, which has no cancellation.
+///
+/// With `pressing_is_contact`, touching bodies that do not separate while their accelerations
+/// press them together are in contact now (ball pairs, which the engine then joins).
 template <typename S>
-S contactTime(const Poly4<S>& gap, S limit, S approach_slope, S touch)
+S contactTime(const Poly4<S>& gap, S limit, S approach_slope, S touch, bool pressing_is_contact = false)
 {
   if (gap[0] > touch)
     return firstDownCrossing(gap, S(0), limit);
-  if (gap[1] < approach_slope)
+  if (gap[1] < approach_slope || (pressing_is_contact && gap[1] <= S(0) && gap[2] < S(0)))
     return S(0);
   const Poly4<S> relative = { gap[1], gap[2], gap[3], gap[4], S(0) };
   return firstDownCrossing(relative, S(0), limit);
@@ -254,7 +257,7 @@ Event<S> Engine<S>::nextEvent(const TableState<S>& state) const
       if (cannotMeet<S>(c0, c1, c2, S(2) * R, limit))
         continue;
       const S tau = contactTime(distanceGap<S>(c0, c1, c2, S(2) * R), limit, -S(4) * R * zeroSpeed<S>(),
-                                touchTolerance(S(4) * R * R));
+                                touchTolerance(S(4) * R * R), true);
       if (tau <= limit)
         consider(tau, EventKind::BallBall, bi.id, bj.id, -1);
     }

@@ -1,5 +1,5 @@
 // simulate: runs a scene file through the physics engine and prints JSON (no ROS needed).
-//   rosrun cue_sim simulate scene.yaml      (or build/devel/lib/cue_sim/simulate scene.yaml)
+//   rosrun cue_sim simulate scene.yaml      (or devel/lib/cue_sim/simulate scene.yaml)
 #include <CLI/CLI.hpp>
 #include <iostream>
 

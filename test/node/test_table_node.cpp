@@ -14,6 +14,8 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
+#include <sstream>
 #include <map>
 #include <set>
 #include <thread>
@@ -333,6 +335,28 @@ TEST_F(TableNodeTest, RosbagOfABreakHoldsAllSixteenBallFrames)
   EXPECT_GT(statics.size(), 0u);
   bag.close();
   waitUntilAtRest(30);
+}
+TEST_F(TableNodeTest, BrokenTableDescriptionStopsTheNodeWithAReason)
+{
+  const std::string dir = CUE_SIM_TEST_DIR;
+  const std::string no_cloth = dir + "/no_cloth.urdf";
+  std::ofstream(no_cloth) << "<robot name='bad'><link name='table'/></robot>";
+  const auto run = [&](const std::string& name, const std::string& file) {
+    const std::string log = dir + "/" + name + ".log";
+    const std::string command = "rosrun cue_sim table_node __name:=" + name + " _urdf_file:=" + file + " > " + log +
+                                " 2>&1";
+    const int status = std::system(command.c_str());
+    std::ifstream in(log);
+    std::stringstream text;
+    text << in.rdbuf();
+    return std::make_pair(WEXITSTATUS(status), text.str());
+  };
+  const auto missing_file = run("no_file", dir + "/does_not_exist.urdf");
+  EXPECT_EQ(missing_file.first, 1);
+  EXPECT_NE(missing_file.second.find("cannot read URDF file"), std::string::npos) << missing_file.second;
+  const auto missing_cloth = run("no_cloth", no_cloth);
+  EXPECT_EQ(missing_cloth.first, 1);
+  EXPECT_NE(missing_cloth.second.find("no link named 'cloth'"), std::string::npos) << missing_cloth.second;
 }
 }  // namespace
 

@@ -316,3 +316,29 @@ TEST(Engine, LongDoubleEngineAgreesWithDouble)
     EXPECT_NEAR((a.r - b.r.cast<double>()).norm(), 0, 1e-9) << "ball " << a.id;
   }
 }
+
+TEST(Engine, SustainedContactJoinsTheBallsInsteadOfEndlessBounces)
+{
+  // Two slow balls touching along x with equal x-velocities, the leading one slower overall:
+  // rolling resistance decelerates it more along x, pressing the pair together while their
+  // relative velocity is purely tangential. An impulse model alone answers with endless
+  // micro-bounces; the engine joins them.
+  const PhysicsParams<double> p;
+  Engine<double> engine(sevenFoot(), p);
+  TableState<double> s;
+  const double u = -0.01;
+  s.balls.push_back(rollingBall(1, 0.0, 0.0, std::hypot(u, 0.0), std::atan2(0.0, u), p));
+  s.balls.push_back(rollingBall(5, 2 * p.ball_radius, 0.0, std::hypot(u, 0.01), std::atan2(0.01, u), p));
+  const double m = p.ball_mass;
+  const Vec3<double> momentum = m * (s.balls[0].v + s.balls[1].v);
+  const Event<double> first = engine.nextEvent(s);
+  ASSERT_EQ(first.kind, EventKind::BallBall);
+  EXPECT_LT(first.time, 1e-12);  // at once (cos(pi) and sin(pi) leave a 1e-18 m/s separation)
+  engine.step(s);
+  EXPECT_EQ(s.balls[0].v, s.balls[1].v);  // joined
+  EXPECT_NEAR((m * (s.balls[0].v + s.balls[1].v) - momentum).norm(), 0, 1e-14 * momentum.norm());
+  const int events = checkInvariantsEventByEvent(engine, s);
+  EXPECT_LT(events, 10);
+  EXPECT_FALSE(s.anyMoving());
+  EXPECT_EQ(engine.whyInvalid(s), "");
+}
