@@ -17,8 +17,7 @@ struct MarkerFrames
 /// Starts with DELETEALL, then one namespace per layer (cloth, cushions, jaws, pockets, balls,
 /// stripes, labels) with stable ids. Ball markers live in the balls' own tf frames and are
 /// frame-locked, so tf alone moves them: the array is published once, latched.
-visualization_msgs::MarkerArray tableMarkers(const physics::TableModel& table,
-                                             const physics::TableState<double>& state, double ball_radius,
-                                             double cushion_height, const MarkerFrames& frames);
+visualization_msgs::MarkerArray tableMarkers(const physics::TableModel& table, const physics::TableState<double>& state,
+                                             double ball_radius, double cushion_height, const MarkerFrames& frames);
 
 }  // namespace cue_sim

@@ -41,7 +41,8 @@ PhysicsState placedAt(PhysicsState rack, double t)
 }
 
 geometry_msgs::TransformStamped makeTransform(const std::string& parent, const std::string& child,
-                                          const Eigen::Vector3d& p, const Eigen::Quaterniond& q, const ros::Time& stamp)
+                                              const Eigen::Vector3d& p, const Eigen::Quaterniond& q,
+                                              const ros::Time& stamp)
 {
   geometry_msgs::TransformStamped t;
   t.header.stamp = stamp;
@@ -68,7 +69,7 @@ TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
   private_node.param("rack_gap", config_.rack_gap, config_.rack_gap);
   if (!(config_.publish_rate > 0 && config_.publish_rate <= 10000))
     throw std::runtime_error("~publish_rate must be in (0, 10000] Hz");
-  for (const std::string* frame : { &config_.table_frame, &config_.world_frame })
+  for (const std::string* frame : {&config_.table_frame, &config_.world_frame})
     if (frame->empty() || frame->front() == '/')
       throw std::runtime_error("frame ids must be non-empty and without a leading '/', got '" + *frame + "'");
   if (!(config_.rack_gap >= 0 && config_.rack_gap < 0.01))
@@ -143,7 +144,7 @@ void TableNode::publishStaticFrames(const std::string& urdf_xml)
   std::vector<geometry_msgs::TransformStamped> frames;
   const ros::Time now = ros::Time::now();
   frames.push_back(makeTransform(config_.world_frame, config_.table_frame, Eigen::Vector3d::Zero(),
-                             Eigen::Quaterniond::Identity(), now));
+                                 Eigen::Quaterniond::Identity(), now));
   for (const auto& link : fixedLinkTransforms(urdf_xml))
     frames.push_back(makeTransform(link.parent, link.child, link.translation, link.rotation, now));
   static_broadcaster_.sendTransform(frames);
@@ -184,7 +185,7 @@ void TableNode::tick(const ros::TimerEvent&)
   transforms.reserve(balls.size());
   for (const auto& b : balls)
     transforms.push_back(makeTransform(config_.table_frame, config_.ball_frame_prefix + std::to_string(b.id), b.r,
-                                   Eigen::Quaterniond::Identity(), stamp));
+                                       Eigen::Quaterniond::Identity(), stamp));
   tf_broadcaster_.sendTransform(transforms);
   state_publisher_.publish(toTableStateMsg(balls, *table_, stamp, config_.table_frame));
   last_stamp_ = stamp;
@@ -201,7 +202,7 @@ void TableNode::publishMarkers()
 {
   marker_publisher_.publish(tableMarkers(*table_, state_, engine_->params().ball_radius,
                                          engine_->params().cushion_height,
-                                         { config_.table_frame, config_.ball_frame_prefix }));
+                                         {config_.table_frame, config_.ball_frame_prefix}));
 }
 
 bool TableNode::onStrike(Strike::Request& request, Strike::Response& response)

@@ -31,12 +31,12 @@ void SimpleCushion<S>::resolve(Ball<S>& ball, const Vec3<S>& normal, const Physi
 
 std::vector<std::string> ballBallModelNames()
 {
-  return { "frictionless" };
+  return {"frictionless"};
 }
 
 std::vector<std::string> cushionModelNames()
 {
-  return { "simple" };
+  return {"simple"};
 }
 
 namespace

@@ -18,9 +18,10 @@ std::string validateStrike(const CueStrike<S>& s)
     why << "phi must be a finite angle in rad, got " << static_cast<double>(s.phi);
   else if (bad(s.theta) || s.theta < S(0) || s.theta > S(CueLimits::max_elevation))
     why << "theta must be in [0, " << CueLimits::max_elevation << "] rad, got " << static_cast<double>(s.theta);
-  else if (bad(s.a) || bad(s.b) || std::hypot(static_cast<double>(s.a), static_cast<double>(s.b)) > CueLimits::max_offset)
-    why << "a and b must be finite with sqrt(a^2 + b^2) <= " << CueLimits::max_offset << " (units of R), got a = "
-        << static_cast<double>(s.a) << ", b = " << static_cast<double>(s.b);
+  else if (bad(s.a) || bad(s.b) ||
+           std::hypot(static_cast<double>(s.a), static_cast<double>(s.b)) > CueLimits::max_offset)
+    why << "a and b must be finite with sqrt(a^2 + b^2) <= " << CueLimits::max_offset
+        << " (units of R), got a = " << static_cast<double>(s.a) << ", b = " << static_cast<double>(s.b);
   return why.str();
 }
 

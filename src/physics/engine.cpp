@@ -88,7 +88,7 @@ S contactTime(const Poly4<S>& gap, S limit, S approach_slope, S touch, bool pres
     return firstDownCrossing(gap, S(0), limit);
   if (gap[1] < approach_slope || (pressing_is_contact && gap[1] <= S(0) && gap[2] < S(0)))
     return S(0);
-  const Poly4<S> relative = { gap[1], gap[2], gap[3], gap[4], S(0) };
+  const Poly4<S> relative = {gap[1], gap[2], gap[3], gap[4], S(0)};
   return firstDownCrossing(relative, S(0), limit);
 }
 
@@ -103,8 +103,8 @@ S touchTolerance(S reach_squared)
 template <typename S>
 Poly4<S> distanceGap(const Vec2<S>& c0, const Vec2<S>& c1, const Vec2<S>& c2, S reach)
 {
-  return { c0.squaredNorm() - reach * reach, S(2) * c0.dot(c1), c1.squaredNorm() + S(2) * c0.dot(c2),
-           S(2) * c1.dot(c2), c2.squaredNorm() };
+  return {c0.squaredNorm() - reach * reach, S(2) * c0.dot(c1), c1.squaredNorm() + S(2) * c0.dot(c2), S(2) * c1.dot(c2),
+          c2.squaredNorm()};
 }
 
 /// True if two bodies reach-apart at the base cannot meet within `limit`: a cheap bound on
@@ -119,23 +119,23 @@ bool cannotMeet(const Vec2<S>& c0, const Vec2<S>& c1, const Vec2<S>& c2, S reach
 template <typename S>
 Engine<S>::Engine(std::shared_ptr<const TableModel> table, const PhysicsParams<S>& params, const ModelChoice& models,
                   const EngineLimits& limits)
-  : table_(std::move(table))
-  , params_(params)
-  , model_choice_(models)
-  , limits_(limits)
-  , ball_ball_(makeBallBallModel<S>(models.ball_ball))
-  , cushion_(makeCushionModel<S>(models.cushion))
+  : table_(std::move(table)),
+    params_(params),
+    model_choice_(models),
+    limits_(limits),
+    ball_ball_(makeBallBallModel<S>(models.ball_ball)),
+    cushion_(makeCushionModel<S>(models.cushion))
 {
   const std::string why = params_.validate();
   if (!why.empty())
     throw std::invalid_argument("physics parameter " + why);
   auto obstacles = std::make_shared<Obstacles>();
   for (const auto& s : table_->segments())
-    obstacles->segments.push_back({ s.start.cast<S>(), s.direction.cast<S>(), s.normal.cast<S>(), S(s.length) });
+    obstacles->segments.push_back({s.start.cast<S>(), s.direction.cast<S>(), s.normal.cast<S>(), S(s.length)});
   for (const auto& c : table_->circles())
-    obstacles->circles.push_back({ c.centre.cast<S>(), S(c.radius) });
+    obstacles->circles.push_back({c.centre.cast<S>(), S(c.radius)});
   for (const auto& p : table_->pockets())
-    obstacles->pockets.push_back({ p.centre.cast<S>(), S(p.radius) });
+    obstacles->pockets.push_back({p.centre.cast<S>(), S(p.radius)});
   obstacles_ = obstacles;
 }
 
@@ -214,8 +214,8 @@ Event<S> Engine<S>::nextEvent(const TableState<S>& state) const
     {
       const auto& seg = obstacles_->segments[k];
       const S limit = limitFor(ends[i]);
-      const Poly4<S> gap = { seg.normal.dot(pi.c0 - seg.start) - R, seg.normal.dot(pi.c1), seg.normal.dot(pi.c2), S(0),
-                             S(0) };
+      const Poly4<S> gap = {seg.normal.dot(pi.c0 - seg.start) - R, seg.normal.dot(pi.c1), seg.normal.dot(pi.c2), S(0),
+                            S(0)};
       const S tau = contactTime(gap, limit, -zeroSpeed<S>(), touchTolerance(R));
       if (tau <= limit)
       {
@@ -307,8 +307,7 @@ void Engine<S>::processEvent(TableState<S>& state, const Event<S>& event) const
   const S R = params_.ball_radius;
   switch (event.kind)
   {
-    case EventKind::BallBall:
-    {
+    case EventKind::BallBall: {
       Ball<S>& other = state.balls[state.indexOf(event.other)];
       other = evolve(other, event.time, params_);
       if (inSustainedContact(ball, other))
@@ -323,15 +322,13 @@ void Engine<S>::processEvent(TableState<S>& state, const Event<S>& event) const
       settleMotion(other, R);
       break;
     }
-    case EventKind::BallCushion:
-    {
+    case EventKind::BallCushion: {
       const auto& n = obstacles_->segments[event.obstacle].normal;
       cushion_->resolve(ball, Vec3<S>(n.x(), n.y(), S(0)), params_);
       settleMotion(ball, R);
       break;
     }
-    case EventKind::BallCircle:
-    {
+    case EventKind::BallCircle: {
       const Vec2<S> n = (ball.r.template head<2>() - obstacles_->circles[event.obstacle].centre).normalized();
       cushion_->resolve(ball, Vec3<S>(n.x(), n.y(), S(0)), params_);
       settleMotion(ball, R);
@@ -370,8 +367,8 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
     if (++processed > limits_.max_events)
     {
       std::ostringstream why;
-      why << "event limit reached: more than " << limits_.max_events << " events before t = "
-          << static_cast<double>(event.time) << " s (EngineLimits::max_events)";
+      why << "event limit reached: more than " << limits_.max_events
+          << " events before t = " << static_cast<double>(event.time) << " s (EngineLimits::max_events)";
       throw EventLimitError(why.str());
     }
     processEvent(state, event);
@@ -450,7 +447,8 @@ std::string Engine<S>::whyInvalid(const TableState<S>& state, double tolerance) 
       const Ball<S>& b = state.balls[j];
       if (!a.inPlay() || !b.inPlay())
         continue;
-      const double d = static_cast<double>((evolve(a, state.time, params_).r - evolve(b, state.time, params_).r).norm());
+      const double d =
+          static_cast<double>((evolve(a, state.time, params_).r - evolve(b, state.time, params_).r).norm());
       if (d < 2 * R - tolerance)
       {
         why << "balls " << a.id << " and " << b.id << " overlap: centres " << d << " m apart, less than 2R = " << 2 * R;

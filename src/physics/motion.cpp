@@ -170,8 +170,7 @@ EventKind applyTransition(Ball<S>& ball, const PhysicsParams<S>& p)
   const S R = p.ball_radius;
   switch (ball.motion)
   {
-    case Motion::Sliding:
-    {
+    case Motion::Sliding: {
       // The slip has just reached zero: the ball rolls with whatever velocity it has.
       const bool translating = ball.v.norm() > zeroSpeed<S>();
       if (translating)
@@ -210,13 +209,13 @@ S kineticEnergy(const Ball<S>& ball, const PhysicsParams<S>& p)
 }
 
 #define CUE_SIM_INSTANTIATE_MOTION(S)                                                                                  \
-  template Vec3<S> slipVelocity(const Vec3<S>&, const Vec3<S>&, S);                                                   \
-  template Motion classifyMotion(const Vec3<S>&, const Vec3<S>&, S);                                                  \
+  template Vec3<S> slipVelocity(const Vec3<S>&, const Vec3<S>&, S);                                                    \
+  template Motion classifyMotion(const Vec3<S>&, const Vec3<S>&, S);                                                   \
   template void settleMotion(Ball<S>&, S);                                                                             \
-  template S timeToTransition(const Ball<S>&, const PhysicsParams<S>&);                                               \
-  template Ball<S> evolve(const Ball<S>&, S, const PhysicsParams<S>&);                                                \
-  template Trajectory<S> trajectoryFrom(const Ball<S>&, S, const PhysicsParams<S>&);                                  \
-  template EventKind applyTransition(Ball<S>&, const PhysicsParams<S>&);                                              \
+  template S timeToTransition(const Ball<S>&, const PhysicsParams<S>&);                                                \
+  template Ball<S> evolve(const Ball<S>&, S, const PhysicsParams<S>&);                                                 \
+  template Trajectory<S> trajectoryFrom(const Ball<S>&, S, const PhysicsParams<S>&);                                   \
+  template EventKind applyTransition(Ball<S>&, const PhysicsParams<S>&);                                               \
   template S kineticEnergy(const Ball<S>&, const PhysicsParams<S>&);
 CUE_SIM_INSTANTIATE_MOTION(double)
 CUE_SIM_INSTANTIATE_MOTION(long double)

@@ -30,7 +30,7 @@ int degreeOf(const Poly4<S>& c)
 template <typename S>
 Poly4<S> derivativeOf(const Poly4<S>& c)
 {
-  return { c[1], S(2) * c[2], S(3) * c[3], S(4) * c[4], S(0) };
+  return {c[1], S(2) * c[2], S(3) * c[3], S(4) * c[4], S(0)};
 }
 
 /// Bound on the rounding error of Horner's rule at x (Higham, "Accuracy and Stability of

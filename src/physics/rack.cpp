@@ -9,7 +9,7 @@ namespace physics
 {
 std::vector<std::string> rackNames()
 {
-  return { "eight", "nine", "empty" };
+  return {"eight", "nine", "empty"};
 }
 
 namespace
@@ -29,10 +29,8 @@ TableState<S> rackLayout(const std::string& name, const TableModel& table, S bal
 {
   // Rows of ball numbers from the apex back. Eight-ball: the 8 in the middle of the third row,
   // a solid (6) and a stripe (12) in the back corners. Nine-ball: a diamond, 1 at the apex.
-  static const std::vector<std::vector<int>> eight_rows = {
-    { 1 }, { 11, 5 }, { 2, 8, 10 }, { 9, 7, 14, 4 }, { 6, 15, 13, 3, 12 }
-  };
-  static const std::vector<std::vector<int>> nine_rows = { { 1 }, { 2, 3 }, { 4, 9, 5 }, { 6, 7 }, { 8 } };
+  static const std::vector<std::vector<int>> eight_rows = {{1}, {11, 5}, {2, 8, 10}, {9, 7, 14, 4}, {6, 15, 13, 3, 12}};
+  static const std::vector<std::vector<int>> nine_rows = {{1}, {2, 3}, {4, 9, 5}, {6, 7}, {8}};
   const std::vector<std::vector<int>>* rows = nullptr;
   if (name == "eight")
     rows = &eight_rows;

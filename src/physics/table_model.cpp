@@ -25,17 +25,18 @@ std::vector<CircularCushion> withEndCaps(const std::vector<CushionSegment>& segm
   std::vector<CircularCushion> caps;
   for (const auto& s : segments)
   {
-    for (const auto* end : { &s.start, &s.end })
+    for (const auto* end : {&s.start, &s.end})
     {
       bool joined = false;
       for (const auto& other : segments)
-        if (&other != &s && ((other.start - *end).norm() < join_tolerance || (other.end - *end).norm() < join_tolerance))
+        if (&other != &s &&
+            ((other.start - *end).norm() < join_tolerance || (other.end - *end).norm() < join_tolerance))
           joined = true;
       for (const auto& c : circles)
         if ((c.centre - *end).norm() <= c.radius + join_tolerance)
           joined = true;
       if (!joined)
-        caps.push_back({ s.name + (end == &s.start ? "_start" : "_end"), *end, 0.0 });
+        caps.push_back({s.name + (end == &s.start ? "_start" : "_end"), *end, 0.0});
     }
   }
   circles.insert(circles.end(), caps.begin(), caps.end());
@@ -46,13 +47,13 @@ std::vector<CircularCushion> withEndCaps(const std::vector<CushionSegment>& segm
 TableModel::TableModel(std::string name, Eigen::Vector2d cloth_centre, double cloth_length, double cloth_width,
                        std::vector<CushionSegment> segments, std::vector<CircularCushion> circles,
                        std::vector<Pocket> pockets)
-  : name_(std::move(name))
-  , cloth_centre_(std::move(cloth_centre))
-  , cloth_length_(cloth_length)
-  , cloth_width_(cloth_width)
-  , segments_(std::move(segments))
-  , circles_(withEndCaps(segments_, std::move(circles)))
-  , pockets_(std::move(pockets))
+  : name_(std::move(name)),
+    cloth_centre_(std::move(cloth_centre)),
+    cloth_length_(cloth_length),
+    cloth_width_(cloth_width),
+    segments_(std::move(segments)),
+    circles_(withEndCaps(segments_, std::move(circles))),
+    pockets_(std::move(pockets))
 {
 }
 
@@ -78,17 +79,17 @@ TableModel TableModel::pool(const std::string& name, double cloth_length, double
   using V = Eigen::Vector2d;
   // Counter-clockwise round the cloth, so play is on each segment's left. Head end: x < 0.
   std::vector<CushionSegment> segments = {
-    makeSegment("cushion_yneg_head", V(-hx + d, -hy), V(-s, -hy)),
-    makeSegment("cushion_yneg_foot", V(s, -hy), V(hx - d, -hy)),
-    makeSegment("cushion_foot", V(hx, -hy + d), V(hx, hy - d)),
-    makeSegment("cushion_ypos_foot", V(hx - d, hy), V(s, hy)),
-    makeSegment("cushion_ypos_head", V(-s, hy), V(-hx + d, hy)),
-    makeSegment("cushion_head", V(-hx, hy - d), V(-hx, -hy + d)),
+      makeSegment("cushion_yneg_head", V(-hx + d, -hy), V(-s, -hy)),
+      makeSegment("cushion_yneg_foot", V(s, -hy), V(hx - d, -hy)),
+      makeSegment("cushion_foot", V(hx, -hy + d), V(hx, hy - d)),
+      makeSegment("cushion_ypos_foot", V(hx - d, hy), V(s, hy)),
+      makeSegment("cushion_ypos_head", V(-s, hy), V(-hx + d, hy)),
+      makeSegment("cushion_head", V(-hx, hy - d), V(-hx, -hy + d)),
   };
   // Capture circles through the cushion ends: any ball that passes a mouth is inside one.
   std::vector<Pocket> pockets = {
-    { "pocket_head_yneg", V(-hx, -hy), d }, { "pocket_side_yneg", V(0, -hy), s }, { "pocket_foot_yneg", V(hx, -hy), d },
-    { "pocket_foot_ypos", V(hx, hy), d },   { "pocket_side_ypos", V(0, hy), s },  { "pocket_head_ypos", V(-hx, hy), d },
+      {"pocket_head_yneg", V(-hx, -hy), d}, {"pocket_side_yneg", V(0, -hy), s}, {"pocket_foot_yneg", V(hx, -hy), d},
+      {"pocket_foot_ypos", V(hx, hy), d},   {"pocket_side_ypos", V(0, hy), s},  {"pocket_head_ypos", V(-hx, hy), d},
   };
   return TableModel(name, V::Zero(), cloth_length, cloth_width, std::move(segments), {}, std::move(pockets));
 }
@@ -98,10 +99,10 @@ TableModel TableModel::carom(const std::string& name, double cloth_length, doubl
   const double hx = cloth_length / 2, hy = cloth_width / 2;
   using V = Eigen::Vector2d;
   std::vector<CushionSegment> segments = {
-    makeSegment("cushion_yneg", V(-hx, -hy), V(hx, -hy)),
-    makeSegment("cushion_foot", V(hx, -hy), V(hx, hy)),
-    makeSegment("cushion_ypos", V(hx, hy), V(-hx, hy)),
-    makeSegment("cushion_head", V(-hx, hy), V(-hx, -hy)),
+      makeSegment("cushion_yneg", V(-hx, -hy), V(hx, -hy)),
+      makeSegment("cushion_foot", V(hx, -hy), V(hx, hy)),
+      makeSegment("cushion_ypos", V(hx, hy), V(-hx, hy)),
+      makeSegment("cushion_head", V(-hx, hy), V(-hx, -hy)),
   };
   return TableModel(name, V::Zero(), cloth_length, cloth_width, std::move(segments), {}, {});
 }
@@ -115,8 +116,9 @@ std::string TableModel::whyNotPlaceable(const Eigen::Vector2d& p, double R) cons
     why << "position is not finite";
   else if (std::abs(offset.x()) > cloth_length_ / 2 - R + tolerance ||
            std::abs(offset.y()) > cloth_width_ / 2 - R + tolerance)
-    why << "position (" << p.x() << ", " << p.y() << ") is off the cloth: the centre must be within |x| <= "
-        << cloth_length_ / 2 - R << ", |y| <= " << cloth_width_ / 2 - R << " m of the cloth centre";
+    why << "position (" << p.x() << ", " << p.y()
+        << ") is off the cloth: the centre must be within |x| <= " << cloth_length_ / 2 - R
+        << ", |y| <= " << cloth_width_ / 2 - R << " m of the cloth centre";
   for (const auto& s : segments_)
     if (why.str().empty() && distanceToSegment(p, s) < R - tolerance)
       why << "position (" << p.x() << ", " << p.y() << ") overlaps " << s.name;

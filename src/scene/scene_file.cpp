@@ -1,10 +1,11 @@
 #include "cue_sim/scene/scene_file.hpp"
 
+#include <yaml-cpp/yaml.h>
+
 #include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
-#include <yaml-cpp/yaml.h>
 
 #include "cue_sim/physics/motion.hpp"
 #include "cue_sim/physics/rack.hpp"
@@ -57,7 +58,7 @@ void applyPhysicsNode(const YAML::Node& node, physics::PhysicsParams<double>& pa
 {
   if (!node.IsMap())
     throw SceneError("physics must be a map of coefficient names to values");
-  std::set<std::string> known = { "ball_ball_model", "cushion_model" };
+  std::set<std::string> known = {"ball_ball_model", "cushion_model"};
   for (const auto& field : physics::physicsParamFields())
     known.insert(field.name);
   onlyKeys(node, "physics", known);
@@ -75,7 +76,7 @@ void applyPhysicsNode(const YAML::Node& node, physics::PhysicsParams<double>& pa
 
 physics::Ball<double> ballFrom(const YAML::Node& node, double radius)
 {
-  onlyKeys(node, "balls", { "id", "position", "velocity", "angular_velocity" });
+  onlyKeys(node, "balls", {"id", "position", "velocity", "angular_velocity"});
   if (!node["id"] || !node["position"])
     throw SceneError("every ball needs 'id' and 'position' ([x, y] in metres)");
   physics::Ball<double> b;
@@ -111,7 +112,7 @@ Scene loadScene(const std::string& yaml_text)
     const YAML::Node root = YAML::Load(yaml_text);
     if (!root.IsMap())
       throw SceneError("a scene is a YAML map");
-    onlyKeys(root, "the scene", { "table", "physics", "rack", "rack_gap", "balls", "shot", "duration" });
+    onlyKeys(root, "the scene", {"table", "physics", "rack", "rack_gap", "balls", "shot", "duration"});
     Scene scene;
     if (root["physics"])
       applyPhysicsNode(root["physics"], scene.params, scene.models);
@@ -147,7 +148,7 @@ Scene loadScene(const std::string& yaml_text)
     if (root["shot"])
     {
       const YAML::Node s = root["shot"];
-      onlyKeys(s, "shot", { "ball", "speed", "phi", "theta", "a", "b" });
+      onlyKeys(s, "shot", {"ball", "speed", "phi", "theta", "a", "b"});
       Shot shot;
       shot.ball = s["ball"] ? s["ball"].as<int>() : 0;
       if (!s["speed"])

@@ -9,12 +9,12 @@ namespace
 {
 json vec(const Vec3<double>& v)
 {
-  return json::array({ v.x(), v.y(), v.z() });
+  return json::array({v.x(), v.y(), v.z()});
 }
 
 json eventJson(const TableModel& table, const Event<double>& e)
 {
-  json j = { { "t", e.time }, { "kind", eventKindName(e.kind) }, { "ball", e.ball } };
+  json j = {{"t", e.time}, {"kind", eventKindName(e.kind)}, {"ball", e.ball}};
   if (e.other >= 0)
     j["other"] = e.other;
   if (e.kind == EventKind::BallCushion)
@@ -32,23 +32,23 @@ json shotReport(const Engine<double>& engine, const TableState<double>& final_st
 {
   json report;
   report["table"] = engine.table().name();
-  report["models"] = { { "ball_ball", engine.models().ball_ball }, { "cushion", engine.models().cushion } };
+  report["models"] = {{"ball_ball", engine.models().ball_ball}, {"cushion", engine.models().cushion}};
   report["events"] = json::array();
   for (const auto& e : events)
     report["events"].push_back(eventJson(engine.table(), e));
   json balls = json::array();
   for (const auto& b : engine.snapshot(final_state))
   {
-    json jb = { { "id", b.id },
-                { "position", vec(b.r) },
-                { "velocity", vec(b.v) },
-                { "angular_velocity", vec(b.w) },
-                { "motion", motionName(b.motion) } };
+    json jb = {{"id", b.id},
+               {"position", vec(b.r)},
+               {"velocity", vec(b.v)},
+               {"angular_velocity", vec(b.w)},
+               {"motion", motionName(b.motion)}};
     if (b.pocket >= 0)
       jb["pocket"] = engine.table().pockets()[b.pocket].name;
     balls.push_back(jb);
   }
-  report["final_state"] = { { "time", final_state.time }, { "balls", balls } };
+  report["final_state"] = {{"time", final_state.time}, {"balls", balls}};
   report["at_rest"] = at_rest;
   return report;
 }

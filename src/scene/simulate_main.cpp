@@ -9,12 +9,11 @@
 
 int main(int argc, char** argv)
 {
-  CLI::App app{ "Simulate a pool scene exactly and print every event and the final state as JSON." };
+  CLI::App app{"Simulate a pool scene exactly and print every event and the final state as JSON."};
   std::string scene_path;
   int indent = 2;
   long max_events = cue_sim::physics::EngineLimits().max_events;
-  app.add_option("scene", scene_path, "scene file (YAML; format in README.md, 'Scene files'); - for stdin")
-      ->required();
+  app.add_option("scene", scene_path, "scene file (YAML; format in README.md, 'Scene files'); - for stdin")->required();
   app.add_option("--indent", indent, "JSON indentation, -1 for one line");
   app.add_option("--max-events", max_events, "give up after this many events")->check(CLI::PositiveNumber);
   CLI11_PARSE(app, argc, argv);

@@ -10,7 +10,7 @@ namespace cue_sim
 {
 std::vector<std::string> tableNames()
 {
-  return { "7ft", "9ft", "carom" };
+  return {"7ft", "9ft", "carom"};
 }
 
 namespace
@@ -23,8 +23,8 @@ bool readable(const std::string& path)
 
 std::string tableUrdfPath(const std::string& name_or_path)
 {
-  if (name_or_path.find('/') != std::string::npos || name_or_path.size() > 5 &&
-                                                         name_or_path.substr(name_or_path.size() - 5) == ".urdf")
+  if (name_or_path.find('/') != std::string::npos ||
+      name_or_path.size() > 5 && name_or_path.substr(name_or_path.size() - 5) == ".urdf")
   {
     if (!readable(name_or_path))
       throw TableDescriptionError("cannot read URDF file '" + name_or_path + "'");

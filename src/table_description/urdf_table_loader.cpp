@@ -1,11 +1,12 @@
 #include "cue_sim/table_description/urdf_table_loader.hpp"
 
+#include <urdf_parser/urdf_parser.h>
+
 #include <Eigen/Geometry>
 #include <cmath>
 #include <fstream>
 #include <map>
 #include <sstream>
-#include <urdf_parser/urdf_parser.h>
 
 namespace cue_sim
 {
@@ -71,12 +72,12 @@ public:
       else if (startsWith(name, "pocket_"))
       {
         const auto [centre, radius] = cylinderOf(*link);
-        pockets.push_back({ name, centre, radius });
+        pockets.push_back({name, centre, radius});
       }
       else if (startsWith(name, "jaw_"))
       {
         const auto [centre, radius] = cylinderOf(*link);
-        circles.push_back({ name, centre, radius });
+        circles.push_back({name, centre, radius});
       }
     }
     if (segments.empty())
@@ -87,7 +88,10 @@ public:
   }
 
 private:
-  [[noreturn]] void fail(const std::string& why) const { throw TableDescriptionError("URDF '" + model_.getName() + "': " + why); }
+  [[noreturn]] void fail(const std::string& why) const
+  {
+    throw TableDescriptionError("URDF '" + model_.getName() + "': " + why);
+  }
 
   /// The link's pose in the root frame, through its chain of fixed joints.
   Eigen::Isometry3d linkPose(const urdf::Link& link) const
@@ -112,7 +116,7 @@ private:
     const auto& box = static_cast<const urdf::Box&>(*link.collision->geometry);
     if (!(box.dim.x > 0 && box.dim.y > 0 && box.dim.z > 0))
       fail("link '" + link.name + "': box sizes must be positive");
-    return { linkPose(link) * toIsometry(link.collision->origin), Eigen::Vector3d(box.dim.x, box.dim.y, box.dim.z) };
+    return {linkPose(link) * toIsometry(link.collision->origin), Eigen::Vector3d(box.dim.x, box.dim.y, box.dim.z)};
   }
 
   std::pair<Eigen::Vector2d, double> cylinderOf(const urdf::Link& link) const
@@ -125,10 +129,13 @@ private:
     const Eigen::Isometry3d pose = linkPose(link) * toIsometry(link.collision->origin);
     if (!isLevel(pose))
       fail("link '" + link.name + "': the cylinder's axis must be vertical");
-    return { pose.translation().head<2>(), cylinder.radius };
+    return {pose.translation().head<2>(), cylinder.radius};
   }
 
-  static bool isLevel(const Eigen::Isometry3d& pose) { return (pose.linear().col(2) - Eigen::Vector3d::UnitZ()).norm() < 1e-9; }
+  static bool isLevel(const Eigen::Isometry3d& pose)
+  {
+    return (pose.linear().col(2) - Eigen::Vector3d::UnitZ()).norm() < 1e-9;
+  }
   static double yawOf(const Eigen::Isometry3d& pose) { return std::atan2(pose.linear()(1, 0), pose.linear()(0, 0)); }
 
   const urdf::ModelInterface& model_;
@@ -169,9 +176,9 @@ std::vector<FixedLinkTransform> fixedLinkTransforms(const std::string& urdf_xml)
     if (joint->type != urdf::Joint::FIXED)
       throw TableDescriptionError("URDF '" + model->getName() + "': joint '" + name + "' must be fixed");
     const auto& pose = joint->parent_to_joint_origin_transform;
-    out.push_back({ joint->parent_link_name, joint->child_link_name,
-                    Eigen::Vector3d(pose.position.x, pose.position.y, pose.position.z),
-                    Eigen::Quaterniond(pose.rotation.w, pose.rotation.x, pose.rotation.y, pose.rotation.z) });
+    out.push_back({joint->parent_link_name, joint->child_link_name,
+                   Eigen::Vector3d(pose.position.x, pose.position.y, pose.position.z),
+                   Eigen::Quaterniond(pose.rotation.w, pose.rotation.x, pose.rotation.y, pose.rotation.z)});
   }
   return out;
 }

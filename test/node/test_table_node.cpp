@@ -1,9 +1,8 @@
 // table_node through a real master: services, tf, markers and a real rosbag.
-#include <gtest/gtest.h>
-
 #include <cue_sim/Rack.h>
 #include <cue_sim/Strike.h>
 #include <cue_sim/TableState.h>
+#include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
@@ -15,9 +14,9 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
-#include <sstream>
 #include <map>
 #include <set>
+#include <sstream>
 #include <thread>
 
 namespace
@@ -208,13 +207,13 @@ TEST_F(TableNodeTest, BadStrikesAreRefusedAndChangeNothing)
     std::string field;
   };
   const std::vector<Case> cases = {
-    { 0, NAN, 0, 0, 0, 0, "speed" },       { 0, -1.0, 0, 0, 0, 0, "speed" },
-    { 0, 0.0, 0, 0, 0, 0, "speed" },       { 0, 12.5, 0, 0, 0, 0, "speed" },
-    { 0, INFINITY, 0, 0, 0, 0, "speed" },  { 0, 2.0, NAN, 0, 0, 0, "phi" },
-    { 0, 2.0, INFINITY, 0, 0, 0, "phi" },  { 0, 2.0, 0, -0.1, 0, 0, "theta" },
-    { 0, 2.0, 0, 2.0, 0, 0, "theta" },     { 0, 2.0, 0, 0, 0.4, 0.4, "sqrt(a^2 + b^2)" },
-    { 0, 2.0, 0, 0, NAN, 0, "a and b" },   { 12, 2.0, 0, 0, 0, 0, "ball_id 12 is not on the table" },
-    { -1, 2.0, 0, 0, 0, 0, "ball_id -1" },
+      {0, NAN, 0, 0, 0, 0, "speed"},       {0, -1.0, 0, 0, 0, 0, "speed"},
+      {0, 0.0, 0, 0, 0, 0, "speed"},       {0, 12.5, 0, 0, 0, 0, "speed"},
+      {0, INFINITY, 0, 0, 0, 0, "speed"},  {0, 2.0, NAN, 0, 0, 0, "phi"},
+      {0, 2.0, INFINITY, 0, 0, 0, "phi"},  {0, 2.0, 0, -0.1, 0, 0, "theta"},
+      {0, 2.0, 0, 2.0, 0, 0, "theta"},     {0, 2.0, 0, 0, 0.4, 0.4, "sqrt(a^2 + b^2)"},
+      {0, 2.0, 0, 0, NAN, 0, "a and b"},   {12, 2.0, 0, 0, 0, 0, "ball_id 12 is not on the table"},
+      {-1, 2.0, 0, 0, 0, 0, "ball_id -1"},
   };
   for (const auto& c : cases)
   {
@@ -239,7 +238,7 @@ TEST_F(TableNodeTest, PocketedBallCannotBeStruckAndRestsBelowTheCloth)
 {
   // Ball 3 a short way from the foot-left corner, shot straight in.
   const double hx = 1.9812 / 2, hy = 0.9906 / 2;
-  ASSERT_TRUE(rack("custom", { 0, 3 }, { { -0.5, 0.0 }, { hx - 0.2, hy - 0.2 } }).success);
+  ASSERT_TRUE(rack("custom", {0, 3}, {{-0.5, 0.0}, {hx - 0.2, hy - 0.2}}).success);
   const auto r = strike(3, 1.5, M_PI / 4);
   ASSERT_TRUE(r.success) << r.message;
   waitUntilAtRest(10);
@@ -266,15 +265,15 @@ TEST_F(TableNodeTest, BadRacksAreRefusedAndChangeNothing)
     std::string words;
   };
   const std::vector<Case> cases = {
-    { "ten", {}, {}, "layout must be one of" },
-    { "custom", { 0, 1 }, { { 0, 0 } }, "same length" },
-    { "custom", { 0, 1 }, { { 0, 0 }, { kRadius, 0 } }, "overlap" },
-    { "custom", { 0 }, { { 5.0, 0 } }, "off the cloth" },
-    { "custom", { 0 }, { { NAN, 0 } }, "finite" },
-    { "custom", { 16 }, { { 0, 0 } }, "not in [0, 15]" },
-    { "custom", { 0, 0 }, { { 0, 0 }, { 0.3, 0 } }, "twice" },
-    { "custom", { 0 }, { { 1.9812 / 2 - 0.03, 0.9906 / 2 - 0.03 } }, "pocket" },
-    { "eight", { 1 }, { { 0, 0 } }, "'custom' only" },
+      {"ten", {}, {}, "layout must be one of"},
+      {"custom", {0, 1}, {{0, 0}}, "same length"},
+      {"custom", {0, 1}, {{0, 0}, {kRadius, 0}}, "overlap"},
+      {"custom", {0}, {{5.0, 0}}, "off the cloth"},
+      {"custom", {0}, {{NAN, 0}}, "finite"},
+      {"custom", {16}, {{0, 0}}, "not in [0, 15]"},
+      {"custom", {0, 0}, {{0, 0}, {0.3, 0}}, "twice"},
+      {"custom", {0}, {{1.9812 / 2 - 0.03, 0.9906 / 2 - 0.03}}, "pocket"},
+      {"eight", {1}, {{0, 0}}, "'custom' only"},
   };
   for (const auto& c : cases)
   {
@@ -287,7 +286,7 @@ TEST_F(TableNodeTest, BadRacksAreRefusedAndChangeNothing)
 
 TEST_F(TableNodeTest, ResetReturnsToTheLastRack)
 {
-  ASSERT_TRUE(rack("custom", { 0, 5 }, { { -0.3, 0.1 }, { 0.4, -0.2 } }).success);
+  ASSERT_TRUE(rack("custom", {0, 5}, {{-0.3, 0.1}, {0.4, -0.2}}).success);
   const auto racked = *freshState();
   ASSERT_TRUE(strike(0, 2.0, 1.0).success);
   ros::Duration(0.3).sleep();
@@ -343,8 +342,8 @@ TEST_F(TableNodeTest, BrokenTableDescriptionStopsTheNodeWithAReason)
   std::ofstream(no_cloth) << "<robot name='bad'><link name='table'/></robot>";
   const auto run = [&](const std::string& name, const std::string& file) {
     const std::string log = dir + "/" + name + ".log";
-    const std::string command = "rosrun cue_sim table_node __name:=" + name + " _urdf_file:=" + file + " > " + log +
-                                " 2>&1";
+    const std::string command =
+        "rosrun cue_sim table_node __name:=" + name + " _urdf_file:=" + file + " > " + log + " 2>&1";
     const int status = std::system(command.c_str());
     std::ifstream in(log);
     std::stringstream text;

@@ -31,7 +31,7 @@ TEST(FrictionlessBallBall, ReproducesTheArticleExample)
 TEST(FrictionlessBallBall, ConservesMomentumAndNeverGainsEnergy)
 {
   PhysicsParams<double> p;
-  for (double e : { 0.0, 0.5, 0.95, 1.0 })
+  for (double e : {0.0, 0.5, 0.95, 1.0})
   {
     p.e_ball = e;
     Ball<double> a, b;
@@ -121,7 +121,7 @@ TEST(CueStrike, OutOfRangeFieldsAreNamed)
   CueStrike<double> s;
   s.speed = 2;
   EXPECT_EQ(validateStrike(s), "");
-  for (double bad : { -1.0, 0.0, 12.5, double(NAN), double(INFINITY) })
+  for (double bad : {-1.0, 0.0, 12.5, double(NAN), double(INFINITY)})
   {
     s.speed = bad;
     EXPECT_NE(validateStrike(s).find("speed"), std::string::npos) << bad;

@@ -43,8 +43,8 @@ double smallestGap(const Engine<double>& engine, const TableState<double>& s, do
   for (std::size_t i = 0; i < s.balls.size(); ++i)
     for (std::size_t j = i + 1; j < s.balls.size(); ++j)
       if (s.balls[i].inPlay() && s.balls[j].inPlay())
-        gap = std::min(gap, (engine.ballAt(s, i, t).r - engine.ballAt(s, j, t).r).norm() -
-                                2 * engine.params().ball_radius);
+        gap = std::min(gap,
+                       (engine.ballAt(s, i, t).r - engine.ballAt(s, j, t).r).norm() - 2 * engine.params().ball_radius);
   return gap;
 }
 
@@ -66,16 +66,15 @@ int checkInvariantsEventByEvent(const Engine<double>& engine, TableState<double>
     const double energy_before = totalEnergy(engine, s, ev.time);
     Vec3<double> momentum_before = Vec3<double>::Zero();
     if (ev.kind == EventKind::BallBall)
-      momentum_before = m * (engine.ballAt(s, s.indexOf(ev.ball), ev.time).v +
-                             engine.ballAt(s, s.indexOf(ev.other), ev.time).v);
+      momentum_before =
+          m * (engine.ballAt(s, s.indexOf(ev.ball), ev.time).v + engine.ballAt(s, s.indexOf(ev.other), ev.time).v);
     const Event<double> done = engine.step(s);
     EXPECT_EQ(done.time, ev.time);
     const double energy_after = totalEnergy(engine, s, ev.time);
     EXPECT_LE(energy_after, energy_before * (1 + 1e-12) + 1e-15) << eventKindName(ev.kind) << " at " << ev.time;
     if (ev.kind == EventKind::BallBall)
     {
-      const Vec3<double> after =
-          m * (s.balls[s.indexOf(ev.ball)].v + s.balls[s.indexOf(ev.other)].v);
+      const Vec3<double> after = m * (s.balls[s.indexOf(ev.ball)].v + s.balls[s.indexOf(ev.other)].v);
       EXPECT_NEAR((after - momentum_before).norm(), 0, 1e-12 * (1 + momentum_before.norm()));
     }
     EXPECT_GT(smallestGap(engine, s, ev.time), -1e-9) << "overlap at t = " << ev.time;

@@ -64,7 +64,7 @@ TEST(Motion, StateAtAnyTimeMatchesTheClosedForms)
   const Vec3<double> u0(b.v.x() - R * b.w.y(), b.v.y() + R * b.w.x(), 0);
   const Vec3<double> u_hat = u0.normalized();
   const double tau = 2 * u0.norm() / (7 * p.mu_slide * g);
-  for (double t : { 0.0, 1e-9, 0.013, 0.5 * tau, 0.99 * tau, tau })
+  for (double t : {0.0, 1e-9, 0.013, 0.5 * tau, 0.99 * tau, tau})
   {
     const Ball<double> e = evolve(b, t, p);
     const Vec3<double> r = b.r + b.v * t - 0.5 * p.mu_slide * g * t * t * u_hat;
@@ -100,7 +100,7 @@ TEST(Motion, TrajectoryCoefficientsReproduceTheState)
 {
   const Ball<double> b = slidingBall(2.5, 1.1);
   const Trajectory<double> traj = trajectoryFrom(b, 0.05, p);
-  for (double tau : { 0.0, 0.01, 0.1 })
+  for (double tau : {0.0, 0.01, 0.1})
     EXPECT_NEAR((traj.at(tau) - evolve(b, 0.05 + tau, p).r.head<2>()).norm(), 0, 1e-15);
 }
 

@@ -44,8 +44,7 @@ TEST(SceneFile, ConfigPhysicsYamlHoldsTheBuiltInDefaults)
   applyPhysicsYaml(readConfig(), from_yaml, models);
   const physics::PhysicsParams<double> defaults;
   for (const auto& field : physics::physicsParamFields())
-    EXPECT_NEAR(from_yaml.*field.member, defaults.*field.member, 1e-9 * std::abs(defaults.*field.member))
-        << field.name;
+    EXPECT_NEAR(from_yaml.*field.member, defaults.*field.member, 1e-9 * std::abs(defaults.*field.member)) << field.name;
   EXPECT_EQ(models.ball_ball, physics::ModelChoice().ball_ball);
   EXPECT_EQ(models.cushion, physics::ModelChoice().cushion);
 }

@@ -27,7 +27,7 @@ ProgramRun simulate(const std::string& scene_text, const std::string& args = "")
   while (fgets(buffer.data(), buffer.size(), pipe.get()))
     out += buffer.data();
   const int status = pclose(pipe.release());
-  return { WEXITSTATUS(status), out };
+  return {WEXITSTATUS(status), out};
 }
 }  // namespace
 

@@ -47,7 +47,8 @@ std::string minimalTable(const std::string& extra_links, bool with_cloth = true)
 {
   std::string urdf = R"(<robot name="test"><link name="table"/>)";
   if (with_cloth)
-    urdf += R"(<link name="cloth"><collision><origin xyz="0 0 -0.01"/><geometry><box size="2 1 0.02"/></geometry></collision></link>
+    urdf +=
+        R"(<link name="cloth"><collision><origin xyz="0 0 -0.01"/><geometry><box size="2 1 0.02"/></geometry></collision></link>
                <joint name="j_cloth" type="fixed"><parent link="table"/><child link="cloth"/></joint>)";
   return urdf + extra_links + "</robot>";
 }

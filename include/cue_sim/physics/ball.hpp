@@ -28,11 +28,11 @@ struct Ball
 {
   int id = 0;  ///< 0 is the cue ball; 1-15 the object balls.
   Motion motion = Motion::Stationary;
-  S time = S(0);             ///< time [s] that r, v, w refer to
+  S time = S(0);                ///< time [s] that r, v, w refer to
   Vec3<S> r = Vec3<S>::Zero();  ///< centre in the table frame [m]; z = R on the cloth
   Vec3<S> v = Vec3<S>::Zero();  ///< velocity [m/s]; z = 0
   Vec3<S> w = Vec3<S>::Zero();  ///< angular velocity [rad/s]
-  int pocket = -1;           ///< index into TableModel::pockets when pocketed
+  int pocket = -1;              ///< index into TableModel::pockets when pocketed
 
   bool inPlay() const { return motion != Motion::Pocketed; }
   bool moving() const { return motion == Motion::Sliding || motion == Motion::Rolling || motion == Motion::Spinning; }

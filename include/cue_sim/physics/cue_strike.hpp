@@ -28,8 +28,8 @@ struct CueStrike
 
 struct CueLimits
 {
-  static constexpr double max_speed = 12.0;  ///< [m/s]: a very hard break is about 11 m/s.
-  static constexpr double max_offset = 0.5;  ///< sqrt(a^2 + b^2) [R]: beyond it the tip miscues.
+  static constexpr double max_speed = 12.0;                    ///< [m/s]: a very hard break is about 11 m/s.
+  static constexpr double max_offset = 0.5;                    ///< sqrt(a^2 + b^2) [R]: beyond it the tip miscues.
   static constexpr double max_elevation = 1.5707963267948966;  ///< [rad]: vertical (masse).
 };
 

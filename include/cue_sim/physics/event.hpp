@@ -35,7 +35,10 @@ struct Event
   int obstacle = -1;       ///< index of the cushion, circle or pocket, or -1
 
   bool valid() const { return kind != EventKind::None; }
-  bool isCollision() const { return kind == EventKind::BallBall || kind == EventKind::BallCushion || kind == EventKind::BallCircle; }
+  bool isCollision() const
+  {
+    return kind == EventKind::BallBall || kind == EventKind::BallCushion || kind == EventKind::BallCircle;
+  }
 };
 
 }  // namespace physics

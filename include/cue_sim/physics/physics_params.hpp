@@ -23,13 +23,13 @@ struct PhysicsParams
   /// Ball-ball friction fit mu_b(v) = a + b exp(-c v_rel) (Alciatore TP A-14); frictional model.
   S mu_ball_a = S(0.009951);
   S mu_ball_b = S(0.108);
-  S mu_ball_c = S(1.088);         ///< [s/m]
-  S e_cushion = S(0.85);          ///< ball-cushion restitution [-]; 0.6-0.9 (Alciatore, Han 2005).
-  S f_cushion = S(0.2);           ///< ball-cushion friction [-] (Han 2005 model).
-  S cushion_height = S(0.036576); ///< h [m], cushion nose above the cloth: 0.64 x 2R (Han 2005 model).
-  S cue_mass = S(0.567);          ///< M [kg]; a 20 oz cue.
-  S cue_end_mass = S(0.0056699);  ///< m_e [kg], the cue's end mass that drives squirt (TP A-31).
-  S cue_tip_radius = S(0.0106);   ///< [m].
+  S mu_ball_c = S(1.088);          ///< [s/m]
+  S e_cushion = S(0.85);           ///< ball-cushion restitution [-]; 0.6-0.9 (Alciatore, Han 2005).
+  S f_cushion = S(0.2);            ///< ball-cushion friction [-] (Han 2005 model).
+  S cushion_height = S(0.036576);  ///< h [m], cushion nose above the cloth: 0.64 x 2R (Han 2005 model).
+  S cue_mass = S(0.567);           ///< M [kg]; a 20 oz cue.
+  S cue_end_mass = S(0.0056699);   ///< m_e [kg], the cue's end mass that drives squirt (TP A-31).
+  S cue_tip_radius = S(0.0106);    ///< [m].
 
   /// Deceleration of a sliding ball's contact-point slip is 7/2 of this [m/s^2].
   S slideDecel() const { return mu_slide * gravity; }
