@@ -11,7 +11,7 @@ cue_sim_source_devel
 mkdir -p "$ROS_LOG_DIR"
 
 rviz=false
-if [ -n "${DISPLAY:-}" ] && xset q >/dev/null 2>&1; then rviz=true; fi
+if [ -n "${DISPLAY:-}" ]; then rviz=true; fi
 if [ -n "${CUE_SIM_RVIZ:-}" ]; then rviz="$CUE_SIM_RVIZ"; fi
 echo "cue_sim demo: starting the table (rviz: $rviz)"
 roslaunch cue_sim table.launch rviz:="$rviz" table:="${TABLE:-7ft}" rack:=eight > "$ROS_LOG_DIR/demo_launch.log" 2>&1 &

@@ -36,12 +36,10 @@ void applyCueStrike(Ball<S>& ball, const CueStrike<S>& s, const PhysicsParams<S>
   const S A = s.a * R, B = s.b * R;
   const S C = std::sqrt(std::max(R * R - A * A - B * B, S(0)));
   const S sin_t = std::sin(s.theta), cos_t = std::cos(s.theta);
-  // Contact point relative to the centre and the cue's direction into the ball.
-  const Vec3<S> contact = A * side + B * z - C * h;
-  const Vec3<S> cue_dir = cos_t * h - sin_t * z;
-  const Vec3<S> lever = contact.cross(cue_dir);
-  // Impulse of an elastic cue on a free sphere hit at `contact` (Alciatore TP A-30):
-  // v = 2 V0 / (1 + m/M + |contact x d|^2 / (2/5 R^2)).
+  // The tip meets the ball at P - C = A side + B z - C h; the cue pushes along
+  // d = cos(theta) h - sin(theta) z. The angular impulse per unit linear impulse is (P - C) x d,
+  // written out in (side, h, z) so that a centre hit gives exactly no spin.
+  const Vec3<S> lever = (C * sin_t - B * cos_t) * side + (A * sin_t) * h + (A * cos_t) * z;
   const S speed = S(2) * s.speed / (S(1) + p.ball_mass / p.cue_mass + lever.squaredNorm() / (S(0.4) * R * R));
   ball.v = speed * cos_t * h;  // the vertical part goes into the cloth
   ball.w = (speed / (S(0.4) * R * R)) * lever;

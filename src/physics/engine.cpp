@@ -58,7 +58,7 @@ struct Engine<S>::Obstacles
     S radius;
   };
   std::vector<Segment> segments;
-  std::vector<Circle> circles;  // cushions with radius, then pockets with capture radius
+  std::vector<Circle> circles;  // jaws and cushion end caps
   std::vector<Circle> pockets;
 };
 

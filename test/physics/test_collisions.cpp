@@ -137,3 +137,36 @@ TEST(CueStrike, OutOfRangeFieldsAreNamed)
   s.b = 0.4;
   EXPECT_NE(validateStrike(s).find("sqrt(a^2 + b^2)"), std::string::npos);
 }
+
+TEST(CueStrike, SpeedAndSpinAgreeWithThePublishedFormulaForAnyOffset)
+{
+  // PHYSICS.md (Alciatore TP A-30): v = 2 V0 / (1 + m/M + 5/(2R^2) (a^2 + b^2 cos^2 t + c^2 sin^2 t
+  // - 2 b c cos t sin t)); the spin is (P - C) x d times v / (2/5 R^2), computed here as a cross
+  // product of the contact point and the cue direction.
+  PhysicsParams<double> p;
+  const double R = p.ball_radius;
+  for (double theta : {0.0, 0.2, 0.7, 1.4})
+    for (double a : {-0.3, 0.0, 0.25})
+      for (double b : {-0.35, 0.0, 0.1})
+      {
+        CueStrike<double> s;
+        s.speed = 3.0;
+        s.phi = 2.2;
+        s.theta = theta;
+        s.a = a;
+        s.b = b;
+        Ball<double> ball;
+        applyCueStrike(ball, s, p);
+        const double A = a * R, B = b * R, C = std::sqrt(R * R - A * A - B * B);
+        const double ct = std::cos(theta), st = std::sin(theta);
+        const double v = 2 * s.speed /
+                         (1 + p.ball_mass / p.cue_mass +
+                          5 / (2 * R * R) * (A * A + B * B * ct * ct + C * C * st * st - 2 * B * C * ct * st));
+        EXPECT_NEAR(ball.v.norm(), v * ct, 1e-12) << theta << " " << a << " " << b;
+        const Vec3<double> h(std::cos(s.phi), std::sin(s.phi), 0), side(h.y(), -h.x(), 0), z(0, 0, 1);
+        const Vec3<double> contact = A * side + B * z - C * h;
+        const Vec3<double> cue_direction = ct * h - st * z;
+        const Vec3<double> w = v / (0.4 * R * R) * contact.cross(cue_direction);
+        EXPECT_NEAR((ball.w - w).norm(), 0, 1e-9 * (1 + w.norm())) << theta << " " << a << " " << b;
+      }
+}
