@@ -14,7 +14,7 @@ namespace physics
 ///  - phi: heading in the table frame, from +x towards +y [rad];
 ///  - theta: cue elevation above the cloth [rad], 0 = level, in [0, max_elevation];
 ///  - a: tip offset to the shooter's right, b: tip offset up, both in units of R.
-///    b > 0 is follow (topspin), b < 0 draw; a > 0 hits right of centre and gives the
+///    b > 0 is follow (topspin), b < 0 draw; a > 0 (right English) hits right of centre and gives the
 ///    ball w_z > 0 (counter-clockwise seen from above).
 template <typename S>
 struct CueStrike
