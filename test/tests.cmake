@@ -6,6 +6,7 @@ catkin_add_gtest(physics_tests
   test/physics/test_motion.cpp
   test/physics/test_collisions.cpp
   test/physics/test_engine.cpp
+  test/physics/test_shot_physics.cpp
 )
 target_link_libraries(physics_tests cue_sim_physics gtest_main)
 

@@ -26,6 +26,13 @@ std::string validateStrike(const CueStrike<S>& s)
 }
 
 template <typename S>
+S squirtAngle(S a, const PhysicsParams<S>& p)
+{
+  const S a2 = a * a;
+  return std::atan(S(2.5) * a * std::sqrt(S(1) - a2) / (S(1) + p.ball_mass / p.cue_end_mass + S(2.5) * (S(1) - a2)));
+}
+
+template <typename S>
 void applyCueStrike(Ball<S>& ball, const CueStrike<S>& s, const PhysicsParams<S>& p)
 {
   const S R = p.ball_radius;
@@ -41,13 +48,19 @@ void applyCueStrike(Ball<S>& ball, const CueStrike<S>& s, const PhysicsParams<S>
   // written out in (side, h, z) so that a centre hit gives exactly no spin.
   const Vec3<S> lever = (C * sin_t - B * cos_t) * side + (A * sin_t) * h + (A * cos_t) * z;
   const S speed = S(2) * s.speed / (S(1) + p.ball_mass / p.cue_mass + lever.squaredNorm() / (S(0.4) * R * R));
-  ball.v = speed * cos_t * h;  // the vertical part goes into the cloth
+  // Squirt (Alciatore TP A-31): the cue's end mass m_e is pushed aside with the ball, which
+  // leaves away from the side struck, turned by alpha in the horizontal plane.
+  const S heading = s.phi + squirtAngle(s.a, p);
+  ball.v =
+      speed * cos_t * Vec3<S>(std::cos(heading), std::sin(heading), S(0));  // the vertical part goes into the cloth
   ball.w = (speed / (S(0.4) * R * R)) * lever;
   ball.r.z() = R;
 }
 
 template std::string validateStrike(const CueStrike<double>&);
 template std::string validateStrike(const CueStrike<long double>&);
+template double squirtAngle(double, const PhysicsParams<double>&);
+template long double squirtAngle(long double, const PhysicsParams<long double>&);
 template void applyCueStrike(Ball<double>&, const CueStrike<double>&, const PhysicsParams<double>&);
 template void applyCueStrike(Ball<long double>&, const CueStrike<long double>&, const PhysicsParams<long double>&);
 

@@ -88,7 +88,7 @@ int checkInvariantsEventByEvent(const Engine<double>& engine, TableState<double>
 TEST(Engine, RollingBallHitsTheFootCushionWhereTheFormulaSays)
 {
   const PhysicsParams<double> p;
-  Engine<double> engine(sevenFoot(), p);
+  Engine<double> engine(sevenFoot(), p, {"frictionless", "simple"});
   const double v0 = 1.5, heading = 0.3, x0 = 0.2, y0 = -0.1;
   TableState<double> s;
   s.balls.push_back(rollingBall(0, x0, y0, v0, heading, p));
@@ -182,24 +182,34 @@ TEST(Engine, ResultDoesNotDependOnHowOftenItIsAdvanced)
     EXPECT_EQ(once.balls[i].r, stepped.balls[i].r) << "ball " << once.balls[i].id;
 }
 
-TEST(Engine, RandomShotsKeepTheInvariants)
+TEST(Engine, ThousandsOfRandomShotsKeepTheInvariantsInEveryModel)
 {
   const PhysicsParams<double> p;
-  Engine<double> engine(sevenFoot(), p);
   std::mt19937 rng(12345);
-  std::uniform_real_distribution<double> heading(-M_PI, M_PI), speed(0.2, 10.0), x(-0.9, -0.3), y(-0.45, 0.45);
-  for (int shot = 0; shot < 200; ++shot)
-  {
-    TableState<double> s = rackLayout<double>(shot % 2 ? "eight" : "nine", engine.table(), p.ball_radius);
-    s.balls[0].r.x() = x(rng);
-    s.balls[0].r.y() = y(rng);
-    CueStrike<double> cue;
-    cue.speed = speed(rng);
-    cue.phi = heading(rng);
-    engine.strike(s, 0, cue);
-    checkInvariantsEventByEvent(engine, s);
-    EXPECT_FALSE(s.anyMoving()) << "shot " << shot;
-  }
+  std::uniform_real_distribution<double> heading(-M_PI, M_PI), speed(0.2, 10.0), x(-0.9, -0.3), y(-0.45, 0.45),
+      unit(-1.0, 1.0), elevation(0.0, 0.6);
+  int shots = 0;
+  for (const std::string ball_ball : {"frictional", "frictionless"})
+    for (const std::string cushion : {"han2005", "simple"})
+    {
+      Engine<double> engine(sevenFoot(), p, {ball_ball, cushion});
+      for (int shot = 0; shot < 500; ++shot, ++shots)
+      {
+        TableState<double> s = rackLayout<double>(shot % 2 ? "eight" : "nine", engine.table(), p.ball_radius);
+        s.balls[0].r.x() = x(rng);
+        s.balls[0].r.y() = y(rng);
+        CueStrike<double> cue;
+        cue.speed = speed(rng);
+        cue.phi = heading(rng);
+        cue.theta = elevation(rng);
+        cue.a = 0.35 * unit(rng);
+        cue.b = 0.35 * unit(rng);
+        engine.strike(s, 0, cue);
+        checkInvariantsEventByEvent(engine, s);
+        EXPECT_FALSE(s.anyMoving()) << ball_ball << "/" << cushion << " shot " << shot;
+      }
+    }
+  EXPECT_EQ(shots, 2000);
 }
 
 TEST(Engine, FrozenBallsPassTheImpulseOn)
@@ -208,7 +218,7 @@ TEST(Engine, FrozenBallsPassTheImpulseOn)
   // dead and the second takes its whole velocity (the contact is found at tau = 0).
   PhysicsParams<double> p;
   p.e_ball = 1.0;
-  Engine<double> engine(sevenFoot(), p);
+  Engine<double> engine(sevenFoot(), p, {"frictionless", "simple"});
   TableState<double> s;
   s.balls.push_back(rollingBall(0, 0.0, 0.0, 0.0, 0, p));
   s.balls.push_back(rollingBall(1, 2 * p.ball_radius, 0.0, 0.0, 0, p));

@@ -51,11 +51,35 @@ public:
   void resolve(Ball<S>& ball, const Vec3<S>& normal, const PhysicsParams<S>& p) const override;
 };
 
-/// Which model to use for each contact kind, by name (see modelNames()).
+/// Frictional inelastic impacts of equal spheres (Alciatore, TP ): the normal
+/// impulse as in the frictionless model; at the contact point the surfaces slide past each
+/// other and a friction impulse mu_b(v) times the normal impulse opposes that slip, capped by
+/// the impulse that stops it. It changes both balls' velocities and spins: cut- and
+/// spin-induced throw and spin transfer.
+template <typename S>
+class FrictionalBallBall : public BallBallModel<S>
+{
+public:
+  void resolve(Ball<S>& a, Ball<S>& b, const PhysicsParams<S>& p) const override;
+};
+
+/// Han 2005 ("Dynamics in carom and three cushion billiards", J. Mech. Sci. Technol. 19(4)):
+/// one impulse where the cushion's nose, cushion_height above the cloth, touches the ball.
+/// Normal impulse from e_cushion along the contact normal; friction f_cushion times it against
+/// the contact point's slip, capped by the no-slip impulse. Spin changes the rebound.
+template <typename S>
+class HanCushion : public CushionModel<S>
+{
+public:
+  void resolve(Ball<S>& ball, const Vec3<S>& normal, const PhysicsParams<S>& p) const override;
+};
+
+/// Which model to use for each contact kind, by name (see ballBallModelNames() and
+/// cushionModelNames()).
 struct ModelChoice
 {
-  std::string ball_ball = "frictionless";
-  std::string cushion = "simple";
+  std::string ball_ball = "frictional";
+  std::string cushion = "han2005";
 };
 
 /// The names accepted for each kind.

@@ -37,8 +37,23 @@ struct CueLimits
 template <typename S>
 std::string validateStrike(const CueStrike<S>& strike);
 
-/// The ball's velocity and spin right after the cue leaves it (the cue's vertical momentum
-/// goes into the cloth; squirt and the tip's curvature come with issue 3's model).
+/// The ball's velocity and spin right after the cue leaves it. a and b are where the tip
+/// touches the ball; with side offset the ball squirts away from the side struck (TP A-31:
+/// 1.9 degrees at a = 0.5 with the default cue). The cue's vertical momentum goes into the
+/// cloth. A cue whose axis passes d from the centre touches at d / (1 + r_tip / R): see
+/// contactOffset().
+/// Where the tip touches the ball, in units of R, for a cue whose axis passes `axis_offset`
+/// (units of R) from the ball's centre: the tip's curvature moves the contact point inwards.
+template <typename S>
+S contactOffset(S axis_offset, const PhysicsParams<S>& p)
+{
+  return axis_offset / (S(1) + p.cue_tip_radius / p.ball_radius);
+}
+
+/// The horizontal angle [rad] by which the ball leaves left (+) of the cue's heading.
+template <typename S>
+S squirtAngle(S a, const PhysicsParams<S>& p);
+
 template <typename S>
 void applyCueStrike(Ball<S>& ball, const CueStrike<S>& strike, const PhysicsParams<S>& p);
 

@@ -1,0 +1,67 @@
+#include <algorithm>
+#include <cmath>
+
+#include "cue_sim/physics/collision_models.hpp"
+
+namespace cue_sim
+{
+namespace physics
+{
+template <typename S>
+void FrictionlessBallBall<S>::resolve(Ball<S>& a, Ball<S>& b, const PhysicsParams<S>& p) const
+{
+  Vec3<S> n = b.r - a.r;
+  n.z() = S(0);
+  n.normalize();
+  const S approach = (a.v - b.v).dot(n);  // > 0 while closing
+  if (!(approach > S(0)))
+    return;
+  // Lander 1999, Eq. 5 with m_A = m_B: j = -(1 + e) (v_A - v_B).n / (2/m).
+  const S j = -(S(1) + p.e_ball) * approach * p.ball_mass / S(2);
+  a.v += (j / p.ball_mass) * n;
+  b.v -= (j / p.ball_mass) * n;
+}
+
+template <typename S>
+void FrictionalBallBall<S>::resolve(Ball<S>& a, Ball<S>& b, const PhysicsParams<S>& p) const
+{
+  Vec3<S> n = b.r - a.r;
+  n.z() = S(0);
+  n.normalize();
+  const S approach = (a.v - b.v).dot(n);
+  if (!(approach > S(0)))
+    return;
+  const S m = p.ball_mass, R = p.ball_radius, inertia = S(0.4) * m * R * R;
+  // The impulse J acts on a at its contact point R n, and -J on b at -R n.
+  Vec3<S> impulse = -(S(1) + p.e_ball) * m / S(2) * approach * n;
+  // Slip of a's surface past b's at the contact: (v_a + w_a x R n) - (v_b + w_b x (-R n)).
+  Vec3<S> slip = a.v - b.v + R * (a.w + b.w).cross(n);
+  slip -= slip.dot(n) * n;
+  const S slip_speed = slip.norm();
+  if (slip_speed > zeroSpeed<S>())
+  {
+    // A tangential impulse J_t on each ball changes the slip by -7 J_t / m in all (1/m for the
+    // centre and R^2/I = 5/(2m) for the spin, per ball): J_t = m |slip| / 7 stops it.
+    const S mu = p.mu_ball_a + p.mu_ball_b * std::exp(-p.mu_ball_c * slip_speed);
+    const S normal = (S(1) + p.e_ball) * m / S(2) * approach;
+    const S friction = std::min(mu * normal, m * slip_speed / S(7));
+    impulse -= (friction / slip_speed) * slip;
+  }
+  a.v += impulse / m;
+  b.v -= impulse / m;
+  // (R n) x J for a and (-R n) x (-J) for b: both spins change alike.
+  const Vec3<S> spin_change = (R * n).cross(impulse) / inertia;
+  a.w += spin_change;
+  b.w += spin_change;
+  // Vertical friction on the balls goes into the cloth: they stay on it.
+  a.v.z() = S(0);
+  b.v.z() = S(0);
+}
+
+template class FrictionlessBallBall<double>;
+template class FrictionlessBallBall<long double>;
+template class FrictionalBallBall<double>;
+template class FrictionalBallBall<long double>;
+
+}  // namespace physics
+}  // namespace cue_sim

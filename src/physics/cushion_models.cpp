@@ -1,0 +1,53 @@
+#include <algorithm>
+#include <cmath>
+
+#include "cue_sim/physics/collision_models.hpp"
+
+namespace cue_sim
+{
+namespace physics
+{
+template <typename S>
+void SimpleCushion<S>::resolve(Ball<S>& ball, const Vec3<S>& normal, const PhysicsParams<S>& p) const
+{
+  const S v_n = ball.v.dot(normal);
+  if (v_n < S(0))
+    ball.v -= (S(1) + p.e_cushion) * v_n * normal;
+}
+
+template <typename S>
+void HanCushion<S>::resolve(Ball<S>& ball, const Vec3<S>& normal, const PhysicsParams<S>& p) const
+{
+  const S m = p.ball_mass, R = p.ball_radius, inertia = S(0.4) * m * R * R;
+  // The nose touches the ball theta_a = asin(h/R - 1) above its equator.
+  const S sin_a = std::clamp(p.cushion_height / R - S(1), S(-1), S(1));
+  const S cos_a = std::sqrt(S(1) - sin_a * sin_a);
+  const Vec3<S> z = Vec3<S>::UnitZ();
+  const Vec3<S> contact = -R * cos_a * normal + R * sin_a * z;  // from the centre
+  const Vec3<S> contact_normal = cos_a * normal - sin_a * z;    // cushion -> ball
+  const S approach = -ball.v.dot(contact_normal);               // a sphere's spin adds nothing along it
+  if (!(approach > S(0)))
+    return;
+  const S normal_impulse = (S(1) + p.e_cushion) * m * approach;
+  Vec3<S> impulse = normal_impulse * contact_normal;
+  Vec3<S> slip = ball.v + ball.w.cross(contact);
+  slip -= slip.dot(contact_normal) * contact_normal;
+  const S slip_speed = slip.norm();
+  if (slip_speed > zeroSpeed<S>())
+  {
+    // Tangential inverse mass at the contact: 1/m + R^2/I = 7/(2m).
+    const S friction = std::min(p.f_cushion * normal_impulse, S(2) * m * slip_speed / S(7));
+    impulse -= (friction / slip_speed) * slip;
+  }
+  ball.v += impulse / m;
+  ball.v.z() = S(0);  // the part pressing the ball into the cloth is taken by the cloth
+  ball.w += contact.cross(impulse) / inertia;
+}
+
+template class SimpleCushion<double>;
+template class SimpleCushion<long double>;
+template class HanCushion<double>;
+template class HanCushion<long double>;
+
+}  // namespace physics
+}  // namespace cue_sim

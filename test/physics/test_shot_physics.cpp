@@ -1,0 +1,278 @@
+// Shot physics against published behaviour (Alciatore's technical proofs, PHYSICS.md).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "cue_sim/physics/engine.hpp"
+#include "cue_sim/physics/motion.hpp"
+
+using namespace cue_sim::physics;
+
+namespace
+{
+constexpr double kDeg = M_PI / 180;
+
+std::shared_ptr<const TableModel> sevenFoot()
+{
+  static const auto table = std::make_shared<const TableModel>(TableModel::pool("7ft", 1.9812, 0.9906, 0.118, 0.137));
+  return table;
+}
+
+Ball<double> ballAt(int id, double x, double y, const PhysicsParams<double>& p)
+{
+  Ball<double> b;
+  b.id = id;
+  b.r = Vec3<double>(x, y, p.ball_radius);
+  return b;
+}
+
+double headingOf(const Vec3<double>& v)
+{
+  return std::atan2(v.y(), v.x());
+}
+
+/// The cue ball rolling along +x hits an object ball with cut angle `cut` (between the path and
+/// the line of centres). Returns the engine state right after the ball-ball event.
+TableState<double> afterCut(const Engine<double>& engine, double cut, double speed, bool rolling)
+{
+  const PhysicsParams<double>& p = engine.params();
+  TableState<double> s;
+  s.balls.push_back(ballAt(0, -0.5, 0.0, p));
+  s.balls.push_back(ballAt(1, -0.2, 2 * p.ball_radius * std::sin(cut), p));
+  s.balls[0].v = Vec3<double>(speed, 0, 0);
+  if (rolling)
+    s.balls[0].w = Vec3<double>(0, speed / p.ball_radius, 0);
+  settleMotion(s.balls[0], p.ball_radius);
+  for (int i = 0; i < 20; ++i)
+    if (engine.step(s).kind == EventKind::BallBall)
+      return s;
+  ADD_FAILURE() << "no ball-ball event";
+  return s;
+}
+
+/// The cue ball's heading once it rolls again after the collision (Alciatore's "after the
+/// spin takes").
+double headingWhenRollingAgain(const Engine<double>& engine, TableState<double>& s)
+{
+  for (int i = 0; i < 20; ++i)
+  {
+    const Event<double> e = engine.step(s);
+    if (e.kind == EventKind::SlideToRoll && e.ball == 0)
+      return headingOf(s.balls[s.indexOf(0)].v);
+    if (!e.valid() || (e.isCollision() && e.ball == 0))
+      break;
+  }
+  ADD_FAILURE() << "the cue ball did not roll freely after the hit";
+  return NAN;
+}
+
+/// Throw: the angle of the object ball's departure off the line of centres, positive towards
+/// the cue ball's side of travel (clockwise here, as the cue ball passes on the right of the
+/// line of centres), for a stun cue ball (no spin at contact).
+double throwAngle(const BallBallModel<double>& model, const PhysicsParams<double>& p, double cut, double speed)
+{
+  Ball<double> cue = ballAt(0, 0, 0, p),
+               object = ballAt(1, 2 * p.ball_radius * std::cos(cut), 2 * p.ball_radius * std::sin(cut), p);
+  cue.v = Vec3<double>(speed, 0, 0);
+  model.resolve(cue, object, p);
+  return cut - headingOf(object.v);
+}
+}  // namespace
+
+TEST(ShotPhysics, StunShotFrictionlessLeavesAlongTheTangentLine)
+{
+  // With no spin at contact and e = 1 the balls part at exactly 90 degrees.
+  PhysicsParams<double> p;
+  p.e_ball = 1.0;
+  p.mu_slide = 0.0;  // keeps the cue ball stunned until the hit
+  Engine<double> engine(sevenFoot(), p, {"frictionless", "simple"});
+  for (double cut : {10.0, 30.0, 50.0, 70.0})
+  {
+    const TableState<double> s = afterCut(engine, cut * kDeg, 2.0, false);
+    const Vec3<double> cue = s.balls[0].v, object = s.balls[1].v;
+    EXPECT_NEAR(std::acos(cue.normalized().dot(object.normalized())), M_PI / 2, 1e-9) << cut;
+    EXPECT_NEAR(headingOf(object), cut * kDeg, 1e-9) << cut;  // along the line of centres
+  }
+}
+
+TEST(ShotPhysics, RollingCueBallDeflectsAboutThirtyDegrees)
+{
+  // Alciatore TP A-4: ideal balls give tan(theta_c) = sin(a) cos(a) / (sin^2(a) + 2/5) for a
+  // rolling cue ball at cut angle a; between a 1/4 and a 3/4 ball hit that is 27 to 34 degrees.
+  PhysicsParams<double> ideal;
+  ideal.e_ball = 1.0;
+  const Engine<double> frictionless(sevenFoot(), ideal, {"frictionless", "simple"});
+  const Engine<double> realistic(sevenFoot(), PhysicsParams<double>());
+  for (double fraction : {0.25, 0.375, 0.5, 0.625, 0.75})
+  {
+    const double cut = std::asin(1 - fraction);
+    const double expected = std::atan(std::sin(cut) * std::cos(cut) / (std::pow(std::sin(cut), 2) + 0.4));
+    TableState<double> s = afterCut(frictionless, cut, 1.5, true);
+    EXPECT_NEAR(-headingWhenRollingAgain(frictionless, s), expected, 1e-9) << "fraction " << fraction;
+    s = afterCut(realistic, cut, 1.5, true);
+    const double deflection = -headingWhenRollingAgain(realistic, s) / kDeg;
+    EXPECT_GT(deflection, 25.0) << "fraction " << fraction;
+    EXPECT_LT(deflection, 36.0) << "fraction " << fraction;
+  }
+}
+
+TEST(ShotPhysics, CutInducedThrowIsAFewDegreesLargestNearHalfBall)
+{
+  // Alciatore TP A-14: a stun shot throws the object ball a few degrees towards the cue
+  // ball's travel, most near a half-ball hit and more at slow speed.
+  const PhysicsParams<double> p;
+  const FrictionalBallBall<double> model;
+  double largest = 0, largest_at = 0;
+  for (double fraction = 0.125; fraction < 0.9; fraction += 0.125)
+  {
+    const double cut = std::asin(1 - fraction);
+    const double slow = throwAngle(model, p, cut, 0.5) / kDeg;
+    EXPECT_GT(slow, 0.5) << fraction;
+    EXPECT_LT(slow, 6.0) << fraction;
+    // Faster shots slide more easily: less throw, except at thin cuts near full ball, where
+    // friction only has to stop the small slip and tan(throw) = 2 tan(cut) / (7 (1 + e))
+    // whatever the speed.
+    const double fast = throwAngle(model, p, cut, 5.0) / kDeg;
+    EXPECT_LE(fast, slow + 1e-9) << fraction;
+    if (fraction <= 0.625)
+      EXPECT_LT(fast, slow - 0.5) << fraction;
+    if (fraction >= 0.875)
+      EXPECT_NEAR(std::tan(slow * kDeg), 2 * std::tan(cut) / (7 * (1 + p.e_ball)), 1e-12) << fraction;
+    if (slow > largest)
+    {
+      largest = slow;
+      largest_at = fraction;
+    }
+  }
+  EXPECT_GE(largest_at, 0.25);
+  EXPECT_LE(largest_at, 0.625);
+  EXPECT_NEAR(throwAngle(FrictionlessBallBall<double>(), p, 30 * kDeg, 0.5), 0.0, 1e-12);
+}
+
+TEST(ShotPhysics, DrawComesBackAndFollowRollsOn)
+{
+  // A straight shot into an object ball: after the hit the cue ball stops (its forward speed
+  // passed on), then its spin takes: draw brings it back, follow rolls it on.
+  const PhysicsParams<double> p;
+  const Engine<double> engine(sevenFoot(), p);
+  for (double b : {-0.4, 0.4})
+  {
+    TableState<double> s;
+    s.balls.push_back(ballAt(0, -0.5, 0.0, p));
+    s.balls.push_back(ballAt(1, 0.0, 0.0, p));
+    CueStrike<double> cue;
+    cue.speed = 2.0;
+    cue.b = b;
+    engine.strike(s, 0, cue);
+    bool hit = false;
+    double rolling_vx = NAN;
+    for (int i = 0; i < 20 && std::isnan(rolling_vx); ++i)
+    {
+      const Event<double> e = engine.step(s);
+      ASSERT_TRUE(e.valid());
+      if (e.kind == EventKind::BallBall && e.ball == 0)
+      {
+        hit = true;
+        EXPECT_LT(std::abs(s.balls[0].v.x()), 0.1 * 2.0) << "the cue ball nearly stops at the hit";
+      }
+      if (hit && e.kind == EventKind::SlideToRoll && e.ball == 0)
+        rolling_vx = s.balls[0].v.x();
+    }
+    ASSERT_TRUE(hit);
+    if (b < 0)
+      EXPECT_LT(rolling_vx, -0.3) << "draw: the cue ball comes back";
+    else
+      EXPECT_GT(rolling_vx, 0.3) << "follow: the cue ball rolls on";
+  }
+}
+
+TEST(ShotPhysics, SideSpinChangesTheRebound)
+{
+  // Alciatore, "Sidespin Terminology": right of centre spins the ball counter-clockwise seen
+  // from above and it rebounds to the right off a cushion; running English lengthens the
+  // rebound angle, reverse English shortens it.
+  const PhysicsParams<double> p;
+  const Engine<double> engine(sevenFoot(), p);
+  const double hy = 0.9906 / 2;
+  // Angles from the cushion's normal, measured on the velocities at the event itself, so that
+  // squirt and the English's slower start do not count.
+  struct Rebound
+  {
+    Vec3<double> out;
+    double angle_in, angle_out;
+  };
+  const auto rebound = [&](double heading, double a) {
+    TableState<double> s;
+    s.balls.push_back(ballAt(0, -0.7, hy - 0.3, p));
+    CueStrike<double> cue;
+    cue.speed = 1.5;
+    cue.phi = heading;
+    cue.a = a;
+    engine.strike(s, 0, cue);
+    for (int i = 0; i < 10; ++i)
+    {
+      const Event<double> e = engine.nextEvent(s);
+      const Vec3<double> in = engine.ballAt(s, 0, e.time).v;
+      engine.step(s);
+      if (e.kind == EventKind::BallCushion)
+      {
+        const Vec3<double> out = s.balls[0].v;
+        return Rebound{out, std::atan2(std::abs(in.x()), in.y()), std::atan2(std::abs(out.x()), -out.y())};
+      }
+    }
+    ADD_FAILURE() << "no cushion";
+    return Rebound{Vec3<double>::Constant(NAN), NAN, NAN};
+  };
+  // Straight into the top cushion: the shooter's right is +x.
+  EXPECT_GT(rebound(M_PI / 2, 0.4).out.x(), 0.05);
+  EXPECT_LT(rebound(M_PI / 2, -0.4).out.x(), -0.05);
+  EXPECT_NEAR(rebound(M_PI / 2, 0.0).out.x(), 0.0, 1e-12);
+  // Up and to the right into the top cushion, right English runs along the rail.
+  const auto change = [&](double heading, double a) {
+    const Rebound r = rebound(heading, a);
+    return r.angle_out - r.angle_in;
+  };
+  const double steep = 65 * kDeg;  // 25 degrees off the normal
+  EXPECT_GT(change(steep, 0.4), change(steep, 0.0) + 5 * kDeg) << "running English lengthens the angle";
+  EXPECT_LT(change(steep, -0.4), change(steep, 0.0) - 5 * kDeg) << "reverse English shortens it";
+  EXPECT_GT(change(M_PI / 4, 0.4), change(M_PI / 4, 0.0) + 5 * kDeg);
+}
+
+TEST(ShotPhysics, MasseCurvesWhileSliding)
+{
+  const PhysicsParams<double> p;
+  const Engine<double> engine(sevenFoot(), p);
+  const auto turn = [&](double theta) {
+    TableState<double> s;
+    s.balls.push_back(ballAt(0, -0.5, 0.0, p));
+    CueStrike<double> cue;
+    cue.speed = 2.0;
+    cue.theta = theta;
+    cue.a = 0.3;
+    engine.strike(s, 0, cue);
+    const double start = headingOf(s.balls[0].v);
+    const double slide_end = s.balls[0].time + timeToTransition(s.balls[0], p);
+    return headingOf(engine.ballAt(s, 0, slide_end).v) - start;
+  };
+  EXPECT_GT(std::abs(turn(70 * kDeg)), 10 * kDeg) << "an elevated cue with side offset curves the path";
+  EXPECT_NEAR(turn(0.0), 0.0, 1e-12) << "a level cue's side spin does not curve it";
+}
+
+TEST(ShotPhysics, SquirtIsAboutTwoDegreesAtHalfTipOffset)
+{
+  const PhysicsParams<double> p;
+  EXPECT_NEAR(squirtAngle(0.5, p) / kDeg, 1.9, 0.05);
+  for (double a : {0.5, -0.5})
+  {
+    Ball<double> b;
+    CueStrike<double> cue;
+    cue.speed = 2.0;
+    cue.phi = 0.3;
+    cue.a = a;
+    applyCueStrike(b, cue, p);
+    // Away from the side struck: right English (a > 0) squirts left of the heading.
+    EXPECT_NEAR((headingOf(b.v) - 0.3) / kDeg, a > 0 ? 1.886 : -1.886, 0.01);
+  }
+  EXPECT_NEAR(contactOffset(0.5, p), 0.5 / (1 + 0.0106 / 0.028575), 1e-15);
+}
