@@ -7,7 +7,8 @@ The link naming convention the simulator reads (README, "Describing a table in U
   cushion_<name> collision box; the rubber nose is the top edge of the box face at local +y,
                  running along local x; play lies towards local +y
   pocket_<name>  collision cylinder: a ball whose centre enters the circle drops
-  jaw_<name>     collision cylinder: a circular cushion (pocket jaw)
+  jaw_<name>     collision cylinder: a circular cushion (pocket jaw); a straight cushion
+                 ends where its jaw begins
 Other links (rails_*, legs) are visual only. All joints are fixed.
 Run it again after changing a dimension here; the files are committed.
 """
@@ -17,6 +18,17 @@ import os
 CUSHION_WIDTH = 0.05  # [m] nose to rail
 NOSE_HEIGHT = 0.036576  # [m] 0.64 x 2R
 RAIL_WIDTH = 0.10  # [m] wood beyond the cushion
+JAW_RADIUS = 0.01  # [m] the rounded end of a cushion at a pocket
+CAPTURE_RADIUS = 0.15  # [m] pocket capture circles
+
+
+def capture_centre(jaw1, jaw2, outward):
+    """Centre of the capture circle through both jaw centres, outward of their chord."""
+    half = math.dist(jaw1, jaw2) / 2
+    mid = ((jaw1[0] + jaw2[0]) / 2, (jaw1[1] + jaw2[1]) / 2)
+    norm = math.hypot(*outward)
+    depth = math.sqrt(CAPTURE_RADIUS**2 - half**2)
+    return (mid[0] + depth * outward[0] / norm, mid[1] + depth * outward[1] / norm)
 
 
 def fmt(*values):
@@ -108,14 +120,30 @@ def table(name, length, width, corner_mouth=None, side_mouth=None):
         lines += link(seg_name, (shape, offset, None), (shape, offset, "cushion"))
         lines += joint(seg_name, mid, math.atan2(dy, dx))
     if corner_mouth is not None:
-        pockets = [
-            ("pocket_head_yneg", (-hx, -hy), d), ("pocket_side_yneg", (0, -hy), s),
-            ("pocket_foot_yneg", (hx, -hy), d), ("pocket_foot_ypos", (hx, hy), d),
-            ("pocket_side_ypos", (0, hy), s), ("pocket_head_ypos", (-hx, hy), d),
-        ]
-        for p_name, centre, radius in pockets:
-            lines += link(p_name, (cylinder(radius, 0.1), (0, 0, -0.05), None),
-                          (cylinder(radius, 0.004), (0, 0, -0.0085), "pocket"))
+        # Jaws tangent to each cushion where it ends, and a capture circle through each pocket's
+        # two jaw centres, centred outwards (TableModel::pool() builds the same).
+        jaws, pockets, pocket_jaws = [], [], []
+        for sy, side in ((-1, "yneg"), (1, "ypos")):
+            for sx, end in ((-1, "head"), (1, "foot")):
+                long_jaw = (sx * (hx - d), sy * (hy + JAW_RADIUS))
+                end_jaw = (sx * (hx + JAW_RADIUS), sy * (hy - d))
+                jaws += [(f"jaw_{end}_{side}_long", long_jaw), (f"jaw_{end}_{side}_end", end_jaw)]
+                pockets.append((f"pocket_{end}_{side}", capture_centre(long_jaw, end_jaw, (sx, sy))))
+                pocket_jaws.append((long_jaw, end_jaw))
+            head_jaw, foot_jaw = (-s, sy * (hy + JAW_RADIUS)), (s, sy * (hy + JAW_RADIUS))
+            jaws += [(f"jaw_side_{side}_head", head_jaw), (f"jaw_side_{side}_foot", foot_jaw)]
+            pockets.append((f"pocket_side_{side}", capture_centre(head_jaw, foot_jaw, (0, sy))))
+            pocket_jaws.append((head_jaw, foot_jaw))
+        for j_name, centre in jaws:
+            shape = cylinder(JAW_RADIUS, NOSE_HEIGHT)
+            lines += link(j_name, (shape, (0, 0, NOSE_HEIGHT / 2), None), (shape, (0, 0, NOSE_HEIGHT / 2), "cushion"))
+            lines += joint(j_name, (centre[0], centre[1], 0))
+        for (p_name, centre), (jaw1, jaw2) in zip(pockets, pocket_jaws):
+            # Drawn: a hole the size of the mouth between the jaws; the capture circle itself is
+            # the collision geometry.
+            mid = ((jaw1[0] + jaw2[0]) / 2 - centre[0], (jaw1[1] + jaw2[1]) / 2 - centre[1], -0.0035)
+            hole = cylinder(math.dist(jaw1, jaw2) / 2, 0.003)
+            lines += link(p_name, (cylinder(CAPTURE_RADIUS, 0.1), (0, 0, -0.05), None), (hole, mid, "pocket"))
             lines += joint(p_name, (centre[0], centre[1], 0))
     # Wooden rails outside the cushions: visual only.
     outer = CUSHION_WIDTH + RAIL_WIDTH / 2

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <vector>
 
 namespace cue_sim
 {
@@ -49,6 +50,37 @@ Marker base(const std::string& frame, const std::string& ns, int id, int type)
   m.action = Marker::ADD;
   m.pose.orientation.w = 1.0;
   return m;
+}
+
+/// A circle as a polygon, clipped to the box [low, high] (Sutherland-Hodgman; both convex).
+std::vector<Eigen::Vector2d> clippedCircle(const Eigen::Vector2d& centre, double radius, const Eigen::Vector2d& low,
+                                           const Eigen::Vector2d& high)
+{
+  std::vector<Eigen::Vector2d> polygon;
+  const int sides = 48;
+  for (int i = 0; i < sides; ++i)
+  {
+    const double angle = 2 * M_PI * i / sides;
+    polygon.push_back(centre + radius * Eigen::Vector2d(std::cos(angle), std::sin(angle)));
+  }
+  for (int axis = 0; axis < 2; ++axis)
+    for (const double sign : {1.0, -1.0})
+    {
+      const double limit = sign > 0 ? low[axis] : high[axis];
+      const auto inside = [&](const Eigen::Vector2d& q) { return sign * (q[axis] - limit) >= 0; };
+      std::vector<Eigen::Vector2d> kept;
+      for (std::size_t i = 0; i < polygon.size(); ++i)
+      {
+        const Eigen::Vector2d& a = polygon[i];
+        const Eigen::Vector2d& b = polygon[(i + 1) % polygon.size()];
+        if (inside(a))
+          kept.push_back(a);
+        if (inside(a) != inside(b))
+          kept.push_back(a + (b - a) * ((limit - a[axis]) / (b[axis] - a[axis])));
+      }
+      polygon = kept;
+    }
+  return polygon;
 }
 
 void setYaw(Marker& m, double yaw)
@@ -109,14 +141,24 @@ visualization_msgs::MarkerArray tableMarkers(const physics::TableModel& table, c
   id = 0;
   for (const auto& p : table.pockets())
   {
-    Marker m = base(frames.table, "pockets", id++, Marker::CYLINDER);
-    m.pose.position.x = p.centre.x();
-    m.pose.position.y = p.centre.y();
-    m.pose.position.z = 0.0005;
-    m.scale.x = m.scale.y = 2 * p.radius;
-    m.scale.z = 0.001;
+    // The capture circle where it matters: clipped to the cloth and its cushions.
+    Marker m = base(frames.table, "pockets", id++, Marker::TRIANGLE_LIST);
+    m.scale.x = m.scale.y = m.scale.z = 1.0;
     m.color = rgba(0.0f, 0.0f, 0.0f, 0.9f);
-    array.markers.push_back(m);
+    const Eigen::Vector2d half(table.clothLength() / 2 + rubber, table.clothWidth() / 2 + rubber);
+    const std::vector<Eigen::Vector2d> outline =
+        clippedCircle(p.centre, p.radius, table.clothCentre() - half, table.clothCentre() + half);
+    for (std::size_t i = 1; i + 1 < outline.size(); ++i)
+      for (const auto* corner : {&outline[0], &outline[i], &outline[i + 1]})
+      {
+        geometry_msgs::Point point;
+        point.x = corner->x();
+        point.y = corner->y();
+        point.z = 0.0005;
+        m.points.push_back(point);
+      }
+    if (!m.points.empty())
+      array.markers.push_back(m);
   }
   for (const auto& b : state.balls)
   {

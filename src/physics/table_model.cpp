@@ -69,13 +69,28 @@ CushionSegment TableModel::makeSegment(std::string name, const Eigen::Vector2d& 
   return s;
 }
 
+namespace
+{
+/// A pocket's capture circle through its two jaw centres, its centre `outward` of their chord:
+/// every ball that leaves the cloth between the jaws crosses the chord, inside the circle.
+Pocket captureCircle(std::string name, const Eigen::Vector2d& jaw1, const Eigen::Vector2d& jaw2,
+                     const Eigen::Vector2d& outward, double radius)
+{
+  const double half_chord = (jaw2 - jaw1).norm() / 2;
+  const Eigen::Vector2d middle = (jaw1 + jaw2) / 2;
+  return {std::move(name), middle + std::sqrt(radius * radius - half_chord * half_chord) * outward.normalized(),
+          radius};
+}
+}  // namespace
+
 TableModel TableModel::pool(const std::string& name, double cloth_length, double cloth_width, double corner_mouth,
-                            double side_mouth)
+                            double side_mouth, double jaw_radius, double capture_radius)
 {
   const double hx = cloth_length / 2, hy = cloth_width / 2;
   // A corner pocket's mouth spans the two cushion ends, each d from the corner, at 45 degrees.
   const double d = corner_mouth / std::sqrt(2.0);
   const double s = side_mouth / 2;
+  const double j = jaw_radius;
   using V = Eigen::Vector2d;
   // Counter-clockwise round the cloth, so play is on each segment's left. Head end: x < 0.
   std::vector<CushionSegment> segments = {
@@ -86,12 +101,28 @@ TableModel TableModel::pool(const std::string& name, double cloth_length, double
       makeSegment("cushion_ypos_head", V(-s, hy), V(-hx + d, hy)),
       makeSegment("cushion_head", V(-hx, hy - d), V(-hx, -hy + d)),
   };
-  // Capture circles through the cushion ends: any ball that passes a mouth is inside one.
-  std::vector<Pocket> pockets = {
-      {"pocket_head_yneg", V(-hx, -hy), d}, {"pocket_side_yneg", V(0, -hy), s}, {"pocket_foot_yneg", V(hx, -hy), d},
-      {"pocket_foot_ypos", V(hx, hy), d},   {"pocket_side_ypos", V(0, hy), s},  {"pocket_head_ypos", V(-hx, hy), d},
-  };
-  return TableModel(name, V::Zero(), cloth_length, cloth_width, std::move(segments), {}, std::move(pockets));
+  // Jaws: circles tangent to the cushion where it ends, behind its nose line.
+  std::vector<CircularCushion> jaws;
+  std::vector<Pocket> pockets;
+  for (const double sy : {-1.0, 1.0})
+  {
+    const std::string side = sy < 0 ? "yneg" : "ypos";
+    for (const double sx : {-1.0, 1.0})
+    {
+      const std::string end = sx < 0 ? "head" : "foot";
+      const V long_rail_jaw(sx * (hx - d), sy * (hy + j)), end_rail_jaw(sx * (hx + j), sy * (hy - d));
+      jaws.push_back({"jaw_" + end + "_" + side + "_long", long_rail_jaw, j});
+      jaws.push_back({"jaw_" + end + "_" + side + "_end", end_rail_jaw, j});
+      pockets.push_back(
+          captureCircle("pocket_" + end + "_" + side, long_rail_jaw, end_rail_jaw, V(sx, sy), capture_radius));
+    }
+    const V head_jaw(-s, sy * (hy + j)), foot_jaw(s, sy * (hy + j));
+    jaws.push_back({"jaw_side_" + side + "_head", head_jaw, j});
+    jaws.push_back({"jaw_side_" + side + "_foot", foot_jaw, j});
+    pockets.push_back(captureCircle("pocket_side_" + side, head_jaw, foot_jaw, V(0, sy), capture_radius));
+  }
+  return TableModel(name, V::Zero(), cloth_length, cloth_width, std::move(segments), std::move(jaws),
+                    std::move(pockets));
 }
 
 TableModel TableModel::carom(const std::string& name, double cloth_length, double cloth_width)

@@ -52,8 +52,10 @@ public:
 
   /// A 7-ft or 9-ft six-pocket pool table or a pocketless carom table built in code, the same
   /// geometry the URDF files in urdf/ describe (for tests and benchmarks without urdfdom).
+  /// Pockets have jaws of `jaw_radius` where the cushions end, and capture circles of
+  /// `capture_radius` through each pocket's two jaw centres.
   static TableModel pool(const std::string& name, double cloth_length, double cloth_width, double corner_mouth,
-                         double side_mouth);
+                         double side_mouth, double jaw_radius = 0.01, double capture_radius = 0.15);
   static TableModel carom(const std::string& name, double cloth_length, double cloth_width);
 
   const std::string& name() const { return name_; }
