@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <set>
@@ -65,10 +66,20 @@ void applyPhysicsNode(const YAML::Node& node, physics::PhysicsParams<double>& pa
   for (const auto& field : physics::physicsParamFields())
     if (node[field.name])
       params.*field.member = number(node[field.name], field.name);
-  if (node["ball_ball_model"])
-    models.ball_ball = node["ball_ball_model"].as<std::string>();
-  if (node["cushion_model"])
-    models.cushion = node["cushion_model"].as<std::string>();
+  const auto model = [&](const char* key, std::string& choice, const std::vector<std::string>& known) {
+    if (!node[key])
+      return;
+    choice = node[key].as<std::string>();
+    if (std::find(known.begin(), known.end(), choice) == known.end())
+    {
+      std::string list;
+      for (const auto& k : known)
+        list += (list.empty() ? "" : ", ") + k;
+      throw SceneError(std::string(key) + " '" + choice + "' is unknown (known: " + list + ")");
+    }
+  };
+  model("ball_ball_model", models.ball_ball, physics::ballBallModelNames());
+  model("cushion_model", models.cushion, physics::cushionModelNames());
   const std::string why = params.validate();
   if (!why.empty())
     throw SceneError("physics: " + why);

@@ -138,6 +138,7 @@ TEST_F(TableNodeTest, MarkersArriveLatchedWithEveryLayer)
   EXPECT_EQ(per_ns["cloth"], 1);
   EXPECT_EQ(per_ns["cushions"], 6);
   EXPECT_EQ(per_ns["pockets"], 6);
+  EXPECT_EQ(per_ns["jaws"], 12);
   EXPECT_EQ(per_ns["balls"], 16);
   EXPECT_EQ(per_ns["stripes"], 7);
   EXPECT_EQ(per_ns["labels"], 16);

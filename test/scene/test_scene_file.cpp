@@ -79,6 +79,9 @@ TEST(SceneFile, BadScenesNameTheProblem)
   EXPECT_NE(errorOf("physics: {e_ball: 1.5}\n").find("e_ball must be in [0, 1]"), std::string::npos);
   EXPECT_NE(errorOf("table: 6ft\n").find("unknown table '6ft'"), std::string::npos);
   EXPECT_NE(errorOf("rack: ten\n").find("unknown rack 'ten'"), std::string::npos);
+  EXPECT_NE(
+      errorOf("physics: {cushion_model: rubber}\n").find("cushion_model 'rubber' is unknown (known: han2005, simple)"),
+      std::string::npos);
   EXPECT_NE(errorOf("balls: [{id: 0, position: [1]}]\n").find("'position' must be a list of 2"), std::string::npos);
   EXPECT_NE(errorOf("shot: {speed: -2}\n").find("speed must be in (0, 12]"), std::string::npos);
   EXPECT_NE(errorOf("shot: {phi: 1}\n").find("needs 'speed'"), std::string::npos);
