@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "cue_sim/physics/collision_models.hpp"
+#include "physics/friction_impulse.hpp"
 
 namespace cue_sim
 {
@@ -37,16 +38,10 @@ void FrictionalBallBall<S>::resolve(Ball<S>& a, Ball<S>& b, const PhysicsParams<
   // Slip of a's surface past b's at the contact: (v_a + w_a x R n) - (v_b + w_b x (-R n)).
   Vec3<S> slip = a.v - b.v + R * (a.w + b.w).cross(n);
   slip -= slip.dot(n) * n;
-  const S slip_speed = slip.norm();
-  if (slip_speed > zeroSpeed<S>())
-  {
-    // A tangential impulse J_t on each ball changes the slip by -7 J_t / m in all (1/m for the
-    // centre and R^2/I = 5/(2m) for the spin, per ball): J_t = m |slip| / 7 stops it.
-    const S mu = p.mu_ball_a + p.mu_ball_b * std::exp(-p.mu_ball_c * slip_speed);
-    const S normal = (S(1) + p.e_ball) * m / S(2) * approach;
-    const S friction = std::min(mu * normal, m * slip_speed / S(7));
-    impulse -= (friction / slip_speed) * slip;
-  }
+  // A tangential impulse J_t on each ball changes the slip by -7 J_t / m in all (1/m for the
+  // centre and R^2/I = 5/(2m) for the spin, per ball), so J_t = m |slip| / 7 stops it.
+  const S mu = p.mu_ball_a + p.mu_ball_b * std::exp(-p.mu_ball_c * slip.norm());
+  impulse += frictionImpulse(slip, mu * impulse.norm(), S(7) / m);
   a.v += impulse / m;
   b.v -= impulse / m;
   // (R n) x J for a and (-R n) x (-J) for b: both spins change alike.

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "cue_sim/physics/collision_models.hpp"
+#include "physics/friction_impulse.hpp"
 
 namespace cue_sim
 {
@@ -32,13 +33,8 @@ void HanCushion<S>::resolve(Ball<S>& ball, const Vec3<S>& normal, const PhysicsP
   Vec3<S> impulse = normal_impulse * contact_normal;
   Vec3<S> slip = ball.v + ball.w.cross(contact);
   slip -= slip.dot(contact_normal) * contact_normal;
-  const S slip_speed = slip.norm();
-  if (slip_speed > zeroSpeed<S>())
-  {
-    // Tangential inverse mass at the contact: 1/m + R^2/I = 7/(2m).
-    const S friction = std::min(p.f_cushion * normal_impulse, S(2) * m * slip_speed / S(7));
-    impulse -= (friction / slip_speed) * slip;
-  }
+  // Tangential inverse mass at the contact: 1/m + R^2/I = 7/(2m).
+  impulse += frictionImpulse(slip, p.f_cushion * normal_impulse, S(3.5) / m);
   ball.v += impulse / m;
   ball.v.z() = S(0);  // the part pressing the ball into the cloth is taken by the cloth
   ball.w += contact.cross(impulse) / inertia;
