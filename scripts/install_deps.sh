@@ -14,6 +14,8 @@ PACKAGES=(
   liburdfdom-tools
   # rviz, and rviz without a screen (screenshots)
   rviz xvfb xauth imagemagick
+  # plots of the work-precision report
+  gnuplot-nox
 )
 
 missing=()

@@ -1,0 +1,62 @@
+// Error against run time: the scenes of the work-precision report, the long-double reference,
+// and timed, error-measured runs of the event engine and the time-steppers (no ROS).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cue_sim/physics/engine.hpp"
+#include "cue_sim/physics/time_stepping.hpp"
+
+namespace cue_sim
+{
+namespace evaluation
+{
+/// A shot ready to run: the cue has struck at t = 0.
+struct ShotScene
+{
+  std::string name;
+  bool single_shot = true;  ///< false for breaks, whose outcome is chaotic
+  std::shared_ptr<const physics::TableModel> table;
+  physics::PhysicsParams<double> params;
+  physics::ModelChoice models;
+  physics::TableState<double> state;
+};
+
+/// single ball sliding to rest, stun cut shot, draw shot off a cushion, 9-ball break, 8-ball
+/// break; all on the 7-ft table with the default models.
+std::vector<ShotScene> workPrecisionScenes();
+
+/// Ball centres (xy) at each sample time, in the order of the scene's balls. Pocketed balls
+/// are at their pocket's centre.
+struct Samples
+{
+  std::vector<double> times;
+  std::vector<std::vector<Eigen::Vector2d>> positions;
+};
+
+/// The same shot in the long-double event engine, sampled every `interval` seconds until every
+/// ball rests (at most max_time).
+Samples referenceRun(const ShotScene& scene, double interval = 0.01, double max_time = 20.0);
+
+struct MethodResult
+{
+  std::string method;              ///< "event", "symplectic_euler", "rk4"
+  double parameter = 0;            ///< step [s] for the steppers; 0 for the event engine
+  double seconds = 0;              ///< median wall time of one run
+  double max_error = 0;            ///< largest |position - reference| over all samples and balls [m]
+  double final_error = 0;          ///< the same at the last sample (the reference's rest) [m]
+  long work = 0;                   ///< events (engine) or steps (steppers)
+  physics::StepperReport stepper;  ///< what the stepper saw (steppers only)
+};
+
+/// Largest distance between two sample sets, over all times and balls, and at the last time.
+void compareSamples(const Samples& run, const Samples& reference, double& max_error, double& final_error);
+
+MethodResult runEventEngine(const ShotScene& scene, const Samples& reference, int repeats);
+MethodResult runStepper(const ShotScene& scene, const Samples& reference, physics::Integrator integrator, double step,
+                        int repeats);
+
+}  // namespace evaluation
+}  // namespace cue_sim

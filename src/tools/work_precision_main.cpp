@@ -1,0 +1,142 @@
+// work_precision: error against run time for the event engine and the time-steppers.
+//   rosrun cue_sim work_precision --out doc/work_precision        (full report, minutes)
+//   rosrun cue_sim work_precision --quick --out build/wp_quick     (single shots, coarse steps)
+// Writes results.csv, results.md and, with gnuplot installed, work_precision.png.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "cue_sim/evaluation/work_precision.hpp"
+
+namespace
+{
+using cue_sim::evaluation::MethodResult;
+using cue_sim::evaluation::ShotScene;
+using cue_sim::physics::Integrator;
+
+std::string notes(const MethodResult& r)
+{
+  if (r.method == "event")
+    return "";
+  std::ostringstream out;
+  if (r.stepper.tunnelled)
+    out << "tunnelled; ";
+  if (r.stepper.max_overlap > 0)
+    out << "overlap " << std::setprecision(2) << r.stepper.max_overlap << " m; ";
+  if (r.stepper.energy_gain > 1e-12)
+    out << "energy +" << std::setprecision(2) << r.stepper.energy_gain << " J; ";
+  if (!r.stepper.finished)
+    out << "not at rest; ";
+  return out.str();
+}
+
+void writePlot(const std::filesystem::path& dir, const std::vector<std::string>& scenes)
+{
+  std::ofstream gp(dir / "work_precision.gp");
+  gp << "set terminal pngcairo size 1500,900 font ',10'\n"
+     << "set output '" << (dir / "work_precision.png").string() << "'\n"
+     << "set datafile separator ','\nset logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
+     << "set xlabel 'run time per shot [s]'\nset ylabel 'largest position error [m]'\nset grid\n"
+     << "set key bottom left\nset multiplot layout 2,3 title 'cue\\_sim: error against run time (reference: "
+        "long-double event engine)'\n";
+  for (const auto& scene : scenes)
+  {
+    gp << "set title '" << scene << "'\n"
+       << "plot for [m in 'event symplectic_euler rk4'] '" << (dir / "results.csv").string()
+       << "' using (strcol(1) eq '" << scene << "' && strcol(2) eq m ? $4 : 1/0):($5 > 0 ? $5 : 1e-17) "
+       << "with linespoints pointsize 1.2 title m\n";
+  }
+  gp << "unset multiplot\n";
+  gp.close();
+  const std::string command = "gnuplot '" + (dir / "work_precision.gp").string() + "' 2>&1";
+  if (std::system(command.c_str()) != 0)
+    std::cerr << "work_precision: gnuplot failed or is missing; the plot script is " << (dir / "work_precision.gp")
+              << "\n";
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  CLI::App app{"Error against run time of the event engine and time-steppers, against a long-double reference."};
+  std::string out_dir = "work_precision";
+  bool quick = false;
+  double budget = 30.0;
+  app.add_option("--out", out_dir, "output folder (results.csv, results.md, work_precision.png)");
+  app.add_flag("--quick", quick, "single shots, steps 1e-2 to 1e-4 s, one repeat: a check, not a report");
+  app.add_option("--budget", budget, "stop refining a method once one run takes longer [s]");
+  CLI11_PARSE(app, argc, argv);
+
+  const std::filesystem::path dir(out_dir);
+  std::filesystem::create_directories(dir);
+  std::vector<double> steps = {1e-2, 5e-3, 2e-3, 1e-3, 5e-4, 2e-4, 1e-4, 5e-5, 2e-5, 1e-5, 5e-6, 2e-6, 1e-6};
+  if (quick)
+    steps = {1e-2, 1e-3, 1e-4};
+
+  std::ofstream csv(dir / "results.csv");
+  csv << "scene,method,step_s,seconds,max_error_m,final_error_m,work,notes\n";
+  std::ofstream md(dir / "results.md");
+  std::vector<std::string> scene_names;
+  std::ostringstream verdicts;
+  for (const ShotScene& scene : cue_sim::evaluation::workPrecisionScenes())
+  {
+    if (quick && !scene.single_shot)
+      continue;
+    scene_names.push_back(scene.name);
+    std::cerr << "work_precision: " << scene.name << "\n";
+    const auto reference = cue_sim::evaluation::referenceRun(scene);
+    std::vector<MethodResult> results;
+    results.push_back(cue_sim::evaluation::runEventEngine(scene, reference, quick ? 3 : 21));
+    for (const Integrator integrator : {Integrator::SymplecticEuler, Integrator::RungeKutta4})
+      for (double step : steps)
+      {
+        MethodResult r = cue_sim::evaluation::runStepper(scene, reference, integrator, step, 1);
+        if (!quick && r.seconds < 0.2)
+          r = cue_sim::evaluation::runStepper(scene, reference, integrator, step, 5);
+        results.push_back(r);
+        std::cerr << "  " << r.method << " h=" << step << ": " << r.seconds << " s, error " << r.max_error << "\n";
+        if (r.seconds > budget)
+          break;
+      }
+    md << "### " << scene.name << " (" << reference.times.back() << " s to rest)\n\n"
+       << "| method | step [s] | time per shot [s] | largest error [m] | final error [m] | events or steps | notes |\n"
+       << "|---|---|---|---|---|---|---|\n";
+    double fastest_1mm = -1;
+    for (const auto& r : results)
+    {
+      csv << scene.name << "," << r.method << "," << r.parameter << "," << r.seconds << "," << r.max_error << ","
+          << r.final_error << "," << r.work << "," << notes(r) << "\n";
+      md << std::setprecision(3) << "| " << r.method << " | " << (r.method == "event" ? "-" : [&] {
+        std::ostringstream s;
+        s << r.parameter;
+        return s.str();
+      }()) << " | "
+         << r.seconds << " | " << r.max_error << " | " << r.final_error << " | " << r.work << " | " << notes(r)
+         << " |\n";
+      if (r.method != "event" && r.max_error <= 1e-3 && (fastest_1mm < 0 || r.seconds < fastest_1mm))
+        fastest_1mm = r.seconds;
+    }
+    md << "\n";
+    if (scene.single_shot)
+    {
+      const MethodResult& event = results.front();
+      verdicts << "- " << scene.name << ": event engine error " << std::setprecision(3) << event.max_error << " m in "
+               << event.seconds << " s; the fastest time-stepper within 1e-3 m took "
+               << (fastest_1mm < 0 ? std::string("(none reached it)") : std::to_string(fastest_1mm) + " s") << ": "
+               << (event.max_error < 1e-9 && (fastest_1mm < 0 || event.seconds < fastest_1mm) ? "goal met"
+                                                                                              : "GOAL NOT MET")
+               << "\n";
+    }
+  }
+  md << "### Goal: for single shots, error below 1e-9 m in less time than any time-stepper needs for 1e-3 m\n\n"
+     << verdicts.str();
+  md.close();
+  csv.close();
+  std::cout << verdicts.str();
+  writePlot(dir, scene_names);
+  return 0;
+}
