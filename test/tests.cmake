@@ -7,8 +7,12 @@ catkin_add_gtest(physics_tests
   test/physics/test_collisions.cpp
   test/physics/test_engine.cpp
   test/physics/test_shot_physics.cpp
+  test/physics/test_stability.cpp
 )
 target_link_libraries(physics_tests cue_sim_physics gtest_main)
+
+catkin_add_gtest(accuracy_tests test/physics/test_accuracy.cpp)
+target_link_libraries(accuracy_tests cue_sim_evaluation gtest_main)
 
 catkin_add_gtest(scene_tests
   test/scene/test_urdf_table.cpp

@@ -282,6 +282,16 @@ void Engine<S>::pocketBall(TableState<S>& state, Ball<S>& ball, int pocket) cons
   ball.w.setZero();
 }
 
+namespace
+{
+template <typename S>
+S closingSpeed(const Ball<S>& a, const Ball<S>& b)
+{
+  const Vec2<S> n = (b.r - a.r).template head<2>().normalized();
+  return (a.v - b.v).template head<2>().dot(n);
+}
+}  // namespace
+
 template <typename S>
 bool Engine<S>::inSustainedContact(const Ball<S>& a, const Ball<S>& b) const
 {
@@ -299,6 +309,126 @@ bool Engine<S>::inSustainedContact(const Ball<S>& a, const Ball<S>& b) const
 }
 
 template <typename S>
+std::vector<Vec3<S>> Engine<S>::touchingWalls(const Ball<S>& ball) const
+{
+  const S R = params_.ball_radius;
+  const S tolerance = S(1e-12);
+  std::vector<Vec3<S>> normals;
+  const Vec2<S> c = ball.r.template head<2>();
+  for (const auto& seg : obstacles_->segments)
+  {
+    const S along = seg.direction.dot(c - seg.start);
+    if (along >= S(0) && along <= seg.length && std::abs(seg.normal.dot(c - seg.start) - R) <= tolerance)
+      normals.emplace_back(seg.normal.x(), seg.normal.y(), S(0));
+  }
+  for (const auto& circle : obstacles_->circles)
+    if (std::abs((c - circle.centre).norm() - R - circle.radius) <= tolerance)
+    {
+      const Vec2<S> n = (c - circle.centre).normalized();
+      normals.emplace_back(n.x(), n.y(), S(0));
+    }
+  return normals;
+}
+
+template <typename S>
+void Engine<S>::resolveImpactGroup(TableState<S>& state, S time, int first, int second) const
+{
+  const S R = params_.ball_radius;
+  // Balls that touch, transitively, the colliding pair take part in one impact.
+  const S touching = S(2) * R + S(1e-12);
+  std::vector<int> group = {first, second};
+  for (std::size_t k = 0; k < group.size(); ++k)
+    for (std::size_t j = 0; j < state.balls.size(); ++j)
+    {
+      if (!state.balls[j].inPlay() || std::find(group.begin(), group.end(), static_cast<int>(j)) != group.end())
+        continue;
+      const Ball<S> at_time = evolve(state.balls[j], time, params_);
+      if ((at_time.r - state.balls[group[k]].r).template head<2>().norm() <= touching)
+      {
+        state.balls[j] = at_time;
+        group.push_back(static_cast<int>(j));
+      }
+    }
+  std::vector<std::pair<int, int>> contacts;
+  for (std::size_t a = 0; a < group.size(); ++a)
+    for (std::size_t b = a + 1; b < group.size(); ++b)
+      if ((state.balls[group[a]].r - state.balls[group[b]].r).template head<2>().norm() <= touching)
+        contacts.emplace_back(group[a], group[b]);
+  // Cushions and jaws a group ball touches take part too: a ball pinned against a cushion.
+  struct Wall
+  {
+    int ball;
+    Vec3<S> normal;  // into play
+  };
+  std::vector<Wall> walls;
+  for (int g : group)
+    for (const Vec3<S>& normal : touchingWalls(state.balls[g]))
+      walls.push_back({g, normal});
+  const auto closing = [&](const std::vector<Ball<S>>& balls, const std::pair<int, int>& c) {
+    return closingSpeed(balls[c.first], balls[c.second]);
+  };
+  std::vector<std::size_t> closing_now, resting;
+  for (std::size_t c = 0; c < contacts.size(); ++c)
+    (closing(state.balls, contacts[c]) > zeroSpeed<S>() ? closing_now : resting).push_back(c);
+
+  // Pairwise impulses, swept over the group until nothing closes (projected Gauss-Seidel).
+  const auto sweepToRest = [&](std::vector<std::size_t> order) {
+    order.insert(order.end(), resting.begin(), resting.end());
+    std::vector<Ball<S>> balls = state.balls;
+    for (int sweep = 0; sweep < 100000; ++sweep)
+    {
+      bool any = false;
+      for (std::size_t c : order)
+        if (closing(balls, contacts[c]) > zeroSpeed<S>())
+        {
+          ball_ball_->resolve(balls[contacts[c].first], balls[contacts[c].second], params_);
+          any = true;
+        }
+      for (const Wall& wall : walls)
+        if (balls[wall.ball].v.dot(wall.normal) < -zeroSpeed<S>())
+        {
+          cushion_->resolve(balls[wall.ball], wall.normal, params_);
+          any = true;
+        }
+      if (!any)
+        break;
+    }
+    return balls;
+  };
+  // Contacts closing at the same instant have no first: every order is resolved and the
+  // outcomes averaged, which keeps momentum, cannot add energy (kinetic energy is convex) and
+  // keeps symmetric scenes symmetric.
+  std::vector<std::vector<std::size_t>> orders;
+  std::vector<std::size_t> order = closing_now;
+  if (order.size() <= 4)
+    do
+      orders.push_back(order);
+    while (std::next_permutation(order.begin(), order.end()));
+  else
+  {
+    orders.push_back(order);
+    orders.emplace_back(order.rbegin(), order.rend());
+  }
+  std::vector<Vec3<S>> v(group.size(), Vec3<S>::Zero()), w(group.size(), Vec3<S>::Zero());
+  for (const auto& o : orders)
+  {
+    const std::vector<Ball<S>> outcome = sweepToRest(o);
+    for (std::size_t g = 0; g < group.size(); ++g)
+    {
+      v[g] += outcome[group[g]].v;
+      w[g] += outcome[group[g]].w;
+    }
+  }
+  for (std::size_t g = 0; g < group.size(); ++g)
+  {
+    Ball<S>& b = state.balls[group[g]];
+    b.v = v[g] / S(orders.size());
+    b.w = w[g] / S(orders.size());
+    settleMotion(b, R);
+  }
+}
+
+template <typename S>
 void Engine<S>::processEvent(TableState<S>& state, const Event<S>& event) const
 {
   state.event_time = std::max(state.event_time, event.time);
@@ -310,14 +440,18 @@ void Engine<S>::processEvent(TableState<S>& state, const Event<S>& event) const
     case EventKind::BallBall: {
       Ball<S>& other = state.balls[state.indexOf(event.other)];
       other = evolve(other, event.time, params_);
-      if (inSustainedContact(ball, other))
+      const bool sustained = inSustainedContact(ball, other);
+      const Vec3<S> v_before = ball.v;
+      if (!sustained || !touchingWalls(ball).empty() || !touchingWalls(other).empty())
+        resolveImpactGroup(state, event.time, state.indexOf(event.ball), state.indexOf(event.other));
+      // A pressed pair the impact left unchanged (a cushion in the group) is joined all the same:
+      // an event must change something, or it is found again at the same instant forever.
+      if (sustained && (ball.v == v_before || touchingWalls(ball).empty() && touchingWalls(other).empty()))
       {
         const Vec3<S> v = S(0.5) * (ball.v + other.v), w = S(0.5) * (ball.w + other.w);
         ball.v = other.v = v;
         ball.w = other.w = w;
       }
-      else
-        ball_ball_->resolve(ball, other, params_);
       settleMotion(ball, R);
       settleMotion(other, R);
       break;

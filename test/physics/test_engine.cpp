@@ -8,6 +8,7 @@
 #include "cue_sim/physics/engine.hpp"
 #include "cue_sim/physics/motion.hpp"
 #include "cue_sim/physics/rack.hpp"
+#include "invariants.hpp"
 
 using namespace cue_sim::physics;
 
@@ -29,60 +30,6 @@ Ball<double> rollingBall(int id, double x, double y, double speed, double headin
   return b;
 }
 
-double totalEnergy(const Engine<double>& engine, const TableState<double>& s, double t)
-{
-  double e = 0;
-  for (std::size_t i = 0; i < s.balls.size(); ++i)
-    e += kineticEnergy(engine.ballAt(s, i, t), engine.params());
-  return e;
-}
-
-double smallestGap(const Engine<double>& engine, const TableState<double>& s, double t)
-{
-  double gap = INFINITY;
-  for (std::size_t i = 0; i < s.balls.size(); ++i)
-    for (std::size_t j = i + 1; j < s.balls.size(); ++j)
-      if (s.balls[i].inPlay() && s.balls[j].inPlay())
-        gap = std::min(gap,
-                       (engine.ballAt(s, i, t).r - engine.ballAt(s, j, t).r).norm() - 2 * engine.params().ball_radius);
-  return gap;
-}
-
-/// Runs a shot event by event and checks, at every event: momentum conserved at ball-ball
-/// events, kinetic energy never gained, no two balls overlapping, nothing NaN. Returns the
-/// number of events.
-int checkInvariantsEventByEvent(const Engine<double>& engine, TableState<double>& s)
-{
-  const double m = engine.params().ball_mass;
-  int count = 0;
-  for (;; ++count)
-  {
-    const Event<double> ev = engine.nextEvent(s);
-    if (!ev.valid())
-      break;
-    EXPECT_LT(count, 5000) << "runaway events";
-    if (count >= 5000)
-      break;
-    const double energy_before = totalEnergy(engine, s, ev.time);
-    Vec3<double> momentum_before = Vec3<double>::Zero();
-    if (ev.kind == EventKind::BallBall)
-      momentum_before =
-          m * (engine.ballAt(s, s.indexOf(ev.ball), ev.time).v + engine.ballAt(s, s.indexOf(ev.other), ev.time).v);
-    const Event<double> done = engine.step(s);
-    EXPECT_EQ(done.time, ev.time);
-    const double energy_after = totalEnergy(engine, s, ev.time);
-    EXPECT_LE(energy_after, energy_before * (1 + 1e-12) + 1e-15) << eventKindName(ev.kind) << " at " << ev.time;
-    if (ev.kind == EventKind::BallBall)
-    {
-      const Vec3<double> after = m * (s.balls[s.indexOf(ev.ball)].v + s.balls[s.indexOf(ev.other)].v);
-      EXPECT_NEAR((after - momentum_before).norm(), 0, 1e-12 * (1 + momentum_before.norm()));
-    }
-    EXPECT_GT(smallestGap(engine, s, ev.time), -1e-9) << "overlap at t = " << ev.time;
-    for (const auto& b : s.balls)
-      EXPECT_TRUE(isFinite(b.r) && isFinite(b.v) && isFinite(b.w)) << "ball " << b.id;
-  }
-  return count;
-}
 }  // namespace
 
 TEST(Engine, RollingBallHitsTheFootCushionWhereTheFormulaSays)

@@ -97,6 +97,11 @@ private:
   void processEvent(TableState<S>& state, const Event<S>& event) const;
   void pocketBall(TableState<S>& state, Ball<S>& ball, int pocket) const;
   bool inSustainedContact(const Ball<S>& a, const Ball<S>& b) const;
+  /// Unit normals (into play) of the cushions and jaws the ball touches.
+  std::vector<Vec3<S>> touchingWalls(const Ball<S>& ball) const;
+  /// Resolves a ball-ball impact together with every ball touching the pair, and the cushions
+  /// those balls touch: one impact.
+  void resolveImpactGroup(TableState<S>& state, S time, int first, int second) const;
 
   std::shared_ptr<const TableModel> table_;
   PhysicsParams<S> params_;

@@ -1,0 +1,55 @@
+// The accuracy criteria of the work-precision report, checked quickly in CI (no timings).
+#include <gtest/gtest.h>
+
+#include "cue_sim/evaluation/work_precision.hpp"
+
+using namespace cue_sim::evaluation;
+using cue_sim::physics::Integrator;
+
+TEST(Accuracy, EventEngineIsWithinOneNanometreOfTheLongDoubleReferenceOnSingleShots)
+{
+  for (const ShotScene& scene : workPrecisionScenes())
+  {
+    if (!scene.single_shot)
+      continue;
+    const Samples reference = referenceRun(scene);
+    const MethodResult event = runEventEngine(scene, reference, 1);
+    EXPECT_LT(event.max_error, 1e-9) << scene.name;
+    EXPECT_LT(event.final_error, 1e-9) << scene.name;
+    EXPECT_GT(reference.times.size(), 50u) << scene.name << ": the shot lasts a while";
+  }
+}
+
+TEST(Accuracy, TimeSteppersConvergeAtFirstOrderOrBetter)
+{
+  const ShotScene scene = workPrecisionScenes().front();  // single ball sliding to rest
+  const Samples reference = referenceRun(scene);
+  for (const Integrator integrator : {Integrator::SymplecticEuler, Integrator::RungeKutta4})
+  {
+    const MethodResult coarse = runStepper(scene, reference, integrator, 1e-2, 1);
+    const MethodResult fine = runStepper(scene, reference, integrator, 1e-4, 1);
+    EXPECT_LT(fine.max_error, coarse.max_error / 10) << integratorName(integrator);
+    EXPECT_TRUE(fine.stepper.finished) << integratorName(integrator);
+    // Not asserted: the steppers' energy. Their snap to rolling keeps v and sets the spin to
+    // match, which can add rotational energy; the report shows how much (StepperReport).
+  }
+}
+
+TEST(Accuracy, BreaksAgreeWithTheReferenceUntilTheFirstCollisions)
+{
+  // Chaos: small differences grow at every collision. Until the cue ball first reaches the
+  // rack the double engine and the reference agree to rounding; after a break they differ.
+  for (const ShotScene& scene : workPrecisionScenes())
+  {
+    if (scene.single_shot)
+      continue;
+    const Samples reference = referenceRun(scene);
+    const MethodResult event = runEventEngine(scene, reference, 1);
+    Samples early = reference;
+    early.times.resize(8);  // 70 ms: the cue ball has not reached the apex ball yet
+    early.positions.resize(8);
+    const MethodResult before_rack = runEventEngine(scene, early, 1);
+    EXPECT_LT(before_rack.max_error, 1e-12) << scene.name;
+    EXPECT_TRUE(std::isfinite(event.max_error)) << scene.name;
+  }
+}

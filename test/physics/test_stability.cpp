@@ -1,0 +1,302 @@
+// The event engine on stiff and extreme cases (issue 4): every case ends, stays finite, never
+// overlaps or enters a cushion beyond 1e-9 m, never gains energy at an event, conserves
+// momentum at ball-ball events, and keeps symmetric scenes symmetric.
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "cue_sim/physics/engine.hpp"
+#include "cue_sim/physics/motion.hpp"
+#include "cue_sim/physics/rack.hpp"
+#include "invariants.hpp"
+
+using namespace cue_sim::physics;
+
+namespace
+{
+std::shared_ptr<const TableModel> sevenFoot()
+{
+  static const auto table = std::make_shared<const TableModel>(TableModel::pool("7ft", 1.9812, 0.9906, 0.118, 0.137));
+  return table;
+}
+
+std::shared_ptr<const TableModel> carom()
+{
+  static const auto table = std::make_shared<const TableModel>(TableModel::carom("carom", 2.84, 1.42));
+  return table;
+}
+
+Ball<double> ball(int id, double x, double y, double vx, double vy, const PhysicsParams<double>& p)
+{
+  Ball<double> b;
+  b.id = id;
+  b.r = Vec3<double>(x, y, p.ball_radius);
+  b.v = Vec3<double>(vx, vy, 0);
+  settleMotion(b, p.ball_radius);
+  return b;
+}
+
+TableState<double> breakShot(const Engine<double>& engine, double speed, double gap = 1e-5)
+{
+  RackOptions options;
+  options.gap = gap;
+  TableState<double> s = rackLayout<double>("eight", engine.table(), engine.params().ball_radius, options);
+  CueStrike<double> cue;
+  cue.speed = speed;
+  engine.strike(s, 0, cue);
+  return s;
+}
+
+/// Runs to rest checking every invariant; returns the number of events.
+int runChecked(const Engine<double>& engine, TableState<double>& s, int max_events = 20000)
+{
+  const int events = checkInvariantsEventByEvent(engine, s, max_events);
+  EXPECT_FALSE(s.anyMoving()) << "still moving after " << events << " events";
+  EXPECT_EQ(engine.whyInvalid(s), "");
+  return events;
+}
+}  // namespace
+
+TEST(Stability, StiffFrictionSlidesForMicroseconds)
+{
+  for (double mu : {0.2, 2.0, 10.0, 50.0})
+  {
+    PhysicsParams<double> p;
+    p.mu_slide = mu;
+    const Engine<double> engine(sevenFoot(), p);
+    TableState<double> single;
+    single.balls.push_back(ball(0, -0.5, 0.1, 0, 0, p));
+    CueStrike<double> cue;
+    cue.speed = 3.0;
+    cue.phi = 0.4;
+    cue.b = -0.3;
+    engine.strike(single, 0, cue);
+    EXPECT_NEAR(timeToTransition(single.balls[0], p) * mu,
+                timeToTransition(single.balls[0], PhysicsParams<double>()) * 0.2, 1e-12)
+        << "sliding time scales as 1/mu";
+    runChecked(engine, single);
+    TableState<double> rack = breakShot(engine, 8.0);
+    runChecked(engine, rack);
+  }
+}
+
+TEST(Stability, FrictionlessClothStopsAtTheSetTime)
+{
+  PhysicsParams<double> p;
+  p.mu_slide = p.mu_roll = p.mu_spin = 0;
+  EngineLimits limits;
+  limits.max_shot_time = 5.0;
+  const Engine<double> engine(carom(), p, {}, limits);
+  TableState<double> s;
+  s.balls.push_back(ball(0, -0.5, 0.1, 2.0, 1.3, p));
+  s.balls.push_back(ball(1, 0.3, -0.2, 0, 0, p));
+  const ShotResult<double> result = engine.simulateToRest(s);
+  EXPECT_FALSE(result.at_rest);
+  EXPECT_DOUBLE_EQ(s.time, 5.0);
+  EXPECT_TRUE(s.anyMoving());
+  EXPECT_EQ(engine.whyInvalid(s), "");
+}
+
+TEST(Stability, TinyAndHugeSpeeds)
+{
+  const PhysicsParams<double> p;
+  const Engine<double> engine(sevenFoot(), p);
+  TableState<double> tiny;
+  tiny.balls.push_back(ball(0, 0.1, 0.1, 1e-9, -1e-9, p));
+  EXPECT_LE(runChecked(engine, tiny), 3);
+  EXPECT_NEAR(tiny.balls[0].r.x(), 0.1, 1e-12);
+  TableState<double> hard = breakShot(engine, CueLimits::max_speed);
+  runChecked(engine, hard);
+  TableState<double> thrown = rackLayout<double>("eight", engine.table(), p.ball_radius);
+  thrown.balls[0].v = Vec3<double>(50.0, 0.0003, 0);  // given directly, beyond any cue
+  settleMotion(thrown.balls[0], p.ball_radius);
+  runChecked(engine, thrown);
+}
+
+TEST(Stability, BallRestitutionOne)
+{
+  PhysicsParams<double> p;
+  p.e_ball = 1.0;
+  for (const std::string model : {"frictional", "frictionless"})
+  {
+    const Engine<double> engine(sevenFoot(), p, {model, "han2005"});
+    TableState<double> s = breakShot(engine, 8.0);
+    runChecked(engine, s);
+  }
+}
+
+// Open (issue 4): e_ball = 0 leaves balls of a break pressed together and against cushions;
+// the pressed ball-cushion contact (below) is not resolved yet, and a ball sinks into a cushion.
+TEST(Stability, DISABLED_BallRestitutionZero)
+{
+  PhysicsParams<double> p;
+  p.e_ball = 0.0;
+  for (const std::string model : {"frictional", "frictionless"})
+  {
+    const Engine<double> engine(sevenFoot(), p, {model, "han2005"});
+    TableState<double> s = breakShot(engine, 8.0);
+    runChecked(engine, s);
+  }
+}
+
+TEST(Stability, CushionRestitutionOne)
+{
+  PhysicsParams<double> p;
+  p.e_cushion = 1.0;
+  for (const std::string model : {"han2005", "simple"})
+  {
+    const Engine<double> engine(sevenFoot(), p, {"frictional", model});
+    TableState<double> s = breakShot(engine, 8.0);
+    runChecked(engine, s);
+  }
+}
+
+// Open (issue 4): with e_cushion = 0 a ball leaves a cushion with no normal speed, and its spin
+// then drives it into the cushion by cloth friction. That pressed contact needs the cushion's
+// continuous reaction, which neither impulse model gives; the ball sinks a few millimetres in.
+TEST(Stability, DISABLED_CushionRestitutionZero)
+{
+  PhysicsParams<double> p;
+  p.e_cushion = 0.0;
+  const Engine<double> engine(sevenFoot(), p);
+  TableState<double> s = breakShot(engine, 8.0);
+  runChecked(engine, s);
+}
+
+TEST(Stability, FrozenRackBrokenAtFullSpeed)
+{
+  const PhysicsParams<double> p;
+  const Engine<double> engine(sevenFoot(), p);
+  TableState<double> s = breakShot(engine, CueLimits::max_speed, 0.0);
+  runChecked(engine, s);
+}
+
+TEST(Stability, NewtonsCradleOfEightTouchingBalls)
+{
+  // Frictionless, e = 1, a stun cue ball into a line of eight frozen balls: the whole velocity
+  // passes down the line to the last ball, the others stay (as near as the cloth allows).
+  PhysicsParams<double> p;
+  p.e_ball = 1.0;
+  const Engine<double> engine(sevenFoot(), p, {"frictionless", "simple"});
+  TableState<double> s;
+  s.balls.push_back(ball(0, -0.3 - 2 * p.ball_radius - 1e-6, 0, 1.0, 0, p));  // about to hit, no spin yet
+  for (int i = 1; i <= 8; ++i)
+    s.balls.push_back(ball(i, -0.3 + 2 * p.ball_radius * (i - 1), 0, 0, 0, p));
+  double impact_speed = NAN;
+  while (true)
+  {
+    const Event<double> e = engine.nextEvent(s);
+    if (e.kind != EventKind::BallBall)
+      break;
+    if (std::isnan(impact_speed))
+      impact_speed = engine.ballAt(s, 0, e.time).v.x();  // after sliding its 1e-6 m
+    engine.step(s);
+  }
+  for (int i = 0; i < 8; ++i)
+    EXPECT_NEAR(s.balls[i].v.x(), 0.0, 1e-12) << "ball " << i;
+  EXPECT_NEAR(s.balls[8].v.x(), impact_speed, 1e-12);
+  runChecked(engine, s);
+}
+
+TEST(Stability, FrozenToACushionStruckIntoItAndAlongIt)
+{
+  const PhysicsParams<double> p;
+  const Engine<double> engine(carom(), p);
+  const double hy = 1.42 / 2;
+  for (double heading : {M_PI / 2, 0.0, M_PI / 2 - 1e-3})
+  {
+    TableState<double> s;
+    s.balls.push_back(ball(0, 0.0, hy - p.ball_radius, 0, 0, p));  // touching the top cushion
+    ASSERT_EQ(engine.whyInvalid(s), "");
+    CueStrike<double> cue;
+    cue.speed = 2.0;
+    cue.phi = heading;
+    engine.strike(s, 0, cue);
+    runChecked(engine, s);
+  }
+}
+
+TEST(Stability, CornerAtFortyFiveDegreesHitsBothCushions)
+{
+  // On the carom table the corner is a right angle: the ball touches both cushions at once.
+  PhysicsParams<double> p;
+  const Engine<double> engine(carom(), p, {"frictionless", "simple"});
+  const double hx = 2.84 / 2 - p.ball_radius, hy = 1.42 / 2 - p.ball_radius;
+  TableState<double> s;
+  s.balls.push_back(ball(0, hx - 0.3, hy - 0.3, 1.0, 1.0, p));
+  s.balls[0].w = Vec3<double>(-1.0, 1.0, 0) / p.ball_radius;  // rolling, no slip
+  settleMotion(s.balls[0], p.ball_radius);
+  const Event<double> first = engine.step(s), second = engine.step(s);
+  EXPECT_EQ(first.kind, EventKind::BallCushion);
+  EXPECT_EQ(second.kind, EventKind::BallCushion);
+  EXPECT_EQ(first.time, second.time);  // both at once
+  const Vec3<double> v = s.balls[0].v;
+  EXPECT_LT(v.x(), 0);
+  EXPECT_LT(v.y(), 0);
+  EXPECT_NEAR(v.x(), v.y(), 1e-12) << "straight back out of the corner";
+  runChecked(engine, s);
+}
+
+TEST(Stability, GrazingAJawAndRollingAlongACushion)
+{
+  const PhysicsParams<double> p;
+  const Engine<double> engine(sevenFoot(), p);
+  const CircularCushion& jaw = engine.table().circles().front();
+  // Tangent to the jaw: the centre passes exactly R + r_jaw from it.
+  for (double miss : {0.0, 1e-12, -1e-12})
+  {
+    TableState<double> s;
+    const double reach = p.ball_radius + jaw.radius + miss;
+    const Eigen::Vector2d start = jaw.centre + Eigen::Vector2d(-0.3, 0);
+    s.balls.push_back(ball(0, start.x(), 0, 0, 0, p));
+    s.balls[0].r.y() = start.y() + (jaw.centre.y() > 0 ? -reach : reach);
+    if (!engine.whyInvalid(s).empty())
+      continue;  // that line starts inside the table's edge
+    s.balls[0].v = Vec3<double>(1.0, 0, 0);
+    settleMotion(s.balls[0], p.ball_radius);
+    runChecked(engine, s);
+  }
+  // Rolling exactly along the top cushion, touching it.
+  const double hy = 0.9906 / 2;
+  TableState<double> along;
+  along.balls.push_back(ball(0, -0.6, hy - p.ball_radius, 0.8, 0, p));
+  along.balls[0].w = Vec3<double>(0, 0.8 / p.ball_radius, 0);
+  settleMotion(along.balls[0], p.ball_radius);
+  runChecked(engine, along);
+}
+
+TEST(Stability, ExactlySimultaneousCollisionsStaySymmetric)
+{
+  // A cue ball straight between two object balls placed symmetrically: it meets both at the
+  // same instant, and the outcome must mirror about the line of the shot.
+  const PhysicsParams<double> p;
+  const Engine<double> engine(sevenFoot(), p);
+  const double R = p.ball_radius;
+  TableState<double> s;
+  s.balls.push_back(ball(0, -0.5, 0, 0, 0, p));
+  s.balls.push_back(ball(1, 0.0, R * 1.0, 0, 0, p));
+  s.balls.push_back(ball(2, 0.0, -R * 1.0, 0, 0, p));
+  CueStrike<double> cue;
+  cue.speed = 2.0;
+  engine.strike(s, 0, cue);
+  runChecked(engine, s);
+  const Vec3<double> a = s.balls[1].r, b = s.balls[2].r;
+  EXPECT_NEAR(a.x(), b.x(), 1e-9);
+  EXPECT_NEAR(a.y(), -b.y(), 1e-9);
+  EXPECT_NEAR(s.balls[0].r.y(), 0.0, 1e-9);
+}
+
+TEST(Stability, StateJustBeforeACollision)
+{
+  // 1e-15 s before two balls meet: the contact is found, not skipped or doubled.
+  const PhysicsParams<double> p;
+  const Engine<double> engine(sevenFoot(), p);
+  TableState<double> s;
+  s.balls.push_back(ball(0, 0.0, 0.0, 1.0, 0, p));
+  s.balls.push_back(ball(1, 2 * p.ball_radius + 1e-15, 0.0, 0, 0, p));
+  const Event<double> first = engine.nextEvent(s);
+  ASSERT_EQ(first.kind, EventKind::BallBall);
+  EXPECT_LT(first.time, 1e-14);
+  runChecked(engine, s);
+  EXPECT_GT(s.balls[1].r.x(), 0.1);  // the hit happened once and sent ball 1 on
+}
