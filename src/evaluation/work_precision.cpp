@@ -14,12 +14,13 @@ using namespace physics;
 
 namespace
 {
-ShotScene strikeScene(std::string name, bool single, TableState<double> state, int ball, const CueStrike<double>& cue)
+ShotScene strikeScene(std::string name, bool single, TableState<double> state, int ball, const CueStrike<double>& cue,
+                      const TableModel& table = TableModel::pool("7ft", 1.9812, 0.9906, 0.118, 0.137))
 {
   ShotScene scene;
   scene.name = std::move(name);
   scene.single_shot = single;
-  scene.table = std::make_shared<const TableModel>(TableModel::pool("7ft", 1.9812, 0.9906, 0.118, 0.137));
+  scene.table = std::make_shared<const TableModel>(table);
   const Engine<double> engine(scene.table, scene.params, scene.models);
   engine.strike(state, ball, cue);
   scene.state = state;
@@ -91,6 +92,65 @@ std::vector<ShotScene> workPrecisionScenes()
   cue.speed = 8.0;
   scenes.push_back(strikeScene("9-ball break", false, rackLayout<double>("nine", table, R), 0, cue));
   scenes.push_back(strikeScene("8-ball break", false, rackLayout<double>("eight", table, R), 0, cue));
+  return scenes;
+}
+
+std::vector<ShotScene> stabilityScenes()
+{
+  const double R = PhysicsParams<double>().ball_radius;
+  const TableModel table = TableModel::pool("7ft", 1.9812, 0.9906, 0.118, 0.137);
+  std::vector<ShotScene> scenes;
+  CueStrike<double> cue;
+  cue.speed = 3.0;
+  cue.phi = 0.3;
+  {
+    TableState<double> s;
+    s.balls.push_back(resting(0, -0.5, 0.0, R));
+    ShotScene scene = strikeScene("stiff friction, mu_s = 50", true, s, 0, cue);
+    scene.params.mu_slide = 50.0;
+    scenes.push_back(scene);
+  }
+  {
+    ShotScene scene = strikeScene("ball at 50 m/s into a rack", false, rackLayout<double>("eight", table, R), 0, cue);
+    scene.state.balls[0].v = Vec3<double>(50.0, 0.0003, 0);
+    scene.state.balls[0].w.setZero();
+    settleMotion(scene.state.balls[0], R);
+    scenes.push_back(scene);
+  }
+  {
+    TableState<double> s;
+    s.balls.push_back(resting(0, 0.2, 0.9906 / 2 - R, R));  // frozen to the top cushion
+    CueStrike<double> into = cue;
+    into.phi = M_PI / 2;
+    scenes.push_back(strikeScene("frozen to a cushion, struck into it", true, s, 0, into));
+  }
+  {
+    // The carom table's corner is a right angle: the ball meets both cushions at once.
+    const TableModel carom = TableModel::carom("carom", 2.84, 1.42);
+    TableState<double> s;
+    s.balls.push_back(resting(0, 2.84 / 2 - R - 0.6, 1.42 / 2 - R - 0.6, R));
+    CueStrike<double> corner = cue;
+    corner.phi = M_PI / 4;
+    scenes.push_back(strikeScene("into a corner at 45 degrees", true, s, 0, corner, carom));
+  }
+  {
+    TableState<double> s;
+    s.balls.push_back(resting(0, -0.5, 0.0, R));
+    for (int i = 1; i <= 8; ++i)
+      s.balls.push_back(resting(i, -0.3 + 2 * R * (i - 1), 0.0, R));
+    CueStrike<double> straight = cue;
+    straight.phi = 0.0;
+    scenes.push_back(strikeScene("Newton's cradle of 8", true, s, 0, straight));
+  }
+  {
+    TableState<double> s;
+    s.balls.push_back(resting(0, 0.1, 0.1, R));
+    ShotScene scene = strikeScene("a ball at 1e-9 m/s", true, s, 0, cue);
+    scene.state.balls[0].v = Vec3<double>(1e-9, 0, 0);
+    scene.state.balls[0].w.setZero();
+    settleMotion(scene.state.balls[0], R);
+    scenes.push_back(scene);
+  }
   return scenes;
 }
 

@@ -134,6 +134,25 @@ int main(int argc, char** argv)
   }
   md << "### Goal: for single shots, error below 1e-9 m in less time than any time-stepper needs for 1e-3 m\n\n"
      << verdicts.str();
+  // How the time-steppers fare on the extreme cases (the event engine's own stability suite is
+  // test/physics/test_stability.cpp).
+  md << "\n### Time-steppers on extreme cases\n\n"
+     << "| case | method | step [s] | ends | tunnels | deepest overlap [m] | energy gained [J] | slips snapped | "
+        "largest error [m] |\n|---|---|---|---|---|---|---|---|---|\n";
+  for (const ShotScene& scene : cue_sim::evaluation::stabilityScenes())
+  {
+    std::cerr << "work_precision: stability, " << scene.name << "\n";
+    const auto reference = cue_sim::evaluation::referenceRun(scene);
+    for (const Integrator integrator : {Integrator::SymplecticEuler, Integrator::RungeKutta4})
+      for (double step : quick ? std::vector<double>{1e-2, 1e-4} : std::vector<double>{1e-2, 1e-3, 1e-4, 1e-5})
+      {
+        const MethodResult r = cue_sim::evaluation::runStepper(scene, reference, integrator, step, 1);
+        md << std::setprecision(3) << "| " << scene.name << " | " << r.method << " | " << step << " | "
+           << (r.stepper.finished ? "yes" : "no") << " | " << (r.stepper.tunnelled ? "yes" : "no") << " | "
+           << r.stepper.max_overlap << " | " << r.stepper.energy_gain << " | " << r.stepper.slip_reversals << " | "
+           << r.max_error << " |\n";
+      }
+  }
   md.close();
   csv.close();
   std::cout << verdicts.str();
