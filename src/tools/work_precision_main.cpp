@@ -42,14 +42,15 @@ void writePlot(const std::filesystem::path& dir, const std::vector<std::string>&
      << "set output '" << (dir / "work_precision.png").string() << "'\n"
      << "set datafile separator ','\nset logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
      << "set xlabel 'run time per shot [s]'\nset ylabel 'largest position error [m]'\nset grid\n"
-     << "set key bottom left\nset multiplot layout 2,3 title 'cue\\_sim: error against run time (reference: "
+     << "set key top right noenhanced\nset yrange [1e-17:1e3]\nset multiplot layout 2,3 title 'cue\\_sim: error "
+        "against run time (reference: "
         "long-double event engine)'\n";
   for (const auto& scene : scenes)
   {
-    gp << "set title '" << scene << "'\n"
+    gp << "set title '" << scene << "' noenhanced\n"
        << "plot for [m in 'event symplectic_euler rk4'] '" << (dir / "results.csv").string()
        << "' using (strcol(1) eq '" << scene << "' && strcol(2) eq m ? $4 : 1/0):($5 > 0 ? $5 : 1e-17) "
-       << "with linespoints pointsize 1.2 title m\n";
+       << "with linespoints pointsize 1.5 title m\n";
   }
   gp << "unset multiplot\n";
   gp.close();
@@ -69,10 +70,20 @@ int main(int argc, char** argv)
   app.add_option("--out", out_dir, "output folder (results.csv, results.md, work_precision.png)");
   app.add_flag("--quick", quick, "single shots, steps 1e-2 to 1e-4 s, one repeat: a check, not a report");
   app.add_option("--budget", budget, "stop refining a method once one run takes longer [s]");
+  bool plot_only = false;
+  app.add_flag("--plot-only", plot_only, "only redraw the plot from the folder's results.csv");
   CLI11_PARSE(app, argc, argv);
 
   const std::filesystem::path dir(out_dir);
   std::filesystem::create_directories(dir);
+  if (plot_only)
+  {
+    std::vector<std::string> names;
+    for (const ShotScene& scene : cue_sim::evaluation::workPrecisionScenes())
+      names.push_back(scene.name);
+    writePlot(dir, names);
+    return 0;
+  }
   std::vector<double> steps = {1e-2, 5e-3, 2e-3, 1e-3, 5e-4, 2e-4, 1e-4, 5e-5, 2e-5, 1e-5, 5e-6, 2e-6, 1e-6};
   if (quick)
     steps = {1e-2, 1e-3, 1e-4};
