@@ -222,17 +222,24 @@ MethodResult runEventEngine(const ShotScene& scene, const Samples& reference, in
   return result;
 }
 
-MethodResult runStepper(const ShotScene& scene, const Samples& reference, Integrator integrator, double step,
+MethodResult runStepper(const ShotScene& scene, const Samples& reference, Integrator integrator, double parameter,
                         int repeats)
 {
   StepperOptions options;
   options.integrator = integrator;
-  options.step = step;
+  if (integrator == Integrator::DormandPrince54)
+  {
+    options.tolerance = parameter;
+    options.step = 1e-3;
+    options.max_steps = 300000;  // each step watches every event function: a budget, not a hang
+  }
+  else
+    options.step = parameter;
   options.max_time = reference.times.empty() ? 0.0 : reference.times.back();
   const TimeStepper stepper(scene.table, scene.params, scene.models, options);
   MethodResult result;
   result.method = integratorName(integrator);
-  result.parameter = step;
+  result.parameter = parameter;
   std::vector<double> times;
   Samples run;
   for (int r = 0; r < repeats; ++r)

@@ -30,7 +30,11 @@ std::string notes(const MethodResult& r)
     out << "overlap " << std::setprecision(2) << r.stepper.max_overlap << " m; ";
   if (r.stepper.energy_gain > 1e-12)
     out << "energy +" << std::setprecision(2) << r.stepper.energy_gain << " J; ";
-  if (!r.stepper.finished)
+  if (r.stepper.stalled)
+    out << "step collapsed, gave up; ";
+  else if (r.stepper.hit_step_limit)
+    out << "stopped at the step limit; ";
+  else if (!r.stepper.finished)
     out << "not at rest; ";
   return out.str();
 }
@@ -48,7 +52,7 @@ void writePlot(const std::filesystem::path& dir, const std::vector<std::string>&
   for (const auto& scene : scenes)
   {
     gp << "set title '" << scene << "' noenhanced\n"
-       << "plot for [m in 'event symplectic_euler rk4'] '" << (dir / "results.csv").string()
+       << "plot for [m in 'event symplectic_euler rk4 dopri54'] '" << (dir / "results.csv").string()
        << "' using (strcol(1) eq '" << scene << "' && strcol(2) eq m ? $4 : 1/0):($5 > 0 ? $5 : 1e-17) "
        << "with linespoints pointsize 1.5 title m\n";
   }
@@ -85,11 +89,15 @@ int main(int argc, char** argv)
     return 0;
   }
   std::vector<double> steps = {1e-2, 5e-3, 2e-3, 1e-3, 5e-4, 2e-4, 1e-4, 5e-5, 2e-5, 1e-5, 5e-6, 2e-6, 1e-6};
+  std::vector<double> tolerances = {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12};
   if (quick)
+  {
     steps = {1e-2, 1e-3, 1e-4};
+    tolerances = {1e-3, 1e-6, 1e-9};
+  }
 
   std::ofstream csv(dir / "results.csv");
-  csv << "scene,method,step_s,seconds,max_error_m,final_error_m,work,notes\n";
+  csv << "scene,method,step_s_or_tolerance,seconds,max_error_m,final_error_m,work,notes\n";
   std::ofstream md(dir / "results.md");
   std::vector<std::string> scene_names;
   std::ostringstream verdicts;
@@ -102,19 +110,21 @@ int main(int argc, char** argv)
     const auto reference = cue_sim::evaluation::referenceRun(scene);
     std::vector<MethodResult> results;
     results.push_back(cue_sim::evaluation::runEventEngine(scene, reference, quick ? 3 : 21));
-    for (const Integrator integrator : {Integrator::SymplecticEuler, Integrator::RungeKutta4})
-      for (double step : steps)
+    for (const Integrator integrator :
+         {Integrator::SymplecticEuler, Integrator::RungeKutta4, Integrator::DormandPrince54})
+      for (double parameter : integrator == Integrator::DormandPrince54 ? tolerances : steps)
       {
-        MethodResult r = cue_sim::evaluation::runStepper(scene, reference, integrator, step, 1);
+        MethodResult r = cue_sim::evaluation::runStepper(scene, reference, integrator, parameter, 1);
         if (!quick && r.seconds < 0.2)
-          r = cue_sim::evaluation::runStepper(scene, reference, integrator, step, 5);
+          r = cue_sim::evaluation::runStepper(scene, reference, integrator, parameter, 5);
         results.push_back(r);
-        std::cerr << "  " << r.method << " h=" << step << ": " << r.seconds << " s, error " << r.max_error << "\n";
+        std::cerr << "  " << r.method << " " << parameter << ": " << r.seconds << " s, error " << r.max_error << "\n";
         if (r.seconds > budget)
           break;
       }
     md << "### " << scene.name << " (" << reference.times.back() << " s to rest)\n\n"
-       << "| method | step [s] | time per shot [s] | largest error [m] | final error [m] | events or steps | notes |\n"
+       << "| method | step [s] or tolerance | time per shot [s] | largest error [m] | final error [m] | events or "
+          "steps | notes |\n"
        << "|---|---|---|---|---|---|---|\n";
     double fastest_1mm = -1;
     for (const auto& r : results)
@@ -148,20 +158,27 @@ int main(int argc, char** argv)
   // How the time-steppers fare on the extreme cases (the event engine's own stability suite is
   // test/physics/test_stability.cpp).
   md << "\n### Time-steppers on extreme cases\n\n"
-     << "| case | method | step [s] | ends | tunnels | deepest overlap [m] | energy gained [J] | slips snapped | "
+     << "| case | method | step [s] or tolerance | ends | tunnels | deepest overlap [m] | energy gained [J] | slips "
+        "snapped | "
         "largest error [m] |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const ShotScene& scene : cue_sim::evaluation::stabilityScenes())
   {
     std::cerr << "work_precision: stability, " << scene.name << "\n";
     const auto reference = cue_sim::evaluation::referenceRun(scene);
-    for (const Integrator integrator : {Integrator::SymplecticEuler, Integrator::RungeKutta4})
-      for (double step : quick ? std::vector<double>{1e-2, 1e-4} : std::vector<double>{1e-2, 1e-3, 1e-4, 1e-5})
+    for (const Integrator integrator :
+         {Integrator::SymplecticEuler, Integrator::RungeKutta4, Integrator::DormandPrince54})
+      for (double step : integrator == Integrator::DormandPrince54 ? std::vector<double>{1e-4, 1e-8}
+                         : quick                                   ? std::vector<double>{1e-2, 1e-4}
+                                                                   : std::vector<double>{1e-2, 1e-3, 1e-4, 1e-5})
       {
         const MethodResult r = cue_sim::evaluation::runStepper(scene, reference, integrator, step, 1);
         md << std::setprecision(3) << "| " << scene.name << " | " << r.method << " | " << step << " | "
-           << (r.stepper.finished ? "yes" : "no") << " | " << (r.stepper.tunnelled ? "yes" : "no") << " | "
-           << r.stepper.max_overlap << " | " << r.stepper.energy_gain << " | " << r.stepper.slip_reversals << " | "
-           << r.max_error << " |\n";
+           << (r.stepper.finished         ? "yes"
+               : r.stepper.stalled        ? "no: the step collapsed"
+               : r.stepper.hit_step_limit ? "no: step limit"
+                                          : "no")
+           << " | " << (r.stepper.tunnelled ? "yes" : "no") << " | " << r.stepper.max_overlap << " | "
+           << r.stepper.energy_gain << " | " << r.stepper.slip_reversals << " | " << r.max_error << " |\n";
       }
   }
   md.close();

@@ -60,8 +60,9 @@ struct MethodResult
 void compareSamples(const Samples& run, const Samples& reference, double& max_error, double& final_error);
 
 MethodResult runEventEngine(const ShotScene& scene, const Samples& reference, int repeats);
-MethodResult runStepper(const ShotScene& scene, const Samples& reference, physics::Integrator integrator, double step,
-                        int repeats);
+/// `parameter`: the step [s] of a fixed stepper, the tolerance of Dormand-Prince.
+MethodResult runStepper(const ShotScene& scene, const Samples& reference, physics::Integrator integrator,
+                        double parameter, int repeats);
 
 }  // namespace evaluation
 }  // namespace cue_sim

@@ -26,6 +26,7 @@ enum class Integrator
 {
   SymplecticEuler,  ///< semi-implicit Euler: v from the old force, then r from the new v
   RungeKutta4,      ///< classical RK4
+  DormandPrince54,  ///< adaptive embedded RK 5(4); contacts and state switches located on its dense output
 };
 
 const char* integratorName(Integrator integrator);
@@ -33,7 +34,8 @@ const char* integratorName(Integrator integrator);
 struct StepperOptions
 {
   Integrator integrator = Integrator::RungeKutta4;
-  double step = 1e-4;       ///< fixed step [s]
+  double step = 1e-4;       ///< fixed step [s] (Euler, RK4); first step (Dormand-Prince)
+  double tolerance = 1e-8;  ///< Dormand-Prince: relative and absolute error allowed per step
   double max_time = 120.0;  ///< [s] of simulated time
   long max_steps = 200000000;
 };
@@ -41,12 +43,15 @@ struct StepperOptions
 struct StepperReport
 {
   long steps = 0;
+  long rejected_steps = 0;  ///< Dormand-Prince steps redone smaller
   long collisions = 0;
-  double max_overlap = 0;   ///< deepest ball-ball or ball-cushion penetration seen [m]
-  bool tunnelled = false;   ///< a ball crossed a cushion line or passed through a ball
-  double energy_gain = 0;   ///< largest rise of kinetic energy over one step or contact [J]
-  long slip_reversals = 0;  ///< slips ended by the clamp or by reversing within a step
-  bool finished = false;    ///< every ball at rest before max_time
+  double max_overlap = 0;       ///< deepest ball-ball or ball-cushion penetration seen [m]
+  bool tunnelled = false;       ///< a ball crossed a cushion line or passed through a ball
+  double energy_gain = 0;       ///< largest rise of kinetic energy over one step or contact [J]
+  long slip_reversals = 0;      ///< slips ended by the clamp or by reversing within a step
+  bool stalled = false;         ///< Dormand-Prince: the step collapsed below 1e-13 s and it gave up
+  bool hit_step_limit = false;  ///< stopped by StepperOptions::max_steps
+  bool finished = false;        ///< every ball at rest before max_time
   double end_time = 0;
 };
 
