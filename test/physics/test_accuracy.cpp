@@ -35,6 +35,23 @@ TEST(Accuracy, TimeSteppersConvergeAtFirstOrderOrBetter)
   }
 }
 
+TEST(Accuracy, DormandPrinceWithLocatedEventsConvergesWithItsTolerance)
+{
+  // Located events remove the first-order error of the friction switch and the contacts.
+  for (const ShotScene& scene : workPrecisionScenes())
+  {
+    if (!scene.single_shot)
+      continue;
+    const Samples reference = referenceRun(scene);
+    const MethodResult loose = runStepper(scene, reference, Integrator::DormandPrince54, 1e-3, 1);
+    const MethodResult tight = runStepper(scene, reference, Integrator::DormandPrince54, 1e-9, 1);
+    EXPECT_LT(tight.max_error, 1e-6) << scene.name;
+    EXPECT_LT(tight.max_error, loose.max_error / 100) << scene.name;
+    EXPECT_LT(tight.stepper.max_overlap, 1e-12) << scene.name;
+    EXPECT_LE(tight.stepper.energy_gain, 0.0) << scene.name;
+  }
+}
+
 TEST(Accuracy, BreaksAgreeWithTheReferenceUntilTheFirstCollisions)
 {
   // Chaos: small differences grow at every collision. Until the cue ball first reaches the
