@@ -225,14 +225,15 @@ bool TableNode::onStrike(Strike::Request& request, Strike::Response& response)
   }
   // Run the shot to rest on a copy first: it answers the request, and a shot the engine
   // cannot finish is refused before it touches the table.
-  PhysicsState prediction = state_;
+  PhysicsState struck = state_;
+  engine_->strike(struck, request.ball_id, strike);
+  const Ball<double>& ball = struck.balls[struck.indexOf(request.ball_id)];
+  response.ball_velocity = toVector3(ball.v);
+  response.ball_angular_velocity = toVector3(ball.w);
+  PhysicsState prediction = struck;
   physics::ShotResult<double> result;
   try
   {
-    engine_->strike(prediction, request.ball_id, strike);
-    const Ball<double>& struck = prediction.balls[prediction.indexOf(request.ball_id)];
-    response.ball_velocity = toVector3(struck.v);
-    response.ball_angular_velocity = toVector3(struck.w);
     result = engine_->simulateToRest(prediction);
   }
   catch (const physics::EventLimitError& e)
@@ -241,7 +242,7 @@ bool TableNode::onStrike(Strike::Request& request, Strike::Response& response)
     response.message = std::string("the shot was not simulated: ") + e.what();
     return true;
   }
-  engine_->strike(state_, request.ball_id, strike);
+  state_ = struck;
   response.success = true;
   response.time_to_rest = result.duration;
   response.num_events = static_cast<uint32_t>(result.events.size());

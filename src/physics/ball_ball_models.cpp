@@ -34,14 +34,15 @@ void FrictionalBallBall<S>::resolve(Ball<S>& a, Ball<S>& b, const PhysicsParams<
     return;
   const S m = p.ball_mass, R = p.ball_radius, inertia = S(0.4) * m * R * R;
   // The impulse J acts on a at its contact point R n, and -J on b at -R n.
-  Vec3<S> impulse = -(S(1) + p.e_ball) * m / S(2) * approach * n;
+  const S normal_impulse = (S(1) + p.e_ball) * m / S(2) * approach;
+  Vec3<S> impulse = -normal_impulse * n;
   // Slip of a's surface past b's at the contact: (v_a + w_a x R n) - (v_b + w_b x (-R n)).
   Vec3<S> slip = a.v - b.v + R * (a.w + b.w).cross(n);
   slip -= slip.dot(n) * n;
   // A tangential impulse J_t on each ball changes the slip by -7 J_t / m in all (1/m for the
   // centre and R^2/I = 5/(2m) for the spin, per ball), so J_t = m |slip| / 7 stops it.
   const S mu = p.mu_ball_a + p.mu_ball_b * std::exp(-p.mu_ball_c * slip.norm());
-  impulse += frictionImpulse(slip, mu * impulse.norm(), S(7) / m);
+  impulse += frictionImpulse(slip, mu * normal_impulse, S(7) / m);
   a.v += impulse / m;
   b.v -= impulse / m;
   // (R n) x J for a and (-R n) x (-J) for b: both spins change alike.

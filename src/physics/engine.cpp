@@ -92,11 +92,12 @@ S contactTime(const Poly4<S>& gap, S limit, S approach_slope, S touch, bool pres
   return firstDownCrossing(relative, S(0), limit);
 }
 
-/// Gap values within this of zero are rounding: 64 ulps of the squared contact distance.
+/// Gap values within this of zero are rounding: 64 ulps of the gap's scale, the contact
+/// distance for a gap in metres, its square for a squared distance.
 template <typename S>
-S touchTolerance(S reach_squared)
+S touchTolerance(S scale)
 {
-  return S(64) * std::numeric_limits<S>::epsilon() * reach_squared;
+  return S(64) * std::numeric_limits<S>::epsilon() * scale;
 }
 
 /// |d(tau)|^2 - reach^2 for the relative position d(tau) = c0 + c1 tau + c2 tau^2.
@@ -299,7 +300,7 @@ bool Engine<S>::inSustainedContact(const Ball<S>& a, const Ball<S>& b) const
   const Vec2<S> d = pa.c0 - pb.c0;
   const Vec2<S> n = d.normalized();
   const Vec2<S> v_rel = pa.c1 - pb.c1;
-  const S closing = -v_rel.dot(n);
+  const S closing = closingSpeed(a, b);
   if (!(closing < S(limits_.sustained_contact_speed)))
     return false;
   // After a bounce that removes the closing speed, the squared distance grows as
@@ -331,8 +332,9 @@ std::vector<Vec3<S>> Engine<S>::touchingWalls(const Ball<S>& ball) const
 }
 
 template <typename S>
-void Engine<S>::resolveImpactGroup(TableState<S>& state, S time, int first, int second) const
+bool Engine<S>::resolveImpactGroup(TableState<S>& state, S time, int first, int second) const
 {
+  const Vec3<S> first_before = state.balls[first].v, second_before = state.balls[second].v;
   const S R = params_.ball_radius;
   // Balls that touch, transitively, the colliding pair take part in one impact.
   const S touching = S(2) * R + S(1e-12);
@@ -426,6 +428,7 @@ void Engine<S>::resolveImpactGroup(TableState<S>& state, S time, int first, int 
     b.w = w[g] / S(orders.size());
     settleMotion(b, R);
   }
+  return state.balls[first].v != first_before || state.balls[second].v != second_before;
 }
 
 template <typename S>
@@ -440,13 +443,14 @@ void Engine<S>::processEvent(TableState<S>& state, const Event<S>& event) const
     case EventKind::BallBall: {
       Ball<S>& other = state.balls[state.indexOf(event.other)];
       other = evolve(other, event.time, params_);
+      // A pressed pair is joined, unless a cushion holds one of them: then the touching group
+      // takes the impact. If that changes nothing, the pair is joined all the same: an event
+      // must change something, or it is found again at the same instant forever.
       const bool sustained = inSustainedContact(ball, other);
-      const Vec3<S> v_before = ball.v;
-      if (!sustained || !touchingWalls(ball).empty() || !touchingWalls(other).empty())
-        resolveImpactGroup(state, event.time, state.indexOf(event.ball), state.indexOf(event.other));
-      // A pressed pair the impact left unchanged (a cushion in the group) is joined all the same:
-      // an event must change something, or it is found again at the same instant forever.
-      if (sustained && (ball.v == v_before || touchingWalls(ball).empty() && touchingWalls(other).empty()))
+      const bool pinned = !touchingWalls(ball).empty() || !touchingWalls(other).empty();
+      const bool changed = (!sustained || pinned) &&
+                           resolveImpactGroup(state, event.time, state.indexOf(event.ball), state.indexOf(event.other));
+      if (sustained && !changed)
       {
         const Vec3<S> v = S(0.5) * (ball.v + other.v), w = S(0.5) * (ball.w + other.w);
         ball.v = other.v = v;

@@ -61,27 +61,26 @@ struct StepperModel
   void clampFriction(std::vector<Ball<double>>& balls, double h, StepperReport& report) const
   {
     const double R = p.ball_radius;
+    // Whether one step of friction would end the ball's motion state.
+    const auto endsWithinStep = [&](const Ball<double>& b) {
+      switch (b.motion)
+      {
+        case Motion::Sliding:
+          return slipVelocity(b.v, b.w, R).norm() <= 3.5 * p.slideDecel() * h;
+        case Motion::Rolling:
+          return b.v.norm() <= p.rollDecel() * h;
+        case Motion::Spinning:
+          return std::abs(b.w.z()) <= p.spinDecel() * h;
+        default:
+          return false;
+      }
+    };
     for (auto& b : balls)
-    {
-      if (b.motion == Motion::Sliding && slipVelocity(b.v, b.w, R).norm() <= 3.5 * p.slideDecel() * h)
+      while (b.moving() && endsWithinStep(b))
       {
-        ++report.slip_reversals;
-        b.w.x() = -b.v.y() / R;
-        b.w.y() = b.v.x() / R;
-        b.motion = b.v.norm() > 0 ? Motion::Rolling : (b.w.z() != 0 ? Motion::Spinning : Motion::Stationary);
+        report.slip_reversals += b.motion == Motion::Sliding;
+        applyTransition(b, p);  // the engine's own switch: roll on, or stop
       }
-      if (b.motion == Motion::Rolling && b.v.norm() <= p.rollDecel() * h)
-      {
-        b.v.setZero();
-        b.w.x() = b.w.y() = 0;
-        b.motion = b.w.z() != 0 ? Motion::Spinning : Motion::Stationary;
-      }
-      if (b.motion == Motion::Spinning && std::abs(b.w.z()) <= p.spinDecel() * h)
-      {
-        b.w.setZero();
-        b.motion = Motion::Stationary;
-      }
-    }
   }
 
   void step(std::vector<Ball<double>>& balls, double h, Integrator integrator) const
@@ -133,29 +132,20 @@ struct StepperModel
       const Ball<double>& old = before[i];
       if (b.motion != old.motion || !b.moving())
         continue;
-      if (b.motion == Motion::Sliding && slipVelocity(b.v, b.w, R).dot(slipVelocity(old.v, old.w, R)) <= 0)
+      const bool reversed =
+          (b.motion == Motion::Sliding && slipVelocity(b.v, b.w, R).dot(slipVelocity(old.v, old.w, R)) <= 0) ||
+          (b.motion == Motion::Rolling && b.v.dot(old.v) <= 0);
+      if (reversed)
       {
-        ++report.slip_reversals;
-        settleMotion(b, R);
-        if (b.motion == Motion::Sliding)  // snap: roll with the velocity it has
-        {
-          b.w.x() = -b.v.y() / R;
-          b.w.y() = b.v.x() / R;
-          b.motion = b.v.norm() > 0 ? Motion::Rolling : (b.w.z() != 0 ? Motion::Spinning : Motion::Stationary);
-        }
+        report.slip_reversals += b.motion == Motion::Sliding;
+        applyTransition(b, p);
       }
-      else if (b.motion == Motion::Rolling && b.v.dot(old.v) <= 0)
+      if (b.moving() && b.w.z() * old.w.z() < 0)  // z-spin ran out within the step
       {
-        b.v.setZero();
-        b.w.x() = b.w.y() = 0;
-        b.motion = b.w.z() != 0 ? Motion::Spinning : Motion::Stationary;
-      }
-      if ((b.motion == Motion::Spinning || b.motion == Motion::Rolling || b.motion == Motion::Sliding) &&
-          b.w.z() * old.w.z() < 0)
-      {
-        b.w.z() = 0;
         if (b.motion == Motion::Spinning)
-          b.motion = Motion::Stationary;
+          applyTransition(b, p);
+        else
+          b.w.z() = 0;
       }
     }
   }

@@ -100,8 +100,8 @@ private:
   /// Unit normals (into play) of the cushions and jaws the ball touches.
   std::vector<Vec3<S>> touchingWalls(const Ball<S>& ball) const;
   /// Resolves a ball-ball impact together with every ball touching the pair, and the cushions
-  /// those balls touch: one impact.
-  void resolveImpactGroup(TableState<S>& state, S time, int first, int second) const;
+  /// those balls touch: one impact. Returns whether the pair's velocities changed.
+  bool resolveImpactGroup(TableState<S>& state, S time, int first, int second) const;
 
   std::shared_ptr<const TableModel> table_;
   PhysicsParams<S> params_;
