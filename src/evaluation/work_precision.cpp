@@ -125,6 +125,20 @@ std::vector<ShotScene> stabilityScenes()
     scenes.push_back(strikeScene("frozen to a cushion, struck into it", true, s, 0, into));
   }
   {
+    // A dead cushion: e_cushion = 0 leaves the ball no normal speed, and its follow keeps
+    // pressing it into the cushion; it slides, then rolls, along the cushion and stops on it
+    // (at x = 0.43 m, short of the corner pocket).
+    TableState<double> s;
+    s.balls.push_back(resting(0, -0.3, 0.9906 / 2 - R - 0.3, R));
+    CueStrike<double> follow = cue;
+    follow.speed = 1.0;
+    follow.phi = 1.2;
+    follow.b = 0.4;
+    ShotScene scene = strikeScene("dead cushion (e = 0), follow into it", true, s, 0, follow);
+    scene.params.e_cushion = 0.0;
+    scenes.push_back(scene);
+  }
+  {
     // The carom table's corner is a right angle: the ball meets both cushions at once.
     const TableModel carom = TableModel::carom("carom", 2.84, 1.42);
     TableState<double> s;

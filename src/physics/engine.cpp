@@ -217,7 +217,7 @@ Event<S> Engine<S>::nextEvent(const TableState<S>& state) const
       const S limit = limitFor(ends[i]);
       const Poly4<S> gap = {seg.normal.dot(pi.c0 - seg.start) - R, seg.normal.dot(pi.c1), seg.normal.dot(pi.c2), S(0),
                             S(0)};
-      const S tau = contactTime(gap, limit, -zeroSpeed<S>(), touchTolerance(R));
+      const S tau = contactTime(gap, limit, -zeroSpeed<S>(), touchTolerance(R), true);
       if (tau <= limit)
       {
         const S along = seg.direction.dot(pi.at(tau) - seg.start);
@@ -233,7 +233,7 @@ Event<S> Engine<S>::nextEvent(const TableState<S>& state) const
       if (cannotMeet<S>(pi.c0 - c.centre, pi.c1, pi.c2, reach, limit))
         continue;
       const S tau = contactTime(distanceGap<S>(pi.c0 - c.centre, pi.c1, pi.c2, reach), limit,
-                                -S(2) * reach * zeroSpeed<S>(), touchTolerance(reach * reach));
+                                -S(2) * reach * zeroSpeed<S>(), touchTolerance(reach * reach), true);
       if (tau <= limit)
         consider(tau, EventKind::BallCircle, bi.id, -1, static_cast<int>(k));
     }
@@ -307,6 +307,71 @@ bool Engine<S>::inSustainedContact(const Ball<S>& a, const Ball<S>& b) const
   // (|v_t|^2 + d.a_rel) tau^2: negative means the accelerations press the balls back together.
   const Vec2<S> v_t = v_rel + closing * n;
   return v_t.squaredNorm() + d.dot(S(2) * (pa.c2 - pb.c2)) < S(0);
+}
+
+template <typename S>
+void Engine<S>::joinPressedCluster(TableState<S>& state, S time, int first, int second) const
+{
+  // Joining only the pair would slow it against a third ball it touches, which would then
+  // close on it and be joined, then the pair again, converging without end (a line of balls
+  // rolling together). So every ball touching the cluster that the joined motion leaves
+  // closing on it, slower than the sustained-contact speed, joins too, until none does.
+  const S touching = S(2) * params_.ball_radius + S(1e-12);
+  std::vector<int> cluster = {first, second};
+  Vec3<S> v = Vec3<S>::Zero(), w = Vec3<S>::Zero();
+  for (bool grown = true; grown;)
+  {
+    v.setZero();
+    w.setZero();
+    for (int c : cluster)
+    {
+      v += state.balls[c].v;
+      w += state.balls[c].w;
+    }
+    v /= S(cluster.size());
+    w /= S(cluster.size());
+    grown = false;
+    for (std::size_t j = 0; j < state.balls.size() && !grown; ++j)
+    {
+      if (!state.balls[j].inPlay() || std::find(cluster.begin(), cluster.end(), static_cast<int>(j)) != cluster.end())
+        continue;
+      const Ball<S> at_time = evolve(state.balls[j], time, params_);
+      for (std::size_t k = 0; k < cluster.size() && !grown; ++k)
+      {
+        Ball<S> joined = state.balls[cluster[k]];
+        joined.v = v;
+        const S closing = closingSpeed(at_time, joined);
+        if ((at_time.r - joined.r).template head<2>().norm() <= touching && closing > -zeroSpeed<S>() &&
+            closing < S(limits_.sustained_contact_speed))
+        {
+          state.balls[j] = at_time;
+          cluster.push_back(static_cast<int>(j));
+          grown = true;
+        }
+      }
+    }
+  }
+  // A wall a cluster ball touches holds the whole cluster as it would hold the ball alone: it
+  // stops the joined motion into it (the wall takes momentum), and the cloth friction it
+  // balances turns the slip into it into spin (holdAgainstWall). Done once for the joined
+  // motion, so the cluster's balls keep moving as one.
+  Ball<S> joined = state.balls[first];
+  joined.v = v;
+  joined.w = w;
+  settleMotion(joined, params_.ball_radius);
+  for (int c : cluster)
+    for (const Vec3<S>& normal : touchingWalls(state.balls[c]))
+    {
+      joined.v -= std::min(joined.v.dot(normal), S(0)) * normal;
+      settleMotion(joined, params_.ball_radius);
+      holdAgainstWall(joined, normal);
+    }
+  for (int c : cluster)
+  {
+    state.balls[c].v = joined.v;
+    state.balls[c].w = joined.w;
+    state.balls[c].motion = joined.motion;
+  }
 }
 
 template <typename S>
@@ -432,6 +497,35 @@ bool Engine<S>::resolveImpactGroup(TableState<S>& state, S time, int first, int 
 }
 
 template <typename S>
+void Engine<S>::holdAgainstWall(Ball<S>& ball, const Vec3<S>& normal) const
+{
+  const S R = params_.ball_radius;
+  const S v_n = ball.v.dot(normal);
+  if (!(std::abs(v_n) < S(limits_.sustained_contact_speed)) || ball.motion != Motion::Sliding)
+    return;
+  Vec3<S> v = ball.v - v_n * normal;
+  const S u_n = slipVelocity(v, ball.w, R).dot(normal);
+  if (!(u_n > S(0)))
+    return;  // the cloth pulls the ball off the wall, or along it: free motion
+  // Cloth friction at the bottom point, balanced by the wall's reaction through the centre
+  // (a normal force on a sphere has no torque), acts on the spin alone: an impulse of
+  // j = (2/5) m u_n against the slip turns w about z x n until the slip has no part into the
+  // wall. It opposes the slip, so it removes energy.
+  //
+  // The slip is left pointing out of the wall by a few ulps rather than exactly along it: a
+  // slip a hair into the wall, by rounding, would be found as the same contact again at the
+  // same instant. (The energy this can add is of the order of m ulp^2, below 1e-28 J.)
+  const Vec3<S> axis = Vec3<S>::UnitZ().cross(normal);
+  const S ulp = zeroSpeed<S>() * (v.norm() + R * ball.w.norm());
+  Vec3<S> w = ball.w + ((u_n + ulp) / R) * axis;
+  for (S nudge = ulp; slipVelocity(v, w, R).dot(normal) > -S(0.5) * ulp; nudge *= S(2))
+    w += (nudge / R) * axis;
+  ball.v = v;
+  ball.w = w;
+  settleMotion(ball, R);
+}
+
+template <typename S>
 void Engine<S>::processEvent(TableState<S>& state, const Event<S>& event) const
 {
   state.event_time = std::max(state.event_time, event.time);
@@ -451,25 +545,20 @@ void Engine<S>::processEvent(TableState<S>& state, const Event<S>& event) const
       const bool changed = (!sustained || pinned) &&
                            resolveImpactGroup(state, event.time, state.indexOf(event.ball), state.indexOf(event.other));
       if (sustained && !changed)
-      {
-        const Vec3<S> v = S(0.5) * (ball.v + other.v), w = S(0.5) * (ball.w + other.w);
-        ball.v = other.v = v;
-        ball.w = other.w = w;
-      }
+        joinPressedCluster(state, event.time, state.indexOf(event.ball), state.indexOf(event.other));
       settleMotion(ball, R);
       settleMotion(other, R);
       break;
     }
-    case EventKind::BallCushion: {
-      const auto& n = obstacles_->segments[event.obstacle].normal;
-      cushion_->resolve(ball, Vec3<S>(n.x(), n.y(), S(0)), params_);
-      settleMotion(ball, R);
-      break;
-    }
+    case EventKind::BallCushion:
     case EventKind::BallCircle: {
-      const Vec2<S> n = (ball.r.template head<2>() - obstacles_->circles[event.obstacle].centre).normalized();
-      cushion_->resolve(ball, Vec3<S>(n.x(), n.y(), S(0)), params_);
+      const Vec2<S> n = event.kind == EventKind::BallCushion
+                            ? obstacles_->segments[event.obstacle].normal
+                            : (ball.r.template head<2>() - obstacles_->circles[event.obstacle].centre).normalized();
+      const Vec3<S> normal(n.x(), n.y(), S(0));
+      cushion_->resolve(ball, normal, params_);
       settleMotion(ball, R);
+      holdAgainstWall(ball, normal);
       break;
     }
     case EventKind::Pocketed:

@@ -143,16 +143,30 @@ std::string TableModel::whyNotPlaceable(const Eigen::Vector2d& p, double R) cons
   const double tolerance = 1e-9;
   std::ostringstream why;
   const Eigen::Vector2d offset = p - cloth_centre_;
+  // The slate goes on past the cushion line into each pocket's mouth, where a ball can hang in
+  // the jaws without dropping: there, beyond the rectangle but near a pocket, the cushion,
+  // jaw and pocket tests below are what bound the cloth.
+  const auto inPocketMouth = [&] {
+    for (const auto& k : pockets_)
+      if ((p - k.centre).norm() < k.radius + 2 * R)
+        return true;
+    return false;
+  };
   if (!std::isfinite(p.x()) || !std::isfinite(p.y()))
     why << "position is not finite";
-  else if (std::abs(offset.x()) > cloth_length_ / 2 - R + tolerance ||
-           std::abs(offset.y()) > cloth_width_ / 2 - R + tolerance)
+  else if ((std::abs(offset.x()) > cloth_length_ / 2 - R + tolerance ||
+            std::abs(offset.y()) > cloth_width_ / 2 - R + tolerance) &&
+           !inPocketMouth())
     why << "position (" << p.x() << ", " << p.y()
         << ") is off the cloth: the centre must be within |x| <= " << cloth_length_ / 2 - R
-        << ", |y| <= " << cloth_width_ / 2 - R << " m of the cloth centre";
+        << ", |y| <= " << cloth_width_ / 2 - R << " m of the cloth centre, or in a pocket's mouth";
   for (const auto& s : segments_)
-    if (why.str().empty() && distanceToSegment(p, s) < R - tolerance)
+  {
+    const double along = (p - s.start).dot(s.direction);
+    const bool behind = along >= 0 && along <= s.length && (p - s.start).dot(s.normal) < R - tolerance;
+    if (why.str().empty() && (behind || distanceToSegment(p, s) < R - tolerance))
       why << "position (" << p.x() << ", " << p.y() << ") overlaps " << s.name;
+  }
   for (const auto& c : circles_)
     if (why.str().empty() && (p - c.centre).norm() < R + c.radius - tolerance)
       why << "position (" << p.x() << ", " << p.y() << ") overlaps " << c.name;

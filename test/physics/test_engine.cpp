@@ -236,6 +236,15 @@ TEST(Engine, InvalidStatesAreNamed)
   s.balls[1].r.x() = 1.9812 / 2 - 0.03;
   s.balls[1].r.y() = 0.9906 / 2 - 0.03;
   EXPECT_NE(engine.whyInvalid(s).find("pocket_foot_ypos"), std::string::npos);
+  // Hanging in the jaws of a corner pocket, past the cushion line (a break left one there).
+  s.balls[1].r.x() = 0.910537;
+  s.balls[1].r.y() = 0.466859;
+  EXPECT_GT(s.balls[1].r.y(), 0.9906 / 2 - p.ball_radius);
+  EXPECT_EQ(engine.whyInvalid(s), "");
+  // As near the pocket, but behind the long cushion that leads to it.
+  s.balls[1].r.x() = 0.88;
+  s.balls[1].r.y() = 0.53;
+  EXPECT_NE(engine.whyInvalid(s).find("overlaps cushion"), std::string::npos) << engine.whyInvalid(s);
   s.balls[1].r.x() = NAN;
   EXPECT_NE(engine.whyInvalid(s).find("finite"), std::string::npos);
   s.balls[1].r.x() = 0.5;

@@ -133,9 +133,10 @@ TEST(Stability, BallRestitutionOne)
   breakWithBallRestitution(1.0);
 }
 
-// Open (issue 4): e_ball = 0 leaves balls of a break pressed together and against cushions;
-// the pressed ball-cushion contact (below) is not resolved yet, and a ball sinks into a cushion.
-TEST(Stability, DISABLED_BallRestitutionZero)
+// e_ball = 0 leaves the balls of a break pressed together in lines and against cushions:
+// inelastic collapse, which the joining of pressed clusters and the holding of balls on walls
+// must end.
+TEST(Stability, BallRestitutionZero)
 {
   breakWithBallRestitution(0.0);
 }
@@ -152,16 +153,67 @@ TEST(Stability, CushionRestitutionOne)
   }
 }
 
-// Open (issue 4): with e_cushion = 0 a ball leaves a cushion with no normal speed, and its spin
-// then drives it into the cushion by cloth friction. That pressed contact needs the cushion's
-// continuous reaction, which neither impulse model gives; the ball sinks a few millimetres in.
-TEST(Stability, DISABLED_CushionRestitutionZero)
+TEST(Stability, CushionRestitutionZero)
 {
+  for (const double e_ball : {0.95, 0.0})
+    for (const std::string ball_model : {"frictional", "frictionless"})
+      for (const std::string cushion_model : {"han2005", "simple"})
+      {
+        SCOPED_TRACE("e_ball " + std::to_string(e_ball) + ", " + ball_model + ", " + cushion_model);
+        PhysicsParams<double> p;
+        p.e_cushion = 0.0;
+        p.e_ball = e_ball;
+        const Engine<double> engine(sevenFoot(), p, {ball_model, cushion_model});
+        TableState<double> s = breakShot(engine, 8.0);
+        runChecked(engine, s);
+      }
+}
+
+TEST(Stability, SpinHoldsADeadBallOnTheCushion)
+{
+  // With e_cushion = 0 a ball with follow, driven straight into a cushion at an angle, keeps
+  // no normal speed, and its follow keeps pressing it into the cushion through cloth
+  // friction. It must stay on the cushion, sliding along it, never inside, until it stops.
   PhysicsParams<double> p;
   p.e_cushion = 0.0;
-  const Engine<double> engine(sevenFoot(), p);
-  TableState<double> s = breakShot(engine, 8.0);
-  runChecked(engine, s);
+  const double hy = 1.42 / 2;
+  for (const std::string model : {"han2005", "simple"})
+  {
+    const Engine<double> engine(carom(), p, {"frictional", model});
+    TableState<double> s;
+    s.balls.push_back(ball(0, 0.0, hy - 0.3, 0, 0, p));
+    CueStrike<double> cue;
+    cue.speed = 2.0;
+    cue.phi = 1.2;  // into the top cushion, 21 degrees off its normal
+    cue.b = 0.4;    // follow
+    engine.strike(s, 0, cue);
+    Event<double> hit;
+    while (hit.kind != EventKind::BallCushion)
+      hit = engine.step(s);
+    const double y_on_cushion = hy - p.ball_radius;
+    runChecked(engine, s);
+    EXPECT_NEAR(s.balls[0].r.y(), y_on_cushion, 1e-9) << model << ": it stops on the cushion";
+    EXPECT_GT(s.balls[0].r.x(), 0.1) << model << ": after sliding along it";
+  }
+}
+
+TEST(Stability, ALinePressedTogetherIsJoinedAtOnce)
+{
+  // Three touching balls moving together along x: the rear one has follow and speeds up, the
+  // middle and front are stunned and slow down. Joining only the pressed pair would slow it
+  // against the front ball, which would be joined next, then the pair again, without end.
+  const PhysicsParams<double> p;
+  const Engine<double> engine(carom(), p, {"frictionless", "simple"});
+  const double R = p.ball_radius;
+  TableState<double> s;
+  for (int i = 0; i < 3; ++i)
+    s.balls.push_back(ball(i, -0.5 + 2 * R * i, 0.0, 0.5, 0.0, p));
+  s.balls[0].w.y() = 3 * 0.5 / R;  // follow: the slip points backwards, friction forwards
+  settleMotion(s.balls[0], R);
+  const int events = runChecked(engine, s);
+  EXPECT_LE(events, 10);
+  EXPECT_NEAR(s.balls[1].r.x() - s.balls[0].r.x(), 2 * R, 1e-9) << "still touching";
+  EXPECT_NEAR(s.balls[2].r.x() - s.balls[1].r.x(), 2 * R, 1e-9) << "still touching";
 }
 
 TEST(Stability, FrozenRackBrokenAtFullSpeed)

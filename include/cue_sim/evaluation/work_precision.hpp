@@ -30,7 +30,8 @@ std::vector<ShotScene> workPrecisionScenes();
 
 /// The extreme cases of the stability report, for the time-steppers: stiff friction (mu_s =
 /// 50), a ball thrown at 50 m/s into a rack, a ball frozen to a cushion struck into it, a ball
-/// into a corner at 45 degrees, Newton's cradle, a ball at 1e-9 m/s.
+/// with follow into a dead cushion (e_cushion = 0), a ball into a corner at 45 degrees,
+/// Newton's cradle, a ball at 1e-9 m/s.
 std::vector<ShotScene> stabilityScenes();
 
 /// Ball centres (xy) at each sample time, in the order of the scene's balls. Pocketed balls

@@ -31,9 +31,12 @@ struct EngineLimits
   double max_shot_time = 600.0;
   /// Two balls that meet closing slower than this [m/s] while their decelerations press them
   /// together are in sustained contact, which an impulse model cannot resolve (it answers with
-  /// endless micro-bounces, inelastic collapse). They are joined instead: both take the mean
-  /// of their velocities and spins. That conserves momentum, cannot add energy, and gives
-  /// both the same acceleration, so they neither part nor overlap until something hits them.
+  /// endless micro-bounces, inelastic collapse). They are joined instead, with every ball the
+  /// join leaves closing on them slower than this: all take the mean of their velocities and
+  /// spins. That conserves momentum, cannot add energy, and gives all the same acceleration,
+  /// so they neither part nor overlap until something hits them. Likewise a sliding ball that
+  /// a cushion or jaw leaves with a normal speed below this while its slip drives it back in
+  /// is held on the wall: the normal speed goes, and the slip into the wall becomes spin.
   double sustained_contact_speed = 1e-4;
 };
 
@@ -97,6 +100,13 @@ private:
   void processEvent(TableState<S>& state, const Event<S>& event) const;
   void pocketBall(TableState<S>& state, Ball<S>& ball, int pocket) const;
   bool inSustainedContact(const Ball<S>& a, const Ball<S>& b) const;
+  /// Gives the pair, and every ball pressed against them in sustained contact, the mean of
+  /// their velocities and spins (EngineLimits::sustained_contact_speed).
+  void joinPressedCluster(TableState<S>& state, S time, int first, int second) const;
+  /// A sliding ball left on a wall with (almost) no normal speed while its slip drives it back
+  /// in stays on the wall: the normal speed is removed and the slip's part into the wall is
+  /// turned into spin by the cloth friction the wall balances.
+  void holdAgainstWall(Ball<S>& ball, const Vec3<S>& normal) const;
   /// Unit normals (into play) of the cushions and jaws the ball touches.
   std::vector<Vec3<S>> touchingWalls(const Ball<S>& ball) const;
   /// Resolves a ball-ball impact together with every ball touching the pair, and the cushions
