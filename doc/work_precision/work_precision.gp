@@ -9,6 +9,7 @@ set ylabel 'largest position error [m]'
 set grid
 set key top right noenhanced
 set yrange [1e-17:1e3]
+set offsets graph 0.04, graph 0.04, 0, 0
 set multiplot layout 2,3 title 'cue\_sim: error against run time (reference: long-double event engine)'
 set title 'single ball sliding to rest' noenhanced
 plot for [m in 'event symplectic_euler rk4 dopri54'] 'doc/work_precision/results.csv' using (strcol(1) eq 'single ball sliding to rest' && strcol(2) eq m ? $4 : 1/0):($5 > 0 ? $5 : 1e-17) with linespoints pointsize 1.5 title m

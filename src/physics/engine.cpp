@@ -80,7 +80,8 @@ constexpr S kEndlessHorizon = S(1e7);
 /// down-crossing of (gap(tau) - gap(0)) / tau, which has no cancellation.
 ///
 /// With `pressing_is_contact`, touching bodies that do not separate while their accelerations
-/// press them together are in contact now (ball pairs, which the engine then joins).
+/// press them together are in contact now: ball pairs, which the engine then joins, and a ball
+/// on a wall, which it holds there.
 template <typename S>
 S contactTime(const Poly4<S>& gap, S limit, S approach_slope, S touch, bool pressing_is_contact = false)
 {
@@ -98,6 +99,14 @@ template <typename S>
 S touchTolerance(S scale)
 {
   return S(64) * std::numeric_limits<S>::epsilon() * scale;
+}
+
+/// A speed [m/s] a few ulps above the rounding of speeds of this size: the least change that
+/// an event's tests are sure to see.
+template <typename S>
+S roundingSpeed(S speed)
+{
+  return S(2) * zeroSpeed<S>() * (S(1) + speed);
 }
 
 /// |d(tau)|^2 - reach^2 for the relative position d(tau) = c0 + c1 tau + c2 tau^2.
@@ -537,15 +546,26 @@ void Engine<S>::processEvent(TableState<S>& state, const Event<S>& event) const
     case EventKind::BallBall: {
       Ball<S>& other = state.balls[state.indexOf(event.other)];
       other = evolve(other, event.time, params_);
-      // A pressed pair is joined, unless a cushion holds one of them: then the touching group
-      // takes the impact. If that changes nothing, the pair is joined all the same: an event
-      // must change something, or it is found again at the same instant forever.
-      const bool sustained = inSustainedContact(ball, other);
-      const bool pinned = !touchingWalls(ball).empty() || !touchingWalls(other).empty();
-      const bool changed = (!sustained || pinned) &&
-                           resolveImpactGroup(state, event.time, state.indexOf(event.ball), state.indexOf(event.other));
-      if (sustained && !changed)
+      // A pressed pair is joined (with its cluster, held by any wall it touches); any other
+      // contact is an impact of the touching group. An event must change something, or it is
+      // found again at the same instant forever.
+      const Vec3<S> ball_before = ball.v, other_before = other.v;
+      if (inSustainedContact(ball, other))
         joinPressedCluster(state, event.time, state.indexOf(event.ball), state.indexOf(event.other));
+      else if (!resolveImpactGroup(state, event.time, state.indexOf(event.ball), state.indexOf(event.other)))
+      {
+        // Found closing by the gap polynomial but not by the impact's own arithmetic: a closing
+        // speed within rounding of zero. The model resolves it alone, or, if even it sees no
+        // approach, the pair is parted by a few ulps of their speed.
+        ball_ball_->resolve(ball, other, params_);
+        if (ball.v == ball_before && other.v == other_before)
+        {
+          const Vec3<S> n = Vec3<S>(other.r.x() - ball.r.x(), other.r.y() - ball.r.y(), S(0)).normalized();
+          const S part = roundingSpeed((ball.v - other.v).norm());
+          ball.v -= S(0.5) * part * n;
+          other.v += S(0.5) * part * n;
+        }
+      }
       settleMotion(ball, R);
       settleMotion(other, R);
       break;
@@ -556,9 +576,18 @@ void Engine<S>::processEvent(TableState<S>& state, const Event<S>& event) const
                             ? obstacles_->segments[event.obstacle].normal
                             : (ball.r.template head<2>() - obstacles_->circles[event.obstacle].centre).normalized();
       const Vec3<S> normal(n.x(), n.y(), S(0));
+      const Vec3<S> v_before = ball.v, w_before = ball.w;
       cushion_->resolve(ball, normal, params_);
       settleMotion(ball, R);
       holdAgainstWall(ball, normal);
+      if (ball.v == v_before && ball.w == w_before)
+      {
+        // Found approaching or pressing by the gap polynomial but by neither the model nor the
+        // hold: within rounding of zero. Moved off by a few ulps of its speed, the ball is not
+        // found at this wall again at this instant.
+        ball.v += roundingSpeed(ball.v.norm()) * normal;
+        settleMotion(ball, R);
+      }
       break;
     }
     case EventKind::Pocketed:

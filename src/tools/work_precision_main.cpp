@@ -46,7 +46,8 @@ void writePlot(const std::filesystem::path& dir, const std::vector<std::string>&
      << "set output '" << (dir / "work_precision.png").string() << "'\n"
      << "set datafile separator ','\nset logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
      << "set xlabel 'run time per shot [s]'\nset ylabel 'largest position error [m]'\nset grid\n"
-     << "set key top right noenhanced\nset yrange [1e-17:1e3]\nset multiplot layout 2,3 title 'cue\\_sim: error "
+     << "set key top right noenhanced\nset yrange [1e-17:1e3]\nset offsets graph 0.04, graph 0.04, 0, 0\nset multiplot "
+        "layout 2,3 title 'cue\\_sim: error "
         "against run time (reference: "
         "long-double event engine)'\n";
   for (const auto& scene : scenes)

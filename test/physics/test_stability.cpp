@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
+#include <random>
 
 #include "cue_sim/physics/engine.hpp"
 #include "cue_sim/physics/motion.hpp"
@@ -167,6 +169,40 @@ TEST(Stability, CushionRestitutionZero)
         TableState<double> s = breakShot(engine, 8.0);
         runChecked(engine, s);
       }
+}
+
+TEST(Stability, RandomBreaksWithLittleRestitutionEnd)
+{
+  // Low restitution makes inelastic collapse common: balls pressed into lines, clusters and
+  // against cushions, and contacts closing within rounding of zero. Random breaks, every model
+  // pair, e from 0 up, random rack gaps, speeds and English, each checked at every event.
+  std::mt19937 rng(2026);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int k = 0; k < 160; ++k)
+  {
+    PhysicsParams<double> p;
+    p.e_ball = k % 3 == 0 ? 0.0 : 0.5 * unit(rng);
+    p.e_cushion = k % 2 == 0 ? 0.0 : 0.5 * unit(rng);
+    const ModelChoice models{k % 4 < 2 ? "frictional" : "frictionless", k % 8 < 4 ? "han2005" : "simple"};
+    SCOPED_TRACE("shot " + std::to_string(k) + ": e_ball " + std::to_string(p.e_ball) + ", e_cushion " +
+                 std::to_string(p.e_cushion) + ", " + models.ball_ball + ", " + models.cushion);
+    const Engine<double> engine(sevenFoot(), p, models);
+    RackOptions options;
+    options.gap = 1e-4 * unit(rng);
+    TableState<double> s = rackLayout<double>(k % 5 ? "eight" : "nine", engine.table(), p.ball_radius, options);
+    CueStrike<double> cue;
+    cue.speed = 1.0 + 11.0 * unit(rng);
+    cue.phi = 0.2 * (unit(rng) - 0.5);
+    cue.theta = 0.3 * unit(rng);
+    cue.a = 0.6 * (unit(rng) - 0.5);
+    cue.b = 0.6 * (unit(rng) - 0.5);
+    if (std::hypot(cue.a, cue.b) > 0.5)
+      cue.a = cue.b = 0.0;
+    engine.strike(s, 0, cue);
+    runChecked(engine, s, 5000);
+    if (HasFailure())
+      break;
+  }
 }
 
 TEST(Stability, SpinHoldsADeadBallOnTheCushion)
