@@ -24,7 +24,7 @@ bool readable(const std::string& path)
 std::string tableUrdfPath(const std::string& name_or_path)
 {
   if (name_or_path.find('/') != std::string::npos ||
-      name_or_path.size() > 5 && name_or_path.substr(name_or_path.size() - 5) == ".urdf")
+      (name_or_path.size() > 5 && name_or_path.substr(name_or_path.size() - 5) == ".urdf"))
   {
     if (!readable(name_or_path))
       throw TableDescriptionError("cannot read URDF file '" + name_or_path + "'");

@@ -91,7 +91,9 @@ inline int checkInvariantsEventByEvent(const Engine<double>& engine, TableState<
     EXPECT_LE(energy_after, energy_before * (1 + 1e-12) + 1e-15) << eventKindName(ev.kind) << " at " << ev.time;
     // ... unless a cushion took part, pinning a ball of the group.
     if (ev.kind == EventKind::BallBall && smallestCushionGap(engine, s, ev.time) > 1e-12)
+    {
       EXPECT_NEAR((momentum() - momentum_before).norm(), 0, 1e-12 * (1 + momentum_before.norm()));
+    }
     EXPECT_GT(smallestGap(engine, s, ev.time), -1e-9) << "overlap at t = " << ev.time;
     EXPECT_LT(deepestCushionPenetration(engine, s, ev.time), 1e-9) << "inside a cushion at t = " << ev.time;
     for (const auto& b : s.balls)
