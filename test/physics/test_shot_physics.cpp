@@ -136,9 +136,13 @@ TEST(ShotPhysics, CutInducedThrowIsAFewDegreesLargestNearHalfBall)
     const double fast = throwAngle(model, p, cut, 5.0) / kDeg;
     EXPECT_LE(fast, slow + 1e-9) << fraction;
     if (fraction <= 0.625)
+    {
       EXPECT_LT(fast, slow - 0.5) << fraction;
+    }
     if (fraction >= 0.875)
+    {
       EXPECT_NEAR(std::tan(slow * kDeg), 2 * std::tan(cut) / (7 * (1 + p.e_ball)), 1e-12) << fraction;
+    }
     if (slow > largest)
     {
       largest = slow;
