@@ -97,12 +97,21 @@ public:
 
 private:
   struct Obstacles;
-  void processEvent(TableState<S>& state, const Event<S>& event) const;
+  /// Event finding (engine_events.cpp): a candidate event of one ball or pair, and each ball's
+  /// path and motion end, computed once per change of the ball.
+  struct Candidate;
+  struct Paths;
+  void computePath(const Ball<S>& ball, std::size_t index, Paths& paths) const;
+  bool pairCandidate(const TableState<S>& state, int a, int b, const Paths& paths, Candidate& out) const;
+  Event<S> eventOf(const TableState<S>& state, const Candidate& candidate) const;
+
+  /// Resolves the event; appends the indices of the balls whose state it changed to `changed`.
+  void processEvent(TableState<S>& state, const Event<S>& event, std::vector<int>* changed = nullptr) const;
   void pocketBall(TableState<S>& state, Ball<S>& ball, int pocket) const;
   bool inSustainedContact(const Ball<S>& a, const Ball<S>& b) const;
   /// Gives the pair, and every ball pressed against them in sustained contact, the mean of
   /// their velocities and spins (EngineLimits::sustained_contact_speed).
-  void joinPressedCluster(TableState<S>& state, S time, int first, int second) const;
+  void joinPressedCluster(TableState<S>& state, S time, int first, int second, std::vector<int>* changed) const;
   /// A sliding ball left on a wall with (almost) no normal speed while its slip drives it back
   /// in stays on the wall: the normal speed is removed and the slip's part into the wall is
   /// turned into spin by the cloth friction the wall balances.
@@ -111,7 +120,7 @@ private:
   std::vector<Vec3<S>> touchingWalls(const Ball<S>& ball) const;
   /// Resolves a ball-ball impact together with every ball touching the pair, and the cushions
   /// those balls touch: one impact. Returns whether the pair's velocities changed.
-  bool resolveImpactGroup(TableState<S>& state, S time, int first, int second) const;
+  bool resolveImpactGroup(TableState<S>& state, S time, int first, int second, std::vector<int>* changed) const;
 
   std::shared_ptr<const TableModel> table_;
   PhysicsParams<S> params_;

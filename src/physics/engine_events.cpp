@@ -1,0 +1,349 @@
+// Finding events: every candidate event of a ball (its transition, a cushion, jaw or pocket)
+// or of a pair of balls is a pure function of those balls' own states, so the candidates can
+// be kept between events and recomputed only for the balls an event changed (advance), or all
+// found afresh (nextEvent), with bit-identical results.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "cue_sim/physics/engine.hpp"
+#include "cue_sim/physics/motion.hpp"
+#include "physics/engine_geometry.hpp"
+
+namespace cue_sim
+{
+namespace physics
+{
+using namespace engine_detail;
+
+/// Candidates at the same instant rank as a scan would meet them: transitions first (by ball),
+/// then each ball's cushions, jaws, pockets and partners, ball by ball.
+template <typename S>
+struct Engine<S>::Candidate
+{
+  enum Rank : int
+  {
+    Transition = 0,
+    Segment = 1,
+    Circle = 2,
+    Pocket = 3,
+    Pair = 4,
+  };
+  S time = infinity<S>();
+  Rank rank = Transition;
+  int ball = -1;   ///< index of the ball whose scan finds it
+  int other = -1;  ///< index of the other ball (Pair), else -1
+  int obstacle = -1;
+
+  bool before(const Candidate& c) const
+  {
+    if (time != c.time)
+      return time < c.time;
+    const bool transition = rank == Transition, c_transition = c.rank == Transition;
+    if (transition != c_transition)
+      return transition;
+    if (ball != c.ball)
+      return ball < c.ball;
+    if (rank != c.rank)
+      return rank < c.rank;
+    return rank == Pair ? other < c.other : obstacle < c.obstacle;
+  }
+};
+
+/// Each ball's path from its own reference time and the absolute end of its motion state.
+template <typename S>
+struct Engine<S>::Paths
+{
+  std::vector<Trajectory<S>> path;
+  std::vector<S> end;
+  /// The ball's earliest event of its own (transition, cushion, jaw, pocket): the ball changes
+  /// then, so nothing of it later than this needs finding yet.
+  std::vector<Candidate> first;
+  explicit Paths(std::size_t n) : path(n), end(n, infinity<S>()), first(n) {}
+};
+
+namespace
+{
+/// The search horizon from `base` for a motion that ends at `end` (absolute).
+template <typename S>
+S horizon(S end, S base)
+{
+  return std::isfinite(static_cast<double>(end)) ? end - base : kEndlessHorizon<S>;
+}
+
+/// The path re-expanded about a time `delta` after its own base.
+template <typename S>
+Trajectory<S> shifted(const Trajectory<S>& path, S delta)
+{
+  if (delta == S(0))
+    return path;
+  Trajectory<S> out;
+  out.c0 = path.at(delta);
+  out.c1 = path.velocityAt(delta);
+  out.c2 = path.c2;
+  return out;
+}
+}  // namespace
+
+template <typename S>
+void Engine<S>::computePath(const Ball<S>& ball, std::size_t index, Paths& paths) const
+{
+  paths.path[index] = trajectoryFrom(ball, ball.time, params_);
+  const S end = ball.moving() ? ball.time + timeToTransition(ball, params_) : infinity<S>();
+  paths.end[index] = end;
+  Candidate& first = paths.first[index];
+  first = Candidate();
+  first.ball = static_cast<int>(index);
+  if (!ball.inPlay())
+    return;
+  first.time = end;  // the transition, or never
+  if (!ball.translating())
+    return;
+  // Each contact is searched only up to the earliest found so far: the horizon shrinks, and
+  // cushions, jaws and pockets out of reach are dismissed by a bound, not solved.
+  const S R = params_.ball_radius;
+  const S base = ball.time;
+  const Trajectory<S>& p = paths.path[index];
+  const auto keep = [&](S tau, typename Candidate::Rank rank, std::size_t k) {
+    Candidate c;
+    c.time = base + tau;
+    c.rank = rank;
+    c.ball = static_cast<int>(index);
+    c.obstacle = static_cast<int>(k);
+    if (c.before(first))
+      first = c;
+  };
+  for (std::size_t k = 0; k < obstacles_->segments.size(); ++k)
+  {
+    const auto& seg = obstacles_->segments[k];
+    const S limit = horizon(first.time, base);
+    const Poly4<S> gap = {seg.normal.dot(p.c0 - seg.start) - R, seg.normal.dot(p.c1), seg.normal.dot(p.c2), S(0), S(0)};
+    const S tau = contactTime(gap, limit, -zeroSpeed<S>(), touchTolerance(R), true);
+    if (tau <= limit)
+    {
+      const S along = seg.direction.dot(p.at(tau) - seg.start);
+      if (along >= S(0) && along <= seg.length)
+        keep(tau, Candidate::Segment, k);
+    }
+  }
+  for (std::size_t k = 0; k < obstacles_->circles.size(); ++k)
+  {
+    const auto& circle = obstacles_->circles[k];
+    const S limit = horizon(first.time, base);
+    const S reach = R + circle.radius;
+    if (cannotMeet<S>(p.c0 - circle.centre, p.c1, p.c2, reach, limit))
+      continue;
+    const S tau = contactTime(distanceGap<S>(p.c0 - circle.centre, p.c1, p.c2, reach), limit,
+                              -S(2) * reach * zeroSpeed<S>(), touchTolerance(reach * reach), true);
+    if (tau <= limit)
+      keep(tau, Candidate::Circle, k);
+  }
+  for (std::size_t k = 0; k < obstacles_->pockets.size(); ++k)
+  {
+    const auto& pocket = obstacles_->pockets[k];
+    const S limit = horizon(first.time, base);
+    if (cannotMeet<S>(p.c0 - pocket.centre, p.c1, p.c2, pocket.radius, limit))
+      continue;
+    const S tau = contactTime(distanceGap<S>(p.c0 - pocket.centre, p.c1, p.c2, pocket.radius), limit, S(0),
+                              touchTolerance(pocket.radius * pocket.radius));
+    if (tau <= limit)
+      keep(tau, Candidate::Pocket, k);
+  }
+}
+
+template <typename S>
+bool Engine<S>::pairCandidate(const TableState<S>& state, int a, int b, const Paths& paths, Candidate& out) const
+{
+  const Ball<S>& ba = state.balls[a];
+  const Ball<S>& bb = state.balls[b];
+  if (!ba.inPlay() || !bb.inPlay() || (!ba.translating() && !bb.translating()))
+    return false;
+  // The pair belongs to the scan of its translating ball, the lower index if both translate.
+  int i = a, j = b;
+  if (!ba.translating() || (bb.translating() && b < a))
+    std::swap(i, j);
+  const Ball<S>& bi = state.balls[i];
+  const Ball<S>& bj = state.balls[j];
+  // Both paths about the later of the two reference times: a function of the pair alone.
+  const S base = std::max(bi.time, bj.time);
+  const Trajectory<S> pi = shifted(paths.path[i], base - bi.time);
+  const Trajectory<S> pj = shifted(paths.path[j], base - bj.time);
+  // Nothing later than either ball's own next event needs finding: that event changes it.
+  const S limit = horizon(std::min(paths.first[i].time, paths.first[j].time), base);
+  const S R = params_.ball_radius;
+  const Vec2<S> c0 = pi.c0 - pj.c0, c1 = pi.c1 - pj.c1, c2 = pi.c2 - pj.c2;
+  if (cannotMeet<S>(c0, c1, c2, S(2) * R, limit))
+    return false;
+  const S tau = contactTime(distanceGap<S>(c0, c1, c2, S(2) * R), limit, -S(4) * R * zeroSpeed<S>(),
+                            touchTolerance(S(4) * R * R), true);
+  if (!(tau <= limit))
+    return false;
+  out.time = base + tau;
+  out.rank = Candidate::Pair;
+  out.ball = i;
+  out.other = j;
+  out.obstacle = -1;
+  return true;
+}
+
+template <typename S>
+Event<S> Engine<S>::eventOf(const TableState<S>& state, const Candidate& c) const
+{
+  Event<S> e;
+  e.time = c.time;
+  e.ball = state.balls[c.ball].id;
+  switch (c.rank)
+  {
+    case Candidate::Transition: {
+      // Which transition it is follows from applying it to a copy.
+      Ball<S> copy = evolve(state.balls[c.ball], c.time, params_);
+      e.kind = applyTransition(copy, params_);
+      break;
+    }
+    case Candidate::Segment:
+      e.kind = EventKind::BallCushion;
+      e.obstacle = c.obstacle;
+      break;
+    case Candidate::Circle:
+      e.kind = EventKind::BallCircle;
+      e.obstacle = c.obstacle;
+      break;
+    case Candidate::Pocket:
+      e.kind = EventKind::Pocketed;
+      e.obstacle = c.obstacle;
+      break;
+    case Candidate::Pair:
+      e.kind = EventKind::BallBall;
+      e.other = state.balls[c.other].id;
+      break;
+  }
+  return e;
+}
+
+template <typename S>
+Event<S> Engine<S>::nextEvent(const TableState<S>& state) const
+{
+  const std::size_t n = state.balls.size();
+  Paths paths(n);
+  for (std::size_t i = 0; i < n; ++i)
+    computePath(state.balls[i], i, paths);
+  Candidate best;
+  bool found = false;
+  const auto keep = [&](const Candidate& c) {
+    if (!found || c.before(best))
+    {
+      best = c;
+      found = true;
+    }
+  };
+  for (std::size_t i = 0; i < n; ++i)
+    if (std::isfinite(static_cast<double>(paths.first[i].time)))
+      keep(paths.first[i]);
+  Candidate pair;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      if (pairCandidate(state, static_cast<int>(i), static_cast<int>(j), paths, pair))
+        keep(pair);
+  return found ? eventOf(state, best) : Event<S>();
+}
+
+namespace
+{
+/// A candidate in the queue, stamped with the versions of the balls it was computed from: it
+/// is stale once either ball has changed since.
+template <typename Candidate>
+struct QueuedCandidate
+{
+  Candidate candidate;
+  unsigned version = 0, other_version = 0;
+};
+}  // namespace
+
+template <typename S>
+void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* events) const
+{
+  const std::size_t n = state.balls.size();
+  Paths paths(n);
+  std::vector<unsigned> version(n, 0);
+  using Entry = QueuedCandidate<Candidate>;
+  std::vector<Entry> queue;
+  const auto later = [](const Entry& x, const Entry& y) { return y.candidate.before(x.candidate); };
+  const auto push = [&](const Candidate& c) {
+    queue.push_back({c, version[c.ball], c.other >= 0 ? version[c.other] : 0u});
+    std::push_heap(queue.begin(), queue.end(), later);
+  };
+  const auto stale = [&](const Entry& e) {
+    return e.version != version[e.candidate.ball] ||
+           (e.candidate.other >= 0 && e.other_version != version[e.candidate.other]);
+  };
+  Candidate pair;
+  for (std::size_t i = 0; i < n; ++i)
+    computePath(state.balls[i], i, paths);
+  const auto pushOwn = [&](std::size_t i) {
+    if (std::isfinite(static_cast<double>(paths.first[i].time)))
+      push(paths.first[i]);
+  };
+  for (std::size_t i = 0; i < n; ++i)
+    pushOwn(i);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      if (pairCandidate(state, static_cast<int>(i), static_cast<int>(j), paths, pair))
+        push(pair);
+
+  std::vector<int> changed;
+  std::vector<char> is_changed(n, 0);
+  long processed = 0;
+  for (;;)
+  {
+    while (!queue.empty() && stale(queue.front()))
+    {
+      std::pop_heap(queue.begin(), queue.end(), later);
+      queue.pop_back();
+    }
+    if (queue.empty() || queue.front().candidate.time > t_end)
+      break;
+    const Event<S> event = eventOf(state, queue.front().candidate);
+    std::pop_heap(queue.begin(), queue.end(), later);
+    queue.pop_back();
+    if (++processed > limits_.max_events)
+    {
+      std::ostringstream why;
+      why << "event limit reached: more than " << limits_.max_events
+          << " events before t = " << static_cast<double>(event.time) << " s (EngineLimits::max_events)";
+      throw EventLimitError(why.str());
+    }
+    changed.clear();
+    processEvent(state, event, &changed);
+    if (events)
+      events->push_back(event);
+    // Only the balls the event changed get new candidates; every other candidate stands.
+    std::sort(changed.begin(), changed.end());
+    changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
+    for (int k : changed)
+    {
+      ++version[k];
+      is_changed[k] = 1;
+      computePath(state.balls[k], k, paths);
+    }
+    for (int k : changed)
+    {
+      pushOwn(k);
+      for (std::size_t o = 0; o < n; ++o)
+        if (static_cast<int>(o) != k && !(is_changed[o] && static_cast<int>(o) < k) &&
+            pairCandidate(state, k, static_cast<int>(o), paths, pair))
+          push(pair);
+    }
+    for (int k : changed)
+      is_changed[k] = 0;
+  }
+  state.time = std::max(state.time, t_end);
+}
+
+template Event<double> Engine<double>::nextEvent(const TableState<double>&) const;
+template Event<long double> Engine<long double>::nextEvent(const TableState<long double>&) const;
+template void Engine<double>::advance(TableState<double>&, double, std::vector<Event<double>>*) const;
+template void Engine<long double>::advance(TableState<long double>&, long double,
+                                           std::vector<Event<long double>>*) const;
+
+}  // namespace physics
+}  // namespace cue_sim

@@ -1,0 +1,107 @@
+// The engine's geometry in its scalar type, and the gap helpers that event finding and contact
+// resolution share (internal to the engine's translation units).
+#pragma once
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "cue_sim/physics/engine.hpp"
+#include "cue_sim/physics/polynomial.hpp"
+
+namespace cue_sim
+{
+namespace physics
+{
+/// The table's geometry converted once to the engine's scalar type.
+template <typename S>
+struct Engine<S>::Obstacles
+{
+  struct Segment
+  {
+    Vec2<S> start, direction, normal;
+    S length;
+  };
+  struct Circle
+  {
+    Vec2<S> centre;
+    S radius;
+  };
+  std::vector<Segment> segments;
+  std::vector<Circle> circles;  // jaws and cushion end caps
+  std::vector<Circle> pockets;
+};
+
+namespace engine_detail
+{
+/// Horizon for balls whose motion never ends (no friction): far beyond any shot, and fixed,
+/// so that predictions never depend on how far a caller asks to advance.
+template <typename S>
+constexpr S kEndlessHorizon = S(1e7);
+
+/// Time from the base at which a gap function (positive while apart) closes with the bodies
+/// approaching, within (0, limit]; 0 if they touch and approach now; +inf if never.
+/// `approach_slope` is the gap's rate of change that counts as approaching; `touch` is the gap
+/// within which two bodies count as touching (the rounding of the gap's constant term).
+///
+/// Bodies that touch and separate slowly may be pushed back together by their accelerations
+/// (two slow balls rolling in slightly different directions) before the computed gap ever
+/// becomes positive. For them the contact is when the gap returns to its starting value: the
+/// down-crossing of (gap(tau) - gap(0)) / tau, which has no cancellation.
+///
+/// With `pressing_is_contact`, touching bodies that do not separate while their accelerations
+/// press them together are in contact now: ball pairs, which the engine then joins, and a ball
+/// on a wall, which it holds there.
+template <typename S>
+S contactTime(const Poly4<S>& gap, S limit, S approach_slope, S touch, bool pressing_is_contact = false)
+{
+  if (gap[0] > touch)
+    return firstDownCrossing(gap, S(0), limit);
+  if (gap[1] < approach_slope || (pressing_is_contact && gap[1] <= S(0) && gap[2] < S(0)))
+    return S(0);
+  const Poly4<S> relative = {gap[1], gap[2], gap[3], gap[4], S(0)};
+  return firstDownCrossing(relative, S(0), limit);
+}
+
+/// Gap values within this of zero are rounding: 64 ulps of the gap's scale, the contact
+/// distance for a gap in metres, its square for a squared distance.
+template <typename S>
+S touchTolerance(S scale)
+{
+  return S(64) * std::numeric_limits<S>::epsilon() * scale;
+}
+
+/// A speed [m/s] a few ulps above the rounding of speeds of this size: the least change that
+/// an event's tests are sure to see.
+template <typename S>
+S roundingSpeed(S speed)
+{
+  return S(2) * zeroSpeed<S>() * (S(1) + speed);
+}
+
+/// |d(tau)|^2 - reach^2 for the relative position d(tau) = c0 + c1 tau + c2 tau^2.
+template <typename S>
+Poly4<S> distanceGap(const Vec2<S>& c0, const Vec2<S>& c1, const Vec2<S>& c2, S reach)
+{
+  return {c0.squaredNorm() - reach * reach, S(2) * c0.dot(c1), c1.squaredNorm() + S(2) * c0.dot(c2), S(2) * c1.dot(c2),
+          c2.squaredNorm()};
+}
+
+/// True if two bodies reach-apart at the base cannot meet within `limit`: a cheap bound on
+/// the relative travel, so that far pairs never reach the quartic solver.
+template <typename S>
+bool cannotMeet(const Vec2<S>& c0, const Vec2<S>& c1, const Vec2<S>& c2, S reach, S limit)
+{
+  return c0.norm() - reach > limit * (c1.norm() + limit * c2.norm());
+}
+/// Speed [m/s] at which a is closing on b along their line of centres (negative: parting).
+template <typename S>
+S closingSpeed(const Ball<S>& a, const Ball<S>& b)
+{
+  const Vec2<S> n = (b.r - a.r).template head<2>().normalized();
+  return (a.v - b.v).template head<2>().dot(n);
+}
+}  // namespace engine_detail
+
+}  // namespace physics
+}  // namespace cue_sim
