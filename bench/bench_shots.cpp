@@ -1,59 +1,39 @@
-// Time per shot for fixed scenes (Google Benchmark). `rosrun cue_sim bench`.
+// Time per shot of the fixed scenes in bench_scenes.hpp (Google Benchmark): `rosrun cue_sim
+// bench`. Each reports the time per shot, the events per shot and the time per event.
 #include <benchmark/benchmark.h>
 
-#include <memory>
-
-#include "cue_sim/physics/engine.hpp"
-#include "cue_sim/physics/rack.hpp"
+#include "bench_scenes.hpp"
 
 namespace
 {
-using namespace cue_sim::physics;
+using namespace cue_sim::bench;
 
-std::shared_ptr<const TableModel> sevenFoot()
+void runScene(benchmark::State& bench, const std::string& name)
 {
-  static const auto table = std::make_shared<const TableModel>(TableModel::pool("7ft", 1.9812, 0.9906, 0.118, 0.137));
-  return table;
-}
-
-/// Runs `rack` struck by the cue ball at `speed` along phi to rest, once per iteration.
-void runShot(benchmark::State& bench, const std::string& rack, double speed, double phi)
-{
-  const PhysicsParams<double> params;
-  const Engine<double> engine(sevenFoot(), params);
-  TableState<double> start = rackLayout<double>(rack, engine.table(), params.ball_radius);
-  CueStrike<double> cue;
-  cue.speed = speed;
-  cue.phi = phi;
-  engine.strike(start, 0, cue);
+  const BenchScene scene = benchScene(name);
   std::size_t events = 0;
   for (auto _ : bench)
   {
-    TableState<double> state = start;
-    const ShotResult<double> result = engine.simulateToRest(state);
+    TableState<double> state = scene.state;
+    const ShotResult<double> result = scene.engine->simulateToRest(state);
     events = result.events.size();
     benchmark::DoNotOptimize(state.balls.data());
   }
+  bench.counters["balls"] = static_cast<double>(scene.state.balls.size());
   bench.counters["events_per_shot"] = static_cast<double>(events);
   bench.counters["time_per_event"] = benchmark::Counter(static_cast<double>(events) * bench.iterations(),
                                                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  bench.counters["events_per_second"] =
+      benchmark::Counter(static_cast<double>(events) * bench.iterations(), benchmark::Counter::kIsRate);
 }
 
-void EightBallBreak(benchmark::State& s)
-{
-  runShot(s, "eight", 8.0, 0.0);
-}
-void NineBallBreak(benchmark::State& s)
-{
-  runShot(s, "nine", 8.0, 0.0);
-}
-void SingleBallToRest(benchmark::State& s)
-{
-  runShot(s, "empty", 3.0, 0.4);
-}
-BENCHMARK(EightBallBreak)->Unit(benchmark::kMicrosecond);
-BENCHMARK(NineBallBreak)->Unit(benchmark::kMicrosecond);
-BENCHMARK(SingleBallToRest)->Unit(benchmark::kMicrosecond);
+const int registered = [] {
+  for (const auto& [name, build] : benchScenes())
+    benchmark::RegisterBenchmark(name.c_str(), [name = name](benchmark::State& s) {
+      runScene(s, name);
+    })->Unit(benchmark::kMicrosecond);
+  return 0;
+}();
 }  // namespace
 
 BENCHMARK_MAIN();

@@ -8,8 +8,10 @@ catkin_add_gtest(physics_tests
   test/physics/test_engine.cpp
   test/physics/test_shot_physics.cpp
   test/physics/test_stability.cpp
+  test/physics/test_golden.cpp
 )
 target_link_libraries(physics_tests cue_sim_physics gtest_main)
+target_compile_definitions(physics_tests PRIVATE CUE_SIM_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 
 catkin_add_gtest(accuracy_tests test/physics/test_accuracy.cpp)
 target_link_libraries(accuracy_tests cue_sim_evaluation gtest_main)

@@ -2,6 +2,7 @@
 // resolution share (internal to the engine's translation units).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -87,12 +88,18 @@ Poly4<S> distanceGap(const Vec2<S>& c0, const Vec2<S>& c1, const Vec2<S>& c2, S 
           c2.squaredNorm()};
 }
 
-/// True if two bodies reach-apart at the base cannot meet within `limit`: a cheap bound on
-/// the relative travel, so that far pairs never reach the quartic solver.
+/// True if two bodies whose relative position is d(tau) = c0 + c1 tau + c2 tau^2 cannot come
+/// within `reach` for tau in [0, limit]: a cheap bound, so that pairs that pass wide or part
+/// never reach the quartic solver. The straight part c0 + c1 tau comes no closer than its
+/// closest approach within the interval, and the curved part adds at most |c2| limit^2. A
+/// nanometre of margin keeps rounding from dismissing a grazing contact.
 template <typename S>
 bool cannotMeet(const Vec2<S>& c0, const Vec2<S>& c1, const Vec2<S>& c2, S reach, S limit)
 {
-  return c0.norm() - reach > limit * (c1.norm() + limit * c2.norm());
+  const S speed2 = c1.squaredNorm();
+  S tau = speed2 > S(0) ? -c0.dot(c1) / speed2 : S(0);
+  tau = std::min(std::max(tau, S(0)), limit);
+  return (c0 + tau * c1).norm() - limit * limit * c2.norm() > reach + S(1e-9);
 }
 /// Speed [m/s] at which a is closing on b along their line of centres (negative: parting).
 template <typename S>

@@ -1,6 +1,7 @@
 #include "cue_sim/physics/rack.hpp"
 
 #include <cmath>
+#include <random>
 #include <stdexcept>
 
 namespace cue_sim
@@ -45,15 +46,33 @@ TableState<S> rackLayout(const std::string& name, const TableModel& table, S bal
   state.balls.push_back(restingBall<S>(0, centre.x() - quarter, centre.y(), ball_radius));
   if (!rows)
     return state;
+  if (!(options.jitter >= 0 && options.jitter <= options.gap / 2))
+    throw std::invalid_argument("rack jitter must be in [0, gap / 2] so that no balls overlap");
   const double spacing = 2 * static_cast<double>(ball_radius) + options.gap;
   const double row_step = spacing * std::sqrt(3.0) / 2;
+  // std::mt19937 and the arithmetic below are fully specified, so a seed gives the same rack
+  // everywhere (std:: distributions are not, and are not used).
+  std::mt19937 random(options.seed);
+  const auto unit = [&] { return static_cast<double>(random()) / 4294967296.0; };
   for (std::size_t k = 0; k < rows->size(); ++k)
   {
     const auto& row = (*rows)[k];
     for (std::size_t j = 0; j < row.size(); ++j)
     {
-      const double y = (static_cast<double>(j) - (row.size() - 1) / 2.0) * spacing;
-      state.balls.push_back(restingBall<S>(row[j], centre.x() + quarter + k * row_step, centre.y() + y, ball_radius));
+      double x = centre.x() + quarter + k * row_step;
+      double y = centre.y() + (static_cast<double>(j) - (row.size() - 1) / 2.0) * spacing;
+      if (options.jitter > 0 && !(k == 0 && j == 0))  // the apex stays on the foot spot
+      {
+        double dx, dy;  // uniform in the disc of radius jitter, by rejection (no libm)
+        do
+        {
+          dx = (2 * unit() - 1) * options.jitter;
+          dy = (2 * unit() - 1) * options.jitter;
+        } while (dx * dx + dy * dy > options.jitter * options.jitter);
+        x += dx;
+        y += dy;
+      }
+      state.balls.push_back(restingBall<S>(row[j], x, y, ball_radius));
     }
   }
   return state;

@@ -16,6 +16,11 @@ struct RackOptions
   /// Gap [m] between neighbouring balls of the triangle or diamond (a tight rack has small
   /// gaps; 0 freezes the balls together).
   double gap = 1e-5;
+  /// Largest random displacement [m] of each ball but the apex, in [0, gap / 2]: the uneven
+  /// gaps of a real rack. 0 gives the perfect triangle.
+  double jitter = 0.0;
+  /// Seed of the displacements: the same seed gives the same rack on every machine.
+  unsigned seed = 0;
 };
 
 /// The names rackLayout() accepts.

@@ -1,0 +1,194 @@
+// The fixed scenes of the speed benchmarks (issue 5), shared by `bench` (Google Benchmark,
+// wall time) and `bench_scene` (one shot, for callgrind instruction counts).
+#pragma once
+
+#include <cmath>
+#include <functional>
+#include <map>
+#include <memory>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+#include "cue_sim/physics/engine.hpp"
+#include "cue_sim/physics/motion.hpp"
+#include "cue_sim/physics/rack.hpp"
+
+namespace cue_sim
+{
+namespace bench
+{
+using namespace physics;
+
+/// A shot ready to run to rest: the engine it runs on and the struck table.
+struct BenchScene
+{
+  std::shared_ptr<const Engine<double>> engine;
+  TableState<double> state;
+};
+
+inline std::shared_ptr<const TableModel> sevenFoot()
+{
+  static const auto table = std::make_shared<const TableModel>(TableModel::pool("7ft", 1.9812, 0.9906, 0.118, 0.137));
+  return table;
+}
+
+/// Default models (frictional ball-ball, Han 2005 cushions, jaws) on `table`.
+inline std::shared_ptr<const Engine<double>> defaultEngine(std::shared_ptr<const TableModel> table,
+                                                           long max_events = EngineLimits().max_events)
+{
+  EngineLimits limits;
+  limits.max_events = max_events;
+  return std::make_shared<const Engine<double>>(std::move(table), PhysicsParams<double>(), ModelChoice(), limits);
+}
+
+/// A real rack's uneven gaps: 0.2 mm nominal, each ball moved up to 0.1 mm (fixed seed).
+inline RackOptions realRack()
+{
+  RackOptions rack;
+  rack.gap = 2e-4;
+  rack.jitter = 1e-4;
+  rack.seed = 2026;
+  return rack;
+}
+
+inline BenchScene struck(std::shared_ptr<const Engine<double>> engine, TableState<double> state, double speed,
+                         double phi, double a = 0, double b = 0)
+{
+  CueStrike<double> cue;
+  cue.speed = speed;
+  cue.phi = phi;
+  cue.a = a;
+  cue.b = b;
+  engine->strike(state, 0, cue);
+  return {std::move(engine), std::move(state)};
+}
+
+/// The cue ball sent off at `speed` [m/s] along `phi`, without spin (a centre hit with a level
+/// cue): how fast the cue ball meets the rack is what defines a break.
+inline BenchScene sent(std::shared_ptr<const Engine<double>> engine, TableState<double> state, double speed, double phi)
+{
+  Ball<double>& cue_ball = state.balls[state.indexOf(0)];
+  cue_ball.v = Vec3<double>(speed * std::cos(phi), speed * std::sin(phi), 0);
+  settleMotion(cue_ball, engine->params().ball_radius);
+  return {std::move(engine), std::move(state)};
+}
+
+/// Balls at rest, placed at random (fixed seed) and clear of each other, `count` per 7-ft
+/// table area on a pool table scaled so that the density stays that of 16 balls on a 7-ft
+/// table; every ball is then sent off at 0.5 to 2 m/s in a random direction with random
+/// English, as after a break, and the scene runs to rest.
+inline BenchScene scaling(int count)
+{
+  const double scale = std::sqrt(count / 16.0);
+  const auto table =
+      std::make_shared<const TableModel>(TableModel::pool("scaled", 1.9812 * scale, 0.9906 * scale, 0.118, 0.137));
+  auto engine = defaultEngine(table, 10'000'000);
+  const double R = engine->params().ball_radius;
+  std::mt19937 random(static_cast<unsigned>(count));
+  const auto unit = [&] { return static_cast<double>(random()) / 4294967296.0; };
+  TableState<double> state;
+  const double hx = table->clothLength() / 2 - 2 * R, hy = table->clothWidth() / 2 - 2 * R;
+  while (static_cast<int>(state.balls.size()) < count)
+  {
+    Ball<double> b;
+    b.id = static_cast<int>(state.balls.size());
+    b.r = Vec3<double>((2 * unit() - 1) * hx, (2 * unit() - 1) * hy, R);
+    state.balls.push_back(b);
+    if (!engine->whyInvalid(state).empty())
+      state.balls.pop_back();
+  }
+  for (auto& b : state.balls)
+  {
+    const double speed = 0.5 + 1.5 * unit(), heading = 2 * M_PI * unit();
+    b.v = Vec3<double>(speed * std::cos(heading), speed * std::sin(heading), 0);
+    b.w = Vec3<double>((unit() - 0.5) * 40, (unit() - 0.5) * 40, (unit() - 0.5) * 40);
+    settleMotion(b, R);
+  }
+  return {engine, state};
+}
+
+/// Every scene by name, built on demand.
+inline const std::map<std::string, std::function<BenchScene()>>& benchScenes()
+{
+  static const std::map<std::string, std::function<BenchScene()>> scenes = {
+      {"eight_ball_break",
+       [] {
+         auto engine = defaultEngine(sevenFoot());
+         return sent(engine, rackLayout<double>("eight", engine->table(), engine->params().ball_radius, realRack()),
+                     8.0, 0.0);
+       }},
+      {"nine_ball_break",
+       [] {
+         auto engine = defaultEngine(sevenFoot());
+         return sent(engine, rackLayout<double>("nine", engine->table(), engine->params().ball_radius, realRack()), 8.0,
+                     0.0);
+       }},
+      {"single_ball_stun",
+       [] {
+         auto engine = defaultEngine(sevenFoot());
+         return struck(engine, rackLayout<double>("empty", engine->table(), engine->params().ball_radius), 3.0, 0.4);
+       }},
+      {"single_ball_english",
+       [] {
+         auto engine = defaultEngine(sevenFoot());
+         return struck(engine, rackLayout<double>("empty", engine->table(), engine->params().ball_radius), 3.0, 0.4,
+                       0.3, -0.3);
+       }},
+      // The same shot with the 8-ball rack resting at the foot: the cue ball goes to the head
+      // end and never reaches it.
+      {"single_ball_among_15_resting",
+       [] {
+         auto engine = defaultEngine(sevenFoot());
+         return struck(engine, rackLayout<double>("eight", engine->table(), engine->params().ball_radius, realRack()),
+                       1.0, M_PI - 0.4);
+       }},
+      {"single_ball_alone_same_shot",
+       [] {
+         auto engine = defaultEngine(sevenFoot());
+         return struck(engine, rackLayout<double>("empty", engine->table(), engine->params().ball_radius), 1.0,
+                       M_PI - 0.4);
+       }},
+      // A half-ball cut: the object ball 0.6 m ahead, its centre R to the side of the line.
+      {"cut_shot",
+       [] {
+         auto engine = defaultEngine(sevenFoot());
+         TableState<double> state = rackLayout<double>("empty", engine->table(), engine->params().ball_radius);
+         Ball<double> object = state.balls[0];
+         object.id = 1;
+         object.r += Vec3<double>(0.6, engine->params().ball_radius, 0);
+         state.balls.push_back(object);
+         return struck(engine, state, 2.0, 0.0);
+       }},
+      {"carom_three_balls",
+       [] {
+         auto engine = defaultEngine(std::make_shared<const TableModel>(TableModel::carom("carom", 2.84, 1.42)));
+         TableState<double> state;
+         for (int id = 0; id < 3; ++id)
+         {
+           Ball<double> b;
+           b.id = id;
+           b.r = Vec3<double>(-0.5 + 0.5 * id, 0.1 * id - 0.1, engine->params().ball_radius);
+           state.balls.push_back(b);
+         }
+         return struck(engine, state, 4.0, 0.15, 0.2, 0.2);
+       }},
+      {"scaling_16", [] { return scaling(16); }},
+      {"scaling_64", [] { return scaling(64); }},
+      {"scaling_256", [] { return scaling(256); }},
+      {"scaling_1024", [] { return scaling(1024); }},
+  };
+  return scenes;
+}
+
+inline BenchScene benchScene(const std::string& name)
+{
+  const auto& scenes = benchScenes();
+  const auto found = scenes.find(name);
+  if (found == scenes.end())
+    throw std::invalid_argument("unknown scene '" + name + "'");
+  return found->second();
+}
+
+}  // namespace bench
+}  // namespace cue_sim
