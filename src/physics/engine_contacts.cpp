@@ -47,6 +47,16 @@ bool Engine<S>::inSustainedContact(const Ball<S>& a, const Ball<S>& b) const
 }
 
 template <typename S>
+bool Engine<S>::cannotReach(const Ball<S>& ball, const Vec3<S>& point, S distance, S time) const
+{
+  // No ball speeds up by more than the sliding deceleration, so by `time` it has moved at most
+  // |v| dt + a dt^2 / 2 (with a nanometre for rounding): a bound that spares evolving it.
+  const S dt = time - ball.time;
+  const S travel = ball.moving() ? dt * (ball.v.norm() + S(0.5) * params_.slideDecel() * dt) : S(0);
+  return (ball.r - point).template head<2>().norm() > distance + travel + S(1e-9);
+}
+
+template <typename S>
 void Engine<S>::joinPressedCluster(TableState<S>& state, S time, int first, int second, std::vector<int>* changed) const
 {
   // Joining only the pair would slow it against a third ball it touches, which would then
@@ -71,6 +81,11 @@ void Engine<S>::joinPressedCluster(TableState<S>& state, S time, int first, int 
     for (std::size_t j = 0; j < state.balls.size() && !grown; ++j)
     {
       if (!state.balls[j].inPlay() || std::find(cluster.begin(), cluster.end(), static_cast<int>(j)) != cluster.end())
+        continue;
+      bool near = false;
+      for (int c : cluster)
+        near = near || !cannotReach(state.balls[j], state.balls[c].r, touching, time);
+      if (!near)
         continue;
       const Ball<S> at_time = evolve(state.balls[j], time, params_);
       for (std::size_t k = 0; k < cluster.size() && !grown; ++k)
@@ -146,7 +161,8 @@ bool Engine<S>::resolveImpactGroup(TableState<S>& state, S time, int first, int 
   for (std::size_t k = 0; k < group.size(); ++k)
     for (std::size_t j = 0; j < state.balls.size(); ++j)
     {
-      if (!state.balls[j].inPlay() || std::find(group.begin(), group.end(), static_cast<int>(j)) != group.end())
+      if (!state.balls[j].inPlay() || std::find(group.begin(), group.end(), static_cast<int>(j)) != group.end() ||
+          cannotReach(state.balls[j], state.balls[group[k]].r, touching, time))
         continue;
       const Ball<S> at_time = evolve(state.balls[j], time, params_);
       if ((at_time.r - state.balls[group[k]].r).template head<2>().norm() <= touching)
@@ -155,32 +171,38 @@ bool Engine<S>::resolveImpactGroup(TableState<S>& state, S time, int first, int 
         group.push_back(static_cast<int>(j));
       }
     }
+  // The impact works on copies of the group's balls alone; contacts and walls name balls by
+  // their place in the group.
+  std::vector<Ball<S>> members;
+  members.reserve(group.size());
+  for (int g : group)
+    members.push_back(state.balls[g]);
   std::vector<std::pair<int, int>> contacts;
   for (std::size_t a = 0; a < group.size(); ++a)
     for (std::size_t b = a + 1; b < group.size(); ++b)
-      if ((state.balls[group[a]].r - state.balls[group[b]].r).template head<2>().norm() <= touching)
-        contacts.emplace_back(group[a], group[b]);
+      if ((members[a].r - members[b].r).template head<2>().norm() <= touching)
+        contacts.emplace_back(static_cast<int>(a), static_cast<int>(b));
   // Cushions and jaws a group ball touches take part too: a ball pinned against a cushion.
   struct Wall
   {
-    int ball;
+    int member;
     Vec3<S> normal;  // into play
   };
   std::vector<Wall> walls;
-  for (int g : group)
-    for (const Vec3<S>& normal : touchingWalls(state.balls[g]))
-      walls.push_back({g, normal});
+  for (std::size_t g = 0; g < group.size(); ++g)
+    for (const Vec3<S>& normal : touchingWalls(members[g]))
+      walls.push_back({static_cast<int>(g), normal});
   const auto closing = [&](const std::vector<Ball<S>>& balls, const std::pair<int, int>& c) {
     return closingSpeed(balls[c.first], balls[c.second]);
   };
   std::vector<std::size_t> closing_now, resting;
   for (std::size_t c = 0; c < contacts.size(); ++c)
-    (closing(state.balls, contacts[c]) > zeroSpeed<S>() ? closing_now : resting).push_back(c);
+    (closing(members, contacts[c]) > zeroSpeed<S>() ? closing_now : resting).push_back(c);
 
   // Pairwise impulses, swept over the group until nothing closes (projected Gauss-Seidel).
   const auto sweepToRest = [&](std::vector<std::size_t> order) {
     order.insert(order.end(), resting.begin(), resting.end());
-    std::vector<Ball<S>> balls = state.balls;
+    std::vector<Ball<S>> balls = members;
     for (int sweep = 0; sweep < 100000; ++sweep)
     {
       bool any = false;
@@ -191,9 +213,9 @@ bool Engine<S>::resolveImpactGroup(TableState<S>& state, S time, int first, int 
           any = true;
         }
       for (const Wall& wall : walls)
-        if (balls[wall.ball].v.dot(wall.normal) < -zeroSpeed<S>())
+        if (balls[wall.member].v.dot(wall.normal) < -zeroSpeed<S>())
         {
-          cushion_->resolve(balls[wall.ball], wall.normal, params_);
+          cushion_->resolve(balls[wall.member], wall.normal, params_);
           any = true;
         }
       if (!any)
@@ -221,8 +243,8 @@ bool Engine<S>::resolveImpactGroup(TableState<S>& state, S time, int first, int 
     const std::vector<Ball<S>> outcome = sweepToRest(o);
     for (std::size_t g = 0; g < group.size(); ++g)
     {
-      v[g] += outcome[group[g]].v;
-      w[g] += outcome[group[g]].w;
+      v[g] += outcome[g].v;
+      w[g] += outcome[g].w;
     }
   }
   for (std::size_t g = 0; g < group.size(); ++g)

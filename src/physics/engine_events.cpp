@@ -59,7 +59,10 @@ struct Engine<S>::Paths
   /// The ball's earliest event of its own (transition, cushion, jaw, pocket): the ball changes
   /// then, so nothing of it later than this needs finding yet.
   std::vector<Candidate> first;
-  explicit Paths(std::size_t n) : path(n), end(n, infinity<S>()), first(n) {}
+  /// The box the ball's centre stays in until `first`, widened by R: balls whose boxes are
+  /// apart cannot meet before one of them changes.
+  std::vector<Vec2<S>> low, high;
+  explicit Paths(std::size_t n) : path(n), end(n, infinity<S>()), first(n), low(n), high(n) {}
 };
 
 namespace
@@ -85,8 +88,49 @@ Trajectory<S> shifted(const Trajectory<S>& path, S delta)
 }
 }  // namespace
 
+namespace
+{
+/// Smallest and largest value of c0 + c1 tau + c2 tau^2 over tau in [0, T] (T may be +inf).
+template <typename S>
+void quadraticRange(S c0, S c1, S c2, S T, S& low, S& high)
+{
+  low = high = c0;
+  const auto include = [&](S x) {
+    low = std::min(low, x);
+    high = std::max(high, x);
+  };
+  if (std::isfinite(static_cast<double>(T)))
+    include(c0 + T * (c1 + T * c2));
+  else if (c2 != S(0) || c1 != S(0))
+    include((c2 > S(0) || (c2 == S(0) && c1 > S(0))) ? infinity<S>() : -infinity<S>());
+  if (c2 != S(0))
+  {
+    const S vertex = -c1 / (S(2) * c2);
+    if (vertex > S(0) && vertex < T)
+      include(c0 + vertex * (c1 + vertex * c2));
+  }
+}
+}  // namespace
+
 template <typename S>
 void Engine<S>::computePath(const Ball<S>& ball, std::size_t index, Paths& paths) const
+{
+  computeOwnEvent(ball, index, paths);
+  // A nanometre more than R, so that rounding never parts boxes of balls that touch.
+  const S margin = params_.ball_radius + S(1e-9);
+  const Trajectory<S>& p = paths.path[index];
+  const S T = ball.translating() ? paths.first[index].time - ball.time : S(0);
+  for (int axis = 0; axis < 2; ++axis)
+  {
+    S low, high;
+    quadraticRange(p.c0[axis], p.c1[axis], p.c2[axis], T, low, high);
+    paths.low[index][axis] = low - margin;
+    paths.high[index][axis] = high + margin;
+  }
+}
+
+template <typename S>
+void Engine<S>::computeOwnEvent(const Ball<S>& ball, std::size_t index, Paths& paths) const
 {
   paths.path[index] = trajectoryFrom(ball, ball.time, params_);
   const S end = ball.moving() ? ball.time + timeToTransition(ball, params_) : infinity<S>();
@@ -156,7 +200,8 @@ bool Engine<S>::pairCandidate(const TableState<S>& state, int a, int b, const Pa
 {
   const Ball<S>& ba = state.balls[a];
   const Ball<S>& bb = state.balls[b];
-  if (!ba.inPlay() || !bb.inPlay() || (!ba.translating() && !bb.translating()))
+  if (!ba.inPlay() || !bb.inPlay() || (!ba.translating() && !bb.translating()) ||
+      (paths.low[a].array() > paths.high[b].array()).any() || (paths.low[b].array() > paths.high[a].array()).any())
     return false;
   // The pair belongs to the scan of its translating ball, the lower index if both translate.
   int i = a, j = b;

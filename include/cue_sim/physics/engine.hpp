@@ -102,6 +102,7 @@ private:
   struct Candidate;
   struct Paths;
   void computePath(const Ball<S>& ball, std::size_t index, Paths& paths) const;
+  void computeOwnEvent(const Ball<S>& ball, std::size_t index, Paths& paths) const;
   bool pairCandidate(const TableState<S>& state, int a, int b, const Paths& paths, Candidate& out) const;
   Event<S> eventOf(const TableState<S>& state, const Candidate& candidate) const;
 
@@ -109,6 +110,8 @@ private:
   void processEvent(TableState<S>& state, const Event<S>& event, std::vector<int>* changed = nullptr) const;
   void pocketBall(TableState<S>& state, Ball<S>& ball, int pocket) const;
   bool inSustainedContact(const Ball<S>& a, const Ball<S>& b) const;
+  /// True if the ball cannot be within `distance` of `point` (xy) at `time`: a cheap bound.
+  bool cannotReach(const Ball<S>& ball, const Vec3<S>& point, S distance, S time) const;
   /// Gives the pair, and every ball pressed against them in sustained contact, the mean of
   /// their velocities and spins (EngineLimits::sustained_contact_speed).
   void joinPressedCluster(TableState<S>& state, S time, int first, int second, std::vector<int>* changed) const;
