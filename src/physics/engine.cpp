@@ -55,12 +55,25 @@ Engine<S>::Engine(std::shared_ptr<const TableModel> table, const PhysicsParams<S
   if (!why.empty())
     throw std::invalid_argument("physics parameter " + why);
   auto obstacles = std::make_shared<Obstacles>();
+  // The boxes are widened by a nanometre, so that rounding never dismisses a touching ball.
+  const S R = params_.ball_radius, margin = S(1e-9);
+  const Vec2<S> spread(R + margin, R + margin);
   for (const auto& s : table_->segments())
-    obstacles->segments.push_back({s.start.cast<S>(), s.direction.cast<S>(), s.normal.cast<S>(), S(s.length)});
+  {
+    const Vec2<S> a = s.start.cast<S>(), b = s.end.cast<S>();
+    obstacles->segments.push_back(
+        {a, s.direction.cast<S>(), s.normal.cast<S>(), S(s.length), a.cwiseMin(b) - spread, a.cwiseMax(b) + spread});
+  }
   for (const auto& c : table_->circles())
-    obstacles->circles.push_back({c.centre.cast<S>(), S(c.radius)});
+  {
+    const Vec2<S> centre = c.centre.cast<S>(), reach = Vec2<S>::Constant(R + S(c.radius) + margin);
+    obstacles->circles.push_back({centre, S(c.radius), centre - reach, centre + reach});
+  }
   for (const auto& p : table_->pockets())
-    obstacles->pockets.push_back({p.centre.cast<S>(), S(p.radius)});
+  {
+    const Vec2<S> centre = p.centre.cast<S>(), reach = Vec2<S>::Constant(S(p.radius) + margin);
+    obstacles->pockets.push_back({centre, S(p.radius), centre - reach, centre + reach});
+  }
   obstacles_ = obstacles;
 }
 

@@ -195,6 +195,22 @@ bool Engine<S>::resolveImpactGroup(TableState<S>& state, S time, int first, int 
   const auto closing = [&](const std::vector<Ball<S>>& balls, const std::pair<int, int>& c) {
     return closingSpeed(balls[c.first], balls[c.second]);
   };
+  if (group.size() == 2 && contacts.size() == 1 && walls.empty())
+  {
+    // The common case, a lone pair: what the sweep below does for it, without its machinery.
+    Ball<S>& a = state.balls[first];
+    Ball<S>& b = state.balls[second];
+    for (int sweep = 0; sweep < 100000 && closingSpeed(a, b) > zeroSpeed<S>(); ++sweep)
+      ball_ball_->resolve(a, b, params_);
+    settleMotion(a, R);
+    settleMotion(b, R);
+    if (changed)
+    {
+      changed->push_back(first);
+      changed->push_back(second);
+    }
+    return a.v != first_before || b.v != second_before;
+  }
   std::vector<std::size_t> closing_now, resting;
   for (std::size_t c = 0; c < contacts.size(); ++c)
     (closing(members, contacts[c]) > zeroSpeed<S>() ? closing_now : resting).push_back(c);

@@ -148,6 +148,18 @@ void Engine<S>::computeOwnEvent(const Ball<S>& ball, std::size_t index, Paths& p
   const S R = params_.ball_radius;
   const S base = ball.time;
   const Trajectory<S>& p = paths.path[index];
+  // The box the centre sweeps until the earliest contact found so far: an obstacle whose own
+  // box it misses is out of reach.
+  Vec2<S> low, high;
+  const auto sweep = [&] {
+    const S T = first.time - base;
+    for (int axis = 0; axis < 2; ++axis)
+      quadraticRange(p.c0[axis], p.c1[axis], p.c2[axis], T, low[axis], high[axis]);
+  };
+  const auto outOfReach = [&](const auto& obstacle) {
+    return (low.array() > obstacle.high.array()).any() || (obstacle.low.array() > high.array()).any();
+  };
+  sweep();
   const auto keep = [&](S tau, typename Candidate::Rank rank, std::size_t k) {
     Candidate c;
     c.time = base + tau;
@@ -155,11 +167,16 @@ void Engine<S>::computeOwnEvent(const Ball<S>& ball, std::size_t index, Paths& p
     c.ball = static_cast<int>(index);
     c.obstacle = static_cast<int>(k);
     if (c.before(first))
+    {
       first = c;
+      sweep();
+    }
   };
   for (std::size_t k = 0; k < obstacles_->segments.size(); ++k)
   {
     const auto& seg = obstacles_->segments[k];
+    if (outOfReach(seg))
+      continue;
     const S limit = horizon(first.time, base);
     const Poly4<S> gap = {seg.normal.dot(p.c0 - seg.start) - R, seg.normal.dot(p.c1), seg.normal.dot(p.c2), S(0), S(0)};
     const S tau = contactTime(gap, limit, -zeroSpeed<S>(), touchTolerance(R), true);
@@ -173,6 +190,8 @@ void Engine<S>::computeOwnEvent(const Ball<S>& ball, std::size_t index, Paths& p
   for (std::size_t k = 0; k < obstacles_->circles.size(); ++k)
   {
     const auto& circle = obstacles_->circles[k];
+    if (outOfReach(circle))
+      continue;
     const S limit = horizon(first.time, base);
     const S reach = R + circle.radius;
     if (cannotMeet<S>(p.c0 - circle.centre, p.c1, p.c2, reach, limit))
@@ -185,6 +204,8 @@ void Engine<S>::computeOwnEvent(const Ball<S>& ball, std::size_t index, Paths& p
   for (std::size_t k = 0; k < obstacles_->pockets.size(); ++k)
   {
     const auto& pocket = obstacles_->pockets[k];
+    if (outOfReach(pocket))
+      continue;
     const S limit = horizon(first.time, base);
     if (cannotMeet<S>(p.c0 - pocket.centre, p.c1, p.c2, pocket.radius, limit))
       continue;

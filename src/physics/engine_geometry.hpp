@@ -22,11 +22,13 @@ struct Engine<S>::Obstacles
   {
     Vec2<S> start, direction, normal;
     S length;
+    Vec2<S> low, high;  ///< where a ball's centre can be while it touches the segment
   };
   struct Circle
   {
     Vec2<S> centre;
     S radius;
+    Vec2<S> low, high;  ///< where a ball's centre can be while it touches the circle
   };
   std::vector<Segment> segments;
   std::vector<Circle> circles;  // jaws and cushion end caps
