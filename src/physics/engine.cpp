@@ -99,7 +99,10 @@ Event<S> Engine<S>::step(TableState<S>& state) const
   const Event<S> event = nextEvent(state);
   if (event.valid())
   {
-    processEvent(state, event);
+    EventContext context;
+    context.index = state.indexOf(event.ball);
+    context.other_index = event.other >= 0 ? state.indexOf(event.other) : -1;
+    processEvent(state, event, context);
     state.time = std::max(state.time, event.time);
   }
   return event;

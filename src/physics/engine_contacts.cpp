@@ -47,6 +47,21 @@ bool Engine<S>::inSustainedContact(const Ball<S>& a, const Ball<S>& b) const
 }
 
 template <typename S>
+void Engine<S>::nearBalls(const TableState<S>& state, const EventContext& context, const Vec2<S>& point, S distance,
+                          std::vector<int>& out) const
+{
+  if (context.neighbours)
+  {
+    context.neighbours->near(point, distance, out);
+    return;
+  }
+  out.clear();
+  for (std::size_t j = 0; j < state.balls.size(); ++j)
+    if (state.balls[j].inPlay())
+      out.push_back(static_cast<int>(j));
+}
+
+template <typename S>
 bool Engine<S>::cannotReach(const Ball<S>& ball, const Vec3<S>& point, S distance, S time) const
 {
   // No ball speeds up by more than the sliding deceleration, so by `time` it has moved at most
@@ -57,14 +72,17 @@ bool Engine<S>::cannotReach(const Ball<S>& ball, const Vec3<S>& point, S distanc
 }
 
 template <typename S>
-void Engine<S>::joinPressedCluster(TableState<S>& state, S time, int first, int second, std::vector<int>* changed) const
+void Engine<S>::joinPressedCluster(TableState<S>& state, S time, int first, int second,
+                                   const EventContext& context) const
 {
+  std::vector<int>* changed = context.changed;
   // Joining only the pair would slow it against a third ball it touches, which would then
   // close on it and be joined, then the pair again, converging without end (a line of balls
   // rolling together). So every ball touching the cluster that the joined motion leaves
   // closing on it, slower than the sustained-contact speed, joins too, until none does.
   const S touching = S(2) * params_.ball_radius + S(1e-12);
   std::vector<int> cluster = {first, second};
+  std::vector<int> candidates, nearby;
   Vec3<S> v = Vec3<S>::Zero(), w = Vec3<S>::Zero();
   for (bool grown = true; grown;)
   {
@@ -78,9 +96,18 @@ void Engine<S>::joinPressedCluster(TableState<S>& state, S time, int first, int 
     v /= S(cluster.size());
     w /= S(cluster.size());
     grown = false;
-    for (std::size_t j = 0; j < state.balls.size() && !grown; ++j)
+    candidates.clear();
+    for (int c : cluster)
     {
-      if (!state.balls[j].inPlay() || std::find(cluster.begin(), cluster.end(), static_cast<int>(j)) != cluster.end())
+      nearBalls(state, context, state.balls[c].r.template head<2>(), touching, nearby);
+      candidates.insert(candidates.end(), nearby.begin(), nearby.end());
+    }
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    for (std::size_t m = 0; m < candidates.size() && !grown; ++m)
+    {
+      const std::size_t j = static_cast<std::size_t>(candidates[m]);
+      if (std::find(cluster.begin(), cluster.end(), static_cast<int>(j)) != cluster.end())
         continue;
       bool near = false;
       for (int c : cluster)
@@ -151,26 +178,32 @@ std::vector<Vec3<S>> Engine<S>::touchingWalls(const Ball<S>& ball) const
 }
 
 template <typename S>
-bool Engine<S>::resolveImpactGroup(TableState<S>& state, S time, int first, int second, std::vector<int>* changed) const
+bool Engine<S>::resolveImpactGroup(TableState<S>& state, S time, int first, int second,
+                                   const EventContext& context) const
 {
+  std::vector<int>* changed = context.changed;
   const Vec3<S> first_before = state.balls[first].v, second_before = state.balls[second].v;
   const S R = params_.ball_radius;
   // Balls that touch, transitively, the colliding pair take part in one impact.
   const S touching = S(2) * R + S(1e-12);
   std::vector<int> group = {first, second};
+  std::vector<int> nearby;
   for (std::size_t k = 0; k < group.size(); ++k)
-    for (std::size_t j = 0; j < state.balls.size(); ++j)
+  {
+    nearBalls(state, context, state.balls[group[k]].r.template head<2>(), touching, nearby);
+    for (int j : nearby)
     {
-      if (!state.balls[j].inPlay() || std::find(group.begin(), group.end(), static_cast<int>(j)) != group.end() ||
+      if (std::find(group.begin(), group.end(), j) != group.end() ||
           cannotReach(state.balls[j], state.balls[group[k]].r, touching, time))
         continue;
       const Ball<S> at_time = evolve(state.balls[j], time, params_);
       if ((at_time.r - state.balls[group[k]].r).template head<2>().norm() <= touching)
       {
         state.balls[j] = at_time;
-        group.push_back(static_cast<int>(j));
+        group.push_back(j);
       }
     }
+  }
   // The impact works on copies of the group's balls alone; contacts and walls name balls by
   // their place in the group.
   std::vector<Ball<S>> members;
@@ -305,10 +338,11 @@ void Engine<S>::holdAgainstWall(Ball<S>& ball, const Vec3<S>& normal) const
 }
 
 template <typename S>
-void Engine<S>::processEvent(TableState<S>& state, const Event<S>& event, std::vector<int>* changed) const
+void Engine<S>::processEvent(TableState<S>& state, const Event<S>& event, const EventContext& context) const
 {
   state.event_time = std::max(state.event_time, event.time);
-  const int index = state.indexOf(event.ball);
+  std::vector<int>* changed = context.changed;
+  const int index = context.index;
   Ball<S>& ball = state.balls[index];
   ball = evolve(ball, event.time, params_);
   if (changed)
@@ -317,7 +351,7 @@ void Engine<S>::processEvent(TableState<S>& state, const Event<S>& event, std::v
   switch (event.kind)
   {
     case EventKind::BallBall: {
-      const int other_index = state.indexOf(event.other);
+      const int other_index = context.other_index;
       Ball<S>& other = state.balls[other_index];
       other = evolve(other, event.time, params_);
       if (changed)
@@ -327,8 +361,8 @@ void Engine<S>::processEvent(TableState<S>& state, const Event<S>& event, std::v
       // found again at the same instant forever.
       const Vec3<S> ball_before = ball.v, other_before = other.v;
       if (inSustainedContact(ball, other))
-        joinPressedCluster(state, event.time, index, other_index, changed);
-      else if (!resolveImpactGroup(state, event.time, index, other_index, changed))
+        joinPressedCluster(state, event.time, index, other_index, context);
+      else if (!resolveImpactGroup(state, event.time, index, other_index, context))
       {
         // Found closing by the gap polynomial but not by the impact's own arithmetic: a closing
         // speed within rounding of zero. The model resolves it alone, or, if even it sees no
@@ -375,9 +409,9 @@ void Engine<S>::processEvent(TableState<S>& state, const Event<S>& event, std::v
   }
 }
 
-template void Engine<double>::processEvent(TableState<double>&, const Event<double>&, std::vector<int>*) const;
+template void Engine<double>::processEvent(TableState<double>&, const Event<double>&, const EventContext&) const;
 template void Engine<long double>::processEvent(TableState<long double>&, const Event<long double>&,
-                                                std::vector<int>*) const;
+                                                const EventContext&) const;
 
 }  // namespace physics
 }  // namespace cue_sim

@@ -315,6 +315,110 @@ Event<S> Engine<S>::nextEvent(const TableState<S>& state) const
 
 namespace
 {
+/// A uniform grid over the table, each ball listed in every cell its box covers: balls whose
+/// boxes share no cell cannot meet, so an event looks only at the few balls near the ones it
+/// changed, however many are on the table.
+template <typename S>
+class BallGrid
+{
+public:
+  /// Cells of about two balls each, never smaller than four ball radii.
+  BallGrid(const Vec2<S>& low, const Vec2<S>& high, std::size_t balls, S radius)
+    : origin_(low), listed_(balls, Rect{0, -1, 0, -1}), seen_(balls, 0)
+  {
+    const Vec2<S> size = high - low;
+    const S target = std::max<S>(S(1), S(balls) / S(2));
+    cell_ = std::max(std::sqrt(size.x() * size.y() / target), S(4) * radius);
+    nx_ = std::max(1, static_cast<int>(std::ceil(size.x() / cell_)));
+    ny_ = std::max(1, static_cast<int>(std::ceil(size.y() / cell_)));
+    cells_.resize(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_));
+  }
+
+  void place(int ball, const Vec2<S>& low, const Vec2<S>& high)
+  {
+    remove(ball);
+    Rect& r = listed_[ball];
+    r = rectOf(low, high);
+    for (int y = r.y0; y <= r.y1; ++y)
+      for (int x = r.x0; x <= r.x1; ++x)
+        cells_[index(x, y)].push_back(ball);
+  }
+
+  void remove(int ball)
+  {
+    Rect& r = listed_[ball];
+    for (int y = r.y0; y <= r.y1; ++y)
+      for (int x = r.x0; x <= r.x1; ++x)
+      {
+        std::vector<int>& cell = cells_[index(x, y)];
+        const auto it = std::find(cell.begin(), cell.end(), ball);
+        *it = cell.back();
+        cell.pop_back();
+      }
+    r = Rect{0, -1, 0, -1};
+  }
+
+  /// Calls visit(o) once for every ball listed in a cell the box covers.
+  template <typename Visit>
+  void visitBox(const Vec2<S>& low, const Vec2<S>& high, Visit&& visit)
+  {
+    visitRect(rectOf(low, high), visit);
+  }
+  /// Calls visit(o) once for every other ball listed in a cell of this ball's box.
+  template <typename Visit>
+  void visitNear(int ball, Visit&& visit)
+  {
+    seen_[ball] = stamp_ + 1;
+    visitRect(listed_[ball], visit);
+  }
+
+private:
+  struct Rect
+  {
+    int x0, x1, y0, y1;
+  };
+  std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * nx_ + static_cast<std::size_t>(x); }
+  /// The cell a coordinate falls in, clamped to the grid (infinite and NaN bounds included).
+  static int clampCell(S q, int count, bool upper)
+  {
+    if (!(q == q))
+      return upper ? count - 1 : 0;
+    if (q <= S(0))
+      return 0;
+    if (q >= S(count - 1))
+      return count - 1;
+    return static_cast<int>(q);
+  }
+  Rect rectOf(const Vec2<S>& low, const Vec2<S>& high) const
+  {
+    return Rect{clampCell((low.x() - origin_.x()) / cell_, nx_, false),
+                clampCell((high.x() - origin_.x()) / cell_, nx_, true),
+                clampCell((low.y() - origin_.y()) / cell_, ny_, false),
+                clampCell((high.y() - origin_.y()) / cell_, ny_, true)};
+  }
+  template <typename Visit>
+  void visitRect(const Rect& r, Visit& visit)
+  {
+    ++stamp_;
+    for (int y = r.y0; y <= r.y1; ++y)
+      for (int x = r.x0; x <= r.x1; ++x)
+        for (int o : cells_[index(x, y)])
+          if (seen_[o] != stamp_)
+          {
+            seen_[o] = stamp_;
+            visit(o);
+          }
+  }
+
+  Vec2<S> origin_;
+  S cell_ = S(1);
+  int nx_ = 1, ny_ = 1;
+  std::vector<std::vector<int>> cells_;
+  std::vector<Rect> listed_;
+  std::vector<unsigned> seen_;
+  unsigned stamp_ = 0;
+};
+
 /// A candidate in the queue, stamped with the versions of the balls it was computed from: it
 /// is stale once either ball has changed since.
 template <typename Candidate>
@@ -342,19 +446,57 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
     return e.version != version[e.candidate.ball] ||
            (e.candidate.other >= 0 && e.other_version != version[e.candidate.other]);
   };
+  const Vec2<S> centre = table_->clothCentre().template cast<S>();
+  const Vec2<S> half(S(table_->clothLength() / 2), S(table_->clothWidth() / 2));
+  BallGrid<S> grid(centre - half, centre + half, n, params_.ball_radius);
+  const auto list = [&](std::size_t i) {
+    if (state.balls[i].inPlay())
+      grid.place(static_cast<int>(i), paths.low[i], paths.high[i]);
+    else
+      grid.remove(static_cast<int>(i));
+  };
   Candidate pair;
   for (std::size_t i = 0; i < n; ++i)
+  {
     computePath(state.balls[i], i, paths);
+    list(i);
+  }
   const auto pushOwn = [&](std::size_t i) {
     if (std::isfinite(static_cast<double>(paths.first[i].time)))
       push(paths.first[i]);
   };
   for (std::size_t i = 0; i < n; ++i)
     pushOwn(i);
+  // Pairs need a translating ball: each is found from it (from the lower index if both are).
   for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 1; j < n; ++j)
-      if (pairCandidate(state, static_cast<int>(i), static_cast<int>(j), paths, pair))
-        push(pair);
+    if (state.balls[i].translating())
+      grid.visitNear(static_cast<int>(i), [&](int o) {
+        if (!(state.balls[o].translating() && o < static_cast<int>(i)) &&
+            pairCandidate(state, static_cast<int>(i), o, paths, pair))
+          push(pair);
+      });
+
+  // During an event the grid finds the balls near a point: those listed in cells around it.
+  class GridNeighbours : public Neighbours
+  {
+  public:
+    GridNeighbours(BallGrid<S>& grid, const TableState<S>& state) : grid_(grid), state_(state) {}
+    void near(const Vec2<S>& point, S distance, std::vector<int>& out) const override
+    {
+      out.clear();
+      const Vec2<S> reach = Vec2<S>::Constant(distance + S(1e-9));
+      grid_.visitBox(point - reach, point + reach, [&](int o) {
+        if (state_.balls[o].inPlay())
+          out.push_back(o);
+      });
+      std::sort(out.begin(), out.end());
+    }
+
+  private:
+    BallGrid<S>& grid_;
+    const TableState<S>& state_;
+  };
+  const GridNeighbours neighbours(grid, state);
 
   std::vector<int> changed;
   std::vector<char> is_changed(n, 0);
@@ -369,6 +511,7 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
     if (queue.empty() || queue.front().candidate.time > t_end)
       break;
     const Event<S> event = eventOf(state, queue.front().candidate);
+    const int queue_top_ball = queue.front().candidate.ball, queue_top_other = queue.front().candidate.other;
     std::pop_heap(queue.begin(), queue.end(), later);
     queue.pop_back();
     if (++processed > limits_.max_events)
@@ -379,7 +522,12 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
       throw EventLimitError(why.str());
     }
     changed.clear();
-    processEvent(state, event, &changed);
+    EventContext context;
+    context.index = queue_top_ball;
+    context.other_index = queue_top_other;
+    context.changed = &changed;
+    context.neighbours = &neighbours;
+    processEvent(state, event, context);
     if (events)
       events->push_back(event);
     // Only the balls the event changed get new candidates; every other candidate stands.
@@ -390,14 +538,16 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
       ++version[k];
       is_changed[k] = 1;
       computePath(state.balls[k], k, paths);
+      list(k);
     }
     for (int k : changed)
     {
       pushOwn(k);
-      for (std::size_t o = 0; o < n; ++o)
-        if (static_cast<int>(o) != k && !(is_changed[o] && static_cast<int>(o) < k) &&
-            pairCandidate(state, k, static_cast<int>(o), paths, pair))
-          push(pair);
+      if (state.balls[k].inPlay())
+        grid.visitNear(k, [&](int o) {
+          if (!(is_changed[o] && o < k) && pairCandidate(state, k, o, paths, pair))
+            push(pair);
+        });
     }
     for (int k : changed)
       is_changed[k] = 0;

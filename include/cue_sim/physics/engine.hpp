@@ -106,15 +106,35 @@ private:
   bool pairCandidate(const TableState<S>& state, int a, int b, const Paths& paths, Candidate& out) const;
   Event<S> eventOf(const TableState<S>& state, const Candidate& candidate) const;
 
-  /// Resolves the event; appends the indices of the balls whose state it changed to `changed`.
-  void processEvent(TableState<S>& state, const Event<S>& event, std::vector<int>* changed = nullptr) const;
+  /// Finds the balls that may be within a distance of a point at the current event: all of
+  /// them by default, a spatial grid's few in advance().
+  class Neighbours
+  {
+  public:
+    virtual ~Neighbours() = default;
+    /// Indices, ascending, of every ball in play that may be within `distance` of `point`.
+    virtual void near(const Vec2<S>& point, S distance, std::vector<int>& out) const = 0;
+  };
+  /// What an event needs beyond the state: where the balls it names are, who changed, who is near.
+  struct EventContext
+  {
+    int index = -1;        ///< of event.ball in state.balls
+    int other_index = -1;  ///< of event.other, for a ball-ball event
+    std::vector<int>* changed = nullptr;  ///< receives the indices of the balls it changed
+    const Neighbours* neighbours = nullptr;
+  };
+  /// Resolves the event.
+  void processEvent(TableState<S>& state, const Event<S>& event, const EventContext& context) const;
+  /// The balls in play that may be within `distance` of `point`, ascending.
+  void nearBalls(const TableState<S>& state, const EventContext& context, const Vec2<S>& point, S distance,
+                 std::vector<int>& out) const;
   void pocketBall(TableState<S>& state, Ball<S>& ball, int pocket) const;
   bool inSustainedContact(const Ball<S>& a, const Ball<S>& b) const;
   /// True if the ball cannot be within `distance` of `point` (xy) at `time`: a cheap bound.
   bool cannotReach(const Ball<S>& ball, const Vec3<S>& point, S distance, S time) const;
   /// Gives the pair, and every ball pressed against them in sustained contact, the mean of
   /// their velocities and spins (EngineLimits::sustained_contact_speed).
-  void joinPressedCluster(TableState<S>& state, S time, int first, int second, std::vector<int>* changed) const;
+  void joinPressedCluster(TableState<S>& state, S time, int first, int second, const EventContext& context) const;
   /// A sliding ball left on a wall with (almost) no normal speed while its slip drives it back
   /// in stays on the wall: the normal speed is removed and the slip's part into the wall is
   /// turned into spin by the cloth friction the wall balances.
@@ -123,7 +143,7 @@ private:
   std::vector<Vec3<S>> touchingWalls(const Ball<S>& ball) const;
   /// Resolves a ball-ball impact together with every ball touching the pair, and the cushions
   /// those balls touch: one impact. Returns whether the pair's velocities changed.
-  bool resolveImpactGroup(TableState<S>& state, S time, int first, int second, std::vector<int>* changed) const;
+  bool resolveImpactGroup(TableState<S>& state, S time, int first, int second, const EventContext& context) const;
 
   std::shared_ptr<const TableModel> table_;
   PhysicsParams<S> params_;
