@@ -23,6 +23,7 @@ struct Engine<S>::Candidate
 {
   enum Rank : int
   {
+    Renewal = -1,  ///< not an event: the ball's box has run out and is drawn further
     Transition = 0,
     Segment = 1,
     Circle = 2,
@@ -39,9 +40,11 @@ struct Engine<S>::Candidate
   {
     if (time != c.time)
       return time < c.time;
-    const bool transition = rank == Transition, c_transition = c.rank == Transition;
-    if (transition != c_transition)
-      return transition;
+    // Renewals come first, so that what they find is queued before anything at their time.
+    const int group = rank == Renewal ? 0 : rank == Transition ? 1 : 2;
+    const int c_group = c.rank == Renewal ? 0 : c.rank == Transition ? 1 : 2;
+    if (group != c_group)
+      return group < c_group;
     if (ball != c.ball)
       return ball < c.ball;
     if (rank != c.rank)
@@ -59,10 +62,12 @@ struct Engine<S>::Paths
   /// The ball's earliest event of its own (transition, cushion, jaw, pocket): the ball changes
   /// then, so nothing of it later than this needs finding yet.
   std::vector<Candidate> first;
-  /// The box the ball's centre stays in until `first`, widened by R: balls whose boxes are
-  /// apart cannot meet before one of them changes.
+  /// The box the ball's centre stays in until `window` (at most `first`), widened by R: balls
+  /// whose boxes are apart cannot meet before one of the windows ends. A window shorter than
+  /// the path keeps the box small on a large table; it is drawn further when it ends.
+  std::vector<S> window;
   std::vector<Vec2<S>> low, high;
-  explicit Paths(std::size_t n) : path(n), end(n, infinity<S>()), first(n), low(n), high(n) {}
+  explicit Paths(std::size_t n) : path(n), end(n, infinity<S>()), first(n), window(n, infinity<S>()), low(n), high(n) {}
 };
 
 namespace
@@ -113,13 +118,20 @@ void quadraticRange(S c0, S c1, S c2, S T, S& low, S& high)
 }  // namespace
 
 template <typename S>
-void Engine<S>::computePath(const Ball<S>& ball, std::size_t index, Paths& paths) const
+void Engine<S>::computePath(const Ball<S>& ball, std::size_t index, Paths& paths, S window) const
 {
   computeOwnEvent(ball, index, paths);
+  drawBox(ball, index, paths, window);
+}
+
+template <typename S>
+void Engine<S>::drawBox(const Ball<S>& ball, std::size_t index, Paths& paths, S window) const
+{
+  paths.window[index] = std::min(window, paths.first[index].time);
   // A nanometre more than R, so that rounding never parts boxes of balls that touch.
   const S margin = params_.ball_radius + S(1e-9);
   const Trajectory<S>& p = paths.path[index];
-  const S T = ball.translating() ? paths.first[index].time - ball.time : S(0);
+  const S T = ball.translating() ? paths.window[index] - ball.time : S(0);
   for (int axis = 0; axis < 2; ++axis)
   {
     S low, high;
@@ -238,7 +250,10 @@ bool Engine<S>::pairCandidate(const TableState<S>& state, int a, int b, const Pa
   const S limit = horizon(std::min(paths.first[i].time, paths.first[j].time), base);
   const S R = params_.ball_radius;
   const Vec2<S> c0 = pi.c0 - pj.c0, c1 = pi.c1 - pj.c1, c2 = pi.c2 - pj.c2;
-  if (cannotMeet<S>(c0, c1, c2, S(2) * R, limit))
+  // Dismissed if they cannot meet before a window ends (a contact after that is looked for
+  // again when the window is drawn further); otherwise solved over the whole horizon, so the
+  // result never depends on the windows.
+  if (cannotMeet<S>(c0, c1, c2, S(2) * R, horizon(std::min(paths.window[i], paths.window[j]), base)))
     return false;
   const S tau = contactTime(distanceGap<S>(c0, c1, c2, S(2) * R), limit, -S(4) * R * zeroSpeed<S>(),
                             touchTolerance(S(4) * R * R), true);
@@ -260,6 +275,8 @@ Event<S> Engine<S>::eventOf(const TableState<S>& state, const Candidate& c) cons
   e.ball = state.balls[c.ball].id;
   switch (c.rank)
   {
+    case Candidate::Renewal:
+      break;
     case Candidate::Transition: {
       // Which transition it is follows from applying it to a copy.
       Ball<S> copy = evolve(state.balls[c.ball], c.time, params_);
@@ -292,7 +309,7 @@ Event<S> Engine<S>::nextEvent(const TableState<S>& state) const
   const std::size_t n = state.balls.size();
   Paths paths(n);
   for (std::size_t i = 0; i < n; ++i)
-    computePath(state.balls[i], i, paths);
+    computePath(state.balls[i], i, paths, infinity<S>());
   Candidate best;
   bool found = false;
   const auto keep = [&](const Candidate& c) {
@@ -333,6 +350,8 @@ public:
     ny_ = std::max(1, static_cast<int>(std::ceil(size.y() / cell_)));
     cells_.resize(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_));
   }
+
+  S cell() const { return cell_; }
 
   void place(int ball, const Vec2<S>& low, const Vec2<S>& high)
   {
@@ -391,10 +410,9 @@ private:
   }
   Rect rectOf(const Vec2<S>& low, const Vec2<S>& high) const
   {
-    return Rect{clampCell((low.x() - origin_.x()) / cell_, nx_, false),
-                clampCell((high.x() - origin_.x()) / cell_, nx_, true),
-                clampCell((low.y() - origin_.y()) / cell_, ny_, false),
-                clampCell((high.y() - origin_.y()) / cell_, ny_, true)};
+    return Rect{
+        clampCell((low.x() - origin_.x()) / cell_, nx_, false), clampCell((high.x() - origin_.x()) / cell_, nx_, true),
+        clampCell((low.y() - origin_.y()) / cell_, ny_, false), clampCell((high.y() - origin_.y()) / cell_, ny_, true)};
   }
   template <typename Visit>
   void visitRect(const Rect& r, Visit& visit)
@@ -455,15 +473,27 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
     else
       grid.remove(static_cast<int>(i));
   };
+  // A ball's box covers about two cells of its travel; then it is drawn further.
+  const auto windowFrom = [&](std::size_t i, S from) {
+    return from + S(2) * grid.cell() / (state.balls[i].v.norm() + S(0.1));
+  };
   Candidate pair;
   for (std::size_t i = 0; i < n; ++i)
   {
-    computePath(state.balls[i], i, paths);
+    computePath(state.balls[i], i, paths, windowFrom(i, std::max(state.balls[i].time, state.event_time)));
     list(i);
   }
   const auto pushOwn = [&](std::size_t i) {
     if (std::isfinite(static_cast<double>(paths.first[i].time)))
       push(paths.first[i]);
+    if (state.balls[i].translating() && paths.window[i] < paths.first[i].time)
+    {
+      Candidate renewal;
+      renewal.time = paths.window[i];
+      renewal.rank = Candidate::Renewal;
+      renewal.ball = static_cast<int>(i);
+      push(renewal);
+    }
   };
   for (std::size_t i = 0; i < n; ++i)
     pushOwn(i);
@@ -510,6 +540,29 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
     }
     if (queue.empty() || queue.front().candidate.time > t_end)
       break;
+    if (queue.front().candidate.rank == Candidate::Renewal)
+    {
+      // Not an event: the ball's box is drawn over its next stretch, and the balls it now
+      // reaches are looked at.
+      const int k = queue.front().candidate.ball;
+      std::pop_heap(queue.begin(), queue.end(), later);
+      queue.pop_back();
+      drawBox(state.balls[k], k, paths, windowFrom(k, paths.window[k]));
+      list(k);
+      if (paths.window[k] < paths.first[k].time)
+      {
+        Candidate renewal;
+        renewal.time = paths.window[k];
+        renewal.rank = Candidate::Renewal;
+        renewal.ball = k;
+        push(renewal);
+      }
+      grid.visitNear(k, [&](int o) {
+        if (pairCandidate(state, k, o, paths, pair))
+          push(pair);
+      });
+      continue;
+    }
     const Event<S> event = eventOf(state, queue.front().candidate);
     const int queue_top_ball = queue.front().candidate.ball, queue_top_other = queue.front().candidate.other;
     std::pop_heap(queue.begin(), queue.end(), later);
@@ -537,7 +590,7 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
     {
       ++version[k];
       is_changed[k] = 1;
-      computePath(state.balls[k], k, paths);
+      computePath(state.balls[k], k, paths, windowFrom(k, event.time));
       list(k);
     }
     for (int k : changed)

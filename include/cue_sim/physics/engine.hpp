@@ -101,7 +101,9 @@ private:
   /// path and motion end, computed once per change of the ball.
   struct Candidate;
   struct Paths;
-  void computePath(const Ball<S>& ball, std::size_t index, Paths& paths) const;
+  /// The ball's path, its own next event, and its box until `window` (absolute).
+  void computePath(const Ball<S>& ball, std::size_t index, Paths& paths, S window) const;
+  void drawBox(const Ball<S>& ball, std::size_t index, Paths& paths, S window) const;
   void computeOwnEvent(const Ball<S>& ball, std::size_t index, Paths& paths) const;
   bool pairCandidate(const TableState<S>& state, int a, int b, const Paths& paths, Candidate& out) const;
   Event<S> eventOf(const TableState<S>& state, const Candidate& candidate) const;
@@ -118,8 +120,8 @@ private:
   /// What an event needs beyond the state: where the balls it names are, who changed, who is near.
   struct EventContext
   {
-    int index = -1;        ///< of event.ball in state.balls
-    int other_index = -1;  ///< of event.other, for a ball-ball event
+    int index = -1;                       ///< of event.ball in state.balls
+    int other_index = -1;                 ///< of event.other, for a ball-ball event
     std::vector<int>* changed = nullptr;  ///< receives the indices of the balls it changed
     const Neighbours* neighbours = nullptr;
   };
