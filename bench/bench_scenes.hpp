@@ -94,9 +94,11 @@ inline BenchScene scaling(int count)
     Ball<double> b;
     b.id = static_cast<int>(state.balls.size());
     b.r = Vec3<double>((2 * unit() - 1) * hx, (2 * unit() - 1) * hy, R);
-    state.balls.push_back(b);
-    if (!engine->whyInvalid(state).empty())
-      state.balls.pop_back();
+    bool clear = table->whyNotPlaceable(b.r.head<2>(), R).empty();
+    for (const auto& other : state.balls)
+      clear = clear && (other.r - b.r).norm() > 2 * R + 1e-6;
+    if (clear)
+      state.balls.push_back(b);
   }
   for (auto& b : state.balls)
   {

@@ -190,19 +190,27 @@ bool Engine<S>::resolveImpactGroup(TableState<S>& state, S time, int first, int 
   std::vector<int> nearby;
   for (std::size_t k = 0; k < group.size(); ++k)
   {
-    nearBalls(state, context, state.balls[group[k]].r.template head<2>(), touching, nearby);
-    for (int j : nearby)
-    {
+    const auto consider = [&](int j) {
       if (std::find(group.begin(), group.end(), j) != group.end() ||
           cannotReach(state.balls[j], state.balls[group[k]].r, touching, time))
-        continue;
+        return;
       const Ball<S> at_time = evolve(state.balls[j], time, params_);
       if ((at_time.r - state.balls[group[k]].r).template head<2>().norm() <= touching)
       {
         state.balls[j] = at_time;
         group.push_back(j);
       }
+    };
+    if (context.neighbours)
+    {
+      context.neighbours->near(state.balls[group[k]].r.template head<2>(), touching, nearby);
+      for (int j : nearby)
+        consider(j);
     }
+    else
+      for (int j = 0; j < static_cast<int>(state.balls.size()); ++j)
+        if (state.balls[j].inPlay())
+          consider(j);
   }
   // The impact works on copies of the group's balls alone; contacts and walls name balls by
   // their place in the group.

@@ -4,6 +4,7 @@
 // found afresh (nextEvent), with bit-identical results.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "cue_sim/physics/engine.hpp"
@@ -120,6 +121,22 @@ void quadraticRange(S c0, S c1, S c2, S T, S& low, S& high)
 template <typename S>
 void Engine<S>::computePath(const Ball<S>& ball, std::size_t index, Paths& paths, S window) const
 {
+  if (ball.motion == Motion::Stationary)
+  {
+    // A ball at rest has nothing of its own to find and a box of one ball: it costs almost
+    // nothing until something reaches it.
+    paths.path[index].c0 = ball.r.template head<2>();
+    paths.path[index].c1.setZero();
+    paths.path[index].c2.setZero();
+    paths.end[index] = infinity<S>();
+    paths.first[index] = Candidate();
+    paths.first[index].ball = static_cast<int>(index);
+    paths.window[index] = infinity<S>();
+    const Vec2<S> margin = Vec2<S>::Constant(params_.ball_radius + S(1e-9));
+    paths.low[index] = paths.path[index].c0 - margin;
+    paths.high[index] = paths.path[index].c0 + margin;
+    return;
+  }
   computeOwnEvent(ball, index, paths);
   drawBox(ball, index, paths, window);
 }
@@ -332,6 +349,9 @@ Event<S> Engine<S>::nextEvent(const TableState<S>& state) const
 
 namespace
 {
+/// Below this many balls every ball is looked at directly: cheaper than keeping a grid.
+constexpr std::size_t kGridFrom = 32;
+
 /// A uniform grid over the table, each ball listed in every cell its box covers: balls whose
 /// boxes share no cell cannot meet, so an event looks only at the few balls near the ones it
 /// changed, however many are on the table.
@@ -348,7 +368,8 @@ public:
     cell_ = std::max(std::sqrt(size.x() * size.y() / target), S(4) * radius);
     nx_ = std::max(1, static_cast<int>(std::ceil(size.x() / cell_)));
     ny_ = std::max(1, static_cast<int>(std::ceil(size.y() / cell_)));
-    cells_.resize(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_));
+    head_.assign(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_), -1);
+    entries_.reserve(4 * balls);
   }
 
   S cell() const { return cell_; }
@@ -360,7 +381,22 @@ public:
     r = rectOf(low, high);
     for (int y = r.y0; y <= r.y1; ++y)
       for (int x = r.x0; x <= r.x1; ++x)
-        cells_[index(x, y)].push_back(ball);
+      {
+        int entry;
+        if (free_ >= 0)
+        {
+          entry = free_;
+          free_ = entries_[entry].next;
+        }
+        else
+        {
+          entry = static_cast<int>(entries_.size());
+          entries_.push_back({});
+        }
+        int& head = head_[index(x, y)];
+        entries_[entry] = {ball, head};
+        head = entry;
+      }
   }
 
   void remove(int ball)
@@ -368,12 +404,15 @@ public:
     Rect& r = listed_[ball];
     for (int y = r.y0; y <= r.y1; ++y)
       for (int x = r.x0; x <= r.x1; ++x)
-      {
-        std::vector<int>& cell = cells_[index(x, y)];
-        const auto it = std::find(cell.begin(), cell.end(), ball);
-        *it = cell.back();
-        cell.pop_back();
-      }
+        for (int* link = &head_[index(x, y)]; *link >= 0; link = &entries_[*link].next)
+          if (entries_[*link].ball == ball)
+          {
+            const int entry = *link;
+            *link = entries_[entry].next;
+            entries_[entry].next = free_;
+            free_ = entry;
+            break;
+          }
     r = Rect{0, -1, 0, -1};
   }
 
@@ -395,6 +434,13 @@ private:
   struct Rect
   {
     int x0, x1, y0, y1;
+  };
+  /// One listing of a ball in a cell: the cells' lists are linked through one pool, so placing
+  /// and moving balls does not allocate.
+  struct Entry
+  {
+    int ball = -1;
+    int next = -1;
   };
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * nx_ + static_cast<std::size_t>(x); }
   /// The cell a coordinate falls in, clamped to the grid (infinite and NaN bounds included).
@@ -420,18 +466,23 @@ private:
     ++stamp_;
     for (int y = r.y0; y <= r.y1; ++y)
       for (int x = r.x0; x <= r.x1; ++x)
-        for (int o : cells_[index(x, y)])
+        for (int entry = head_[index(x, y)]; entry >= 0; entry = entries_[entry].next)
+        {
+          const int o = entries_[entry].ball;
           if (seen_[o] != stamp_)
           {
             seen_[o] = stamp_;
             visit(o);
           }
+        }
   }
 
   Vec2<S> origin_;
   S cell_ = S(1);
   int nx_ = 1, ny_ = 1;
-  std::vector<std::vector<int>> cells_;
+  std::vector<int> head_;  ///< first entry of each cell's list, or -1
+  std::vector<Entry> entries_;
+  int free_ = -1;  ///< first unused entry
   std::vector<Rect> listed_;
   std::vector<unsigned> seen_;
   unsigned stamp_ = 0;
@@ -456,26 +507,54 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
   using Entry = QueuedCandidate<Candidate>;
   std::vector<Entry> queue;
   const auto later = [](const Entry& x, const Entry& y) { return y.candidate.before(x.candidate); };
-  const auto push = [&](const Candidate& c) {
-    queue.push_back({c, version[c.ball], c.other >= 0 ? version[c.other] : 0u});
-    std::push_heap(queue.begin(), queue.end(), later);
-  };
   const auto stale = [&](const Entry& e) {
     return e.version != version[e.candidate.ball] ||
            (e.candidate.other >= 0 && e.other_version != version[e.candidate.other]);
   };
+  // Stale candidates are dropped when they come to the top; when they crowd the queue, all at
+  // once, so that it stays small enough to live in cache.
+  std::size_t sweep_at = 64 + 8 * n;
+  const auto push = [&](const Candidate& c) {
+    queue.push_back({c, version[c.ball], c.other >= 0 ? version[c.other] : 0u});
+    std::push_heap(queue.begin(), queue.end(), later);
+    if (queue.size() > sweep_at)
+    {
+      queue.erase(std::remove_if(queue.begin(), queue.end(), stale), queue.end());
+      std::make_heap(queue.begin(), queue.end(), later);
+      sweep_at = std::max(sweep_at, 2 * queue.size());
+    }
+  };
   const Vec2<S> centre = table_->clothCentre().template cast<S>();
   const Vec2<S> half(S(table_->clothLength() / 2), S(table_->clothWidth() / 2));
-  BallGrid<S> grid(centre - half, centre + half, n, params_.ball_radius);
+  // A few balls are simply all looked at; beyond that a grid keeps each look local.
+  std::optional<BallGrid<S>> grid;
+  if (n > kGridFrom)
+    grid.emplace(centre - half, centre + half, n, params_.ball_radius);
   const auto list = [&](std::size_t i) {
+    if (!grid)
+      return;
     if (state.balls[i].inPlay())
-      grid.place(static_cast<int>(i), paths.low[i], paths.high[i]);
+      grid->place(static_cast<int>(i), paths.low[i], paths.high[i]);
     else
-      grid.remove(static_cast<int>(i));
+      grid->remove(static_cast<int>(i));
+  };
+  /// Calls visit(o) for every other ball whose box meets ball k's: the balls it may meet.
+  const auto visitNear = [&](int k, const auto& visit) {
+    const auto ifBoxesMeet = [&](int o) {
+      if (!(paths.low[k].array() > paths.high[o].array()).any() &&
+          !(paths.low[o].array() > paths.high[k].array()).any())
+        visit(o);
+    };
+    if (grid)
+      grid->visitNear(k, ifBoxesMeet);
+    else
+      for (int o = 0; o < static_cast<int>(n); ++o)
+        if (o != k)
+          ifBoxesMeet(o);
   };
   // A ball's box covers about two cells of its travel; then it is drawn further.
   const auto windowFrom = [&](std::size_t i, S from) {
-    return from + S(2) * grid.cell() / (state.balls[i].v.norm() + S(0.1));
+    return grid ? from + S(2) * grid->cell() / (state.balls[i].v.norm() + S(0.1)) : infinity<S>();
   };
   Candidate pair;
   for (std::size_t i = 0; i < n; ++i)
@@ -500,7 +579,7 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
   // Pairs need a translating ball: each is found from it (from the lower index if both are).
   for (std::size_t i = 0; i < n; ++i)
     if (state.balls[i].translating())
-      grid.visitNear(static_cast<int>(i), [&](int o) {
+      visitNear(static_cast<int>(i), [&](int o) {
         if (!(state.balls[o].translating() && o < static_cast<int>(i)) &&
             pairCandidate(state, static_cast<int>(i), o, paths, pair))
           push(pair);
@@ -526,7 +605,9 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
     BallGrid<S>& grid_;
     const TableState<S>& state_;
   };
-  const GridNeighbours neighbours(grid, state);
+  std::optional<GridNeighbours> neighbours;
+  if (grid)
+    neighbours.emplace(*grid, state);
 
   std::vector<int> changed;
   std::vector<char> is_changed(n, 0);
@@ -557,7 +638,7 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
         renewal.ball = k;
         push(renewal);
       }
-      grid.visitNear(k, [&](int o) {
+      visitNear(k, [&](int o) {
         if (pairCandidate(state, k, o, paths, pair))
           push(pair);
       });
@@ -579,7 +660,7 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
     context.index = queue_top_ball;
     context.other_index = queue_top_other;
     context.changed = &changed;
-    context.neighbours = &neighbours;
+    context.neighbours = neighbours ? &*neighbours : nullptr;
     processEvent(state, event, context);
     if (events)
       events->push_back(event);
@@ -597,7 +678,7 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
     {
       pushOwn(k);
       if (state.balls[k].inPlay())
-        grid.visitNear(k, [&](int o) {
+        visitNear(k, [&](int o) {
           if (!(is_changed[o] && o < k) && pairCandidate(state, k, o, paths, pair))
             push(pair);
         });
