@@ -3,6 +3,7 @@
 #include <benchmark/benchmark.h>
 
 #include "bench_scenes.hpp"
+#include "cue_sim/physics/batch.hpp"
 
 namespace
 {
@@ -26,6 +27,30 @@ void runScene(benchmark::State& bench, const std::string& name)
   bench.counters["events_per_second"] =
       benchmark::Counter(static_cast<double>(events) * bench.iterations(), benchmark::Counter::kIsRate);
 }
+
+/// 8-ball breaks from one rack, each with a slightly different cue (fixed seed), run on every
+/// core by simulateBatch: breaks per second of wall time.
+void BatchOfEightBallBreaks(benchmark::State& bench)
+{
+  const BenchScene scene = benchScene("eight_ball_break");
+  const TableState<double> rack =
+      rackLayout<double>("eight", scene.engine->table(), scene.engine->params().ball_radius, realRack());
+  std::mt19937 random(7);
+  const auto unit = [&] { return static_cast<double>(random()) / 4294967296.0; };
+  std::vector<BatchShot<double>> shots(2000);
+  for (auto& shot : shots)
+  {
+    shot.cue.speed = 5.0 + 0.5 * unit();  // the cue ball leaves at about 8 m/s
+    shot.cue.phi = 0.01 * (unit() - 0.5);
+  }
+  ThreadPool pool;
+  for (auto _ : bench)
+    benchmark::DoNotOptimize(simulateBatch(*scene.engine, rack, shots, pool).data());
+  bench.counters["threads"] = pool.size();
+  bench.counters["breaks_per_second"] =
+      benchmark::Counter(static_cast<double>(shots.size()) * bench.iterations(), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BatchOfEightBallBreaks)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 const int registered = [] {
   for (const auto& [name, build] : benchScenes())

@@ -68,7 +68,8 @@ bool Engine<S>::cannotReach(const Ball<S>& ball, const Vec3<S>& point, S distanc
   // |v| dt + a dt^2 / 2 (with a nanometre for rounding): a bound that spares evolving it.
   const S dt = time - ball.time;
   const S travel = ball.moving() ? dt * (ball.v.norm() + S(0.5) * params_.slideDecel() * dt) : S(0);
-  return (ball.r - point).template head<2>().norm() > distance + travel + S(1e-9);
+  const S reach = distance + travel + S(1e-9);
+  return (ball.r - point).template head<2>().squaredNorm() > reach * reach;
 }
 
 template <typename S>
@@ -162,14 +163,20 @@ std::vector<Vec3<S>> Engine<S>::touchingWalls(const Ball<S>& ball) const
   const S tolerance = S(1e-12);
   std::vector<Vec3<S>> normals;
   const Vec2<S> c = ball.r.template head<2>();
+  // Only a wall whose box holds the centre can touch the ball.
+  const auto outside = [&](const auto& wall) {
+    return (c.array() < wall.low.array()).any() || (c.array() > wall.high.array()).any();
+  };
   for (const auto& seg : obstacles_->segments)
   {
+    if (outside(seg))
+      continue;
     const S along = seg.direction.dot(c - seg.start);
     if (along >= S(0) && along <= seg.length && std::abs(seg.normal.dot(c - seg.start) - R) <= tolerance)
       normals.emplace_back(seg.normal.x(), seg.normal.y(), S(0));
   }
   for (const auto& circle : obstacles_->circles)
-    if (std::abs((c - circle.centre).norm() - R - circle.radius) <= tolerance)
+    if (!outside(circle) && std::abs((c - circle.centre).norm() - R - circle.radius) <= tolerance)
     {
       const Vec2<S> n = (c - circle.centre).normalized();
       normals.emplace_back(n.x(), n.y(), S(0));
@@ -186,7 +193,10 @@ bool Engine<S>::resolveImpactGroup(TableState<S>& state, S time, int first, int 
   const S R = params_.ball_radius;
   // Balls that touch, transitively, the colliding pair take part in one impact.
   const S touching = S(2) * R + S(1e-12);
-  std::vector<int> group = {first, second};
+  std::vector<int> group;
+  group.reserve(8);
+  group.push_back(first);
+  group.push_back(second);
   std::vector<int> nearby;
   for (std::size_t k = 0; k < group.size(); ++k)
   {
@@ -212,6 +222,23 @@ bool Engine<S>::resolveImpactGroup(TableState<S>& state, S time, int first, int 
         if (state.balls[j].inPlay())
           consider(j);
   }
+  if (group.size() == 2 && (state.balls[first].r - state.balls[second].r).template head<2>().norm() <= touching &&
+      touchingWalls(state.balls[first]).empty() && touchingWalls(state.balls[second]).empty())
+  {
+    // The common case, a lone pair: what the sweep below does for it, without its machinery.
+    Ball<S>& a = state.balls[first];
+    Ball<S>& b = state.balls[second];
+    for (int sweep = 0; sweep < 100000 && closingSpeed(a, b) > zeroSpeed<S>(); ++sweep)
+      ball_ball_->resolve(a, b, params_);
+    settleMotion(a, R);
+    settleMotion(b, R);
+    if (changed)
+    {
+      changed->push_back(first);
+      changed->push_back(second);
+    }
+    return a.v != first_before || b.v != second_before;
+  }
   // The impact works on copies of the group's balls alone; contacts and walls name balls by
   // their place in the group.
   std::vector<Ball<S>> members;
@@ -236,22 +263,6 @@ bool Engine<S>::resolveImpactGroup(TableState<S>& state, S time, int first, int 
   const auto closing = [&](const std::vector<Ball<S>>& balls, const std::pair<int, int>& c) {
     return closingSpeed(balls[c.first], balls[c.second]);
   };
-  if (group.size() == 2 && contacts.size() == 1 && walls.empty())
-  {
-    // The common case, a lone pair: what the sweep below does for it, without its machinery.
-    Ball<S>& a = state.balls[first];
-    Ball<S>& b = state.balls[second];
-    for (int sweep = 0; sweep < 100000 && closingSpeed(a, b) > zeroSpeed<S>(); ++sweep)
-      ball_ball_->resolve(a, b, params_);
-    settleMotion(a, R);
-    settleMotion(b, R);
-    if (changed)
-    {
-      changed->push_back(first);
-      changed->push_back(second);
-    }
-    return a.v != first_before || b.v != second_before;
-  }
   std::vector<std::size_t> closing_now, resting;
   for (std::size_t c = 0; c < contacts.size(); ++c)
     (closing(members, contacts[c]) > zeroSpeed<S>() ? closing_now : resting).push_back(c);
