@@ -197,7 +197,8 @@ bool Engine<S>::resolveImpactGroup(TableState<S>& state, S time, int first, int 
   group.reserve(8);
   group.push_back(first);
   group.push_back(second);
-  std::vector<int> nearby;
+  std::vector<int> own_nearby;
+  std::vector<int>& nearby = context.scratch ? *context.scratch : own_nearby;
   for (std::size_t k = 0; k < group.size(); ++k)
   {
     const auto consider = [&](int j) {

@@ -585,29 +585,42 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
           push(pair);
       });
 
-  // During an event the grid finds the balls near a point: those listed in cells around it.
-  class GridNeighbours : public Neighbours
+  // During an event, the balls near a point are those whose boxes reach it: looked for in the
+  // cells around it if there is a grid, else among all balls, by comparisons alone.
+  class PathNeighbours : public Neighbours
   {
   public:
-    GridNeighbours(BallGrid<S>& grid, const TableState<S>& state) : grid_(grid), state_(state) {}
+    PathNeighbours(BallGrid<S>* grid, const TableState<S>& state, const Paths& paths)
+      : grid_(grid), state_(state), paths_(paths)
+    {
+    }
     void near(const Vec2<S>& point, S distance, std::vector<int>& out) const override
     {
       out.clear();
       const Vec2<S> reach = Vec2<S>::Constant(distance + S(1e-9));
-      grid_.visitBox(point - reach, point + reach, [&](int o) {
-        if (state_.balls[o].inPlay())
+      const Vec2<S> low = point - reach, high = point + reach;
+      const auto take = [&](int o) {
+        if (state_.balls[o].inPlay() && !(paths_.low[o].array() > high.array()).any() &&
+            !(low.array() > paths_.high[o].array()).any())
           out.push_back(o);
-      });
-      std::sort(out.begin(), out.end());
+      };
+      if (grid_)
+      {
+        grid_->visitBox(low, high, take);
+        std::sort(out.begin(), out.end());
+      }
+      else
+        for (int o = 0; o < static_cast<int>(state_.balls.size()); ++o)
+          take(o);
     }
 
   private:
-    BallGrid<S>& grid_;
+    BallGrid<S>* grid_;
     const TableState<S>& state_;
+    const Paths& paths_;
   };
-  std::optional<GridNeighbours> neighbours;
-  if (grid)
-    neighbours.emplace(*grid, state);
+  const PathNeighbours neighbours(grid ? &*grid : nullptr, state, paths);
+  std::vector<int> scratch;
 
   std::vector<int> changed;
   std::vector<char> is_changed(n, 0);
@@ -660,7 +673,8 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
     context.index = queue_top_ball;
     context.other_index = queue_top_other;
     context.changed = &changed;
-    context.neighbours = neighbours ? &*neighbours : nullptr;
+    context.neighbours = &neighbours;
+    context.scratch = &scratch;
     processEvent(state, event, context);
     if (events)
       events->push_back(event);

@@ -124,6 +124,7 @@ private:
     int other_index = -1;                 ///< of event.other, for a ball-ball event
     std::vector<int>* changed = nullptr;  ///< receives the indices of the balls it changed
     const Neighbours* neighbours = nullptr;
+    std::vector<int>* scratch = nullptr;  ///< reused for neighbour lists, if given
   };
   /// Resolves the event.
   void processEvent(TableState<S>& state, const Event<S>& event, const EventContext& context) const;
