@@ -16,6 +16,8 @@ PACKAGES=(
   rviz xvfb xauth imagemagick
   # plots of the work-precision report
   gnuplot-nox
+  # instruction counts of the benchmark shots (scripts/callgrind_shots.sh)
+  valgrind
 )
 
 missing=()

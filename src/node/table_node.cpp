@@ -111,7 +111,6 @@ TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
   strike_service_ = private_node.advertiseService("strike", &TableNode::onStrike, this);
   rack_service_ = private_node.advertiseService("rack", &TableNode::onRack, this);
   reset_service_ = private_node.advertiseService("reset", &TableNode::onReset, this);
-  timer_ = node.createTimer(ros::Duration(1.0 / config_.publish_rate), &TableNode::tick, this);
   ROS_INFO("cue_sim: table '%s' (%zu cushions, %zu pockets), rack '%s', models %s/%s, tf at %.0f Hz",
            table_->name().c_str(), table_->segments().size(), table_->pockets().size(), config_.initial_rack.c_str(),
            models.ball_ball.c_str(), models.cushion.c_str(), config_.publish_rate);
@@ -174,13 +173,30 @@ double TableNode::catchUp(const ros::Time& stamp)
   return now;
 }
 
-void TableNode::tick(const ros::TimerEvent&)
+void TableNode::run()
+{
+  ros::Rate rate(config_.publish_rate);
+  while (ros::ok())
+  {
+    ros::spinOnce();
+    tick();
+    rate.sleep();
+  }
+}
+
+void TableNode::tick()
 {
   const ros::Time stamp = ros::Time::now();
   if (stamp <= last_stamp_)
     return;  // tf must never see the same stamp twice (TF_REPEATED_DATA)
   catchUp(stamp);
-  const std::vector<Ball<double>> balls = engine_->snapshot(state_);
+  // Balls at rest are where they were: no physics at all until something moves them.
+  if (state_.anyMoving() || !snapshot_at_rest_)
+  {
+    snapshot_ = engine_->snapshot(state_);
+    snapshot_at_rest_ = !state_.anyMoving();
+  }
+  const std::vector<Ball<double>>& balls = snapshot_;
   std::vector<geometry_msgs::TransformStamped> transforms;
   transforms.reserve(balls.size());
   for (const auto& b : balls)
@@ -194,6 +210,7 @@ void TableNode::tick(const ros::TimerEvent&)
 void TableNode::setRack(PhysicsState rack, double now)
 {
   state_ = placedAt(rack, now);
+  snapshot_at_rest_ = false;
   last_rack_ = rack;
   publishMarkers();
 }
@@ -243,6 +260,7 @@ bool TableNode::onStrike(Strike::Request& request, Strike::Response& response)
     return true;
   }
   state_ = struck;
+  snapshot_at_rest_ = false;
   response.success = true;
   response.time_to_rest = result.duration;
   response.num_events = static_cast<uint32_t>(result.events.size());

@@ -24,6 +24,10 @@ public:
   /// wrong with them.
   TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node);
 
+  /// Publishes at ~publish_rate and answers services until ROS shuts down. One thread does
+  /// both: at 1 kHz a timer thread handing each tick to the spinner costs more than the tick.
+  void run();
+
 private:
   struct Config
   {
@@ -37,7 +41,7 @@ private:
   };
 
   void loadTable(ros::NodeHandle& node, ros::NodeHandle& private_node);
-  void tick(const ros::TimerEvent& event);
+  void tick();
   /// Physics time [s] of a ROS time: seconds since the node started.
   double physicsTime(const ros::Time& stamp) const;
   /// Brings the live state up to `stamp` (processing its events) and returns the physics time.
@@ -55,6 +59,8 @@ private:
   std::unique_ptr<physics::Engine<double>> engine_;
   physics::TableState<double> state_;
   physics::TableState<double> last_rack_;
+  std::vector<physics::Ball<double>> snapshot_;  ///< the balls as last published
+  bool snapshot_at_rest_ = false;                ///< and nothing has moved since
   ros::Time epoch_;
   ros::Time last_stamp_;
 
@@ -63,7 +69,6 @@ private:
   ros::Publisher state_publisher_;
   ros::Publisher marker_publisher_;
   ros::ServiceServer strike_service_, rack_service_, reset_service_;
-  ros::Timer timer_;
 };
 
 }  // namespace cue_sim

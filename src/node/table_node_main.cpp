@@ -10,7 +10,7 @@ int main(int argc, char** argv)
   try
   {
     cue_sim::TableNode table(node, private_node);
-    ros::spin();
+    table.run();
   }
   catch (const std::exception& e)
   {
