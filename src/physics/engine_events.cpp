@@ -540,9 +540,11 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
   };
   /// Calls visit(o) for every other ball whose box meets ball k's: the balls it may meet.
   const auto visitNear = [&](int k, const auto& visit) {
+    const S x0 = paths.low[k].x(), y0 = paths.low[k].y(), x1 = paths.high[k].x(), y1 = paths.high[k].y();
     const auto ifBoxesMeet = [&](int o) {
-      if (!(paths.low[k].array() > paths.high[o].array()).any() &&
-          !(paths.low[o].array() > paths.high[k].array()).any())
+      const Vec2<S>& low = paths.low[o];
+      const Vec2<S>& high = paths.high[o];
+      if (!(low.x() > x1 || x0 > high.x() || low.y() > y1 || y0 > high.y()))  // NaN never culls
         visit(o);
     };
     if (grid)
@@ -557,9 +559,22 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
     return grid ? from + S(2) * grid->cell() / (state.balls[i].v.norm() + S(0.1)) : infinity<S>();
   };
   Candidate pair;
+  const Vec2<S> ball_box = Vec2<S>::Constant(params_.ball_radius + S(1e-9));
   for (std::size_t i = 0; i < n; ++i)
   {
-    computePath(state.balls[i], i, paths, windowFrom(i, std::max(state.balls[i].time, state.event_time)));
+    const Ball<S>& b = state.balls[i];
+    if (b.motion == Motion::Stationary)
+    {
+      // At rest: a point path and a one-ball box; the rest is as Paths starts it (never).
+      paths.path[i].c0 = b.r.template head<2>();
+      paths.path[i].c1.setZero();
+      paths.path[i].c2.setZero();
+      paths.first[i].ball = static_cast<int>(i);
+      paths.low[i] = paths.path[i].c0 - ball_box;
+      paths.high[i] = paths.path[i].c0 + ball_box;
+    }
+    else
+      computePath(b, i, paths, windowFrom(i, std::max(b.time, state.event_time)));
     list(i);
   }
   const auto pushOwn = [&](std::size_t i) {
@@ -575,7 +590,8 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
     }
   };
   for (std::size_t i = 0; i < n; ++i)
-    pushOwn(i);
+    if (state.balls[i].moving())
+      pushOwn(i);
   // Pairs need a translating ball: each is found from it (from the lower index if both are).
   for (std::size_t i = 0; i < n; ++i)
     if (state.balls[i].translating())
