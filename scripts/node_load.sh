@@ -2,12 +2,12 @@
 # How much of one core table_node uses while it publishes tf and ~state at 1 kHz: with the 16
 # balls of a break moving (rolling resistance lowered to 0.001 so that they keep moving), and
 # with nothing moving. CPU time is read from /proc; a tf subscriber runs, as rviz would.
-#   scripts/node_load.sh [seconds]        (default 10)
+#   scripts/node_load.sh [seconds]        (default 4: most of the break is still moving)
 set -euo pipefail
 here="$(dirname "${BASH_SOURCE[0]}")"
 source "$here/env.sh"
 cue_sim_source_devel
-seconds="${1:-10}"
+seconds="${1:-4}"
 export ROS_MASTER_URI=http://localhost:11397  # a master of its own
 mkdir -p "$ROS_LOG_DIR"
 pids=()
