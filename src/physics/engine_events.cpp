@@ -361,7 +361,7 @@ class BallGrid
 public:
   /// Cells of about two balls each, never smaller than four ball radii.
   BallGrid(const Vec2<S>& low, const Vec2<S>& high, std::size_t balls, S radius)
-    : origin_(low), listed_(balls, Rect{0, -1, 0, -1}), seen_(balls, 0)
+    : origin_(low), first_entry_(balls, -1), listed_(balls, Rect{0, -1, 0, -1}), seen_(balls, 0)
   {
     const Vec2<S> size = high - low;
     const S target = std::max<S>(S(1), S(balls) / S(2));
@@ -393,26 +393,35 @@ public:
           entry = static_cast<int>(entries_.size());
           entries_.push_back({});
         }
-        int& head = head_[index(x, y)];
-        entries_[entry] = {ball, head};
-        head = entry;
+        const std::size_t cell = index(x, y);
+        const int next = head_[cell];
+        entries_[entry] = {ball, -1, next, first_entry_[ball], static_cast<int>(cell)};
+        if (next >= 0)
+          entries_[next].prev = entry;
+        head_[cell] = entry;
+        first_entry_[ball] = entry;
       }
   }
 
   void remove(int ball)
   {
+    // Each of the ball's entries is unlinked from its cell's list where it stands: no search.
     Rect& r = listed_[ball];
-    for (int y = r.y0; y <= r.y1; ++y)
-      for (int x = r.x0; x <= r.x1; ++x)
-        for (int* link = &head_[index(x, y)]; *link >= 0; link = &entries_[*link].next)
-          if (entries_[*link].ball == ball)
-          {
-            const int entry = *link;
-            *link = entries_[entry].next;
-            entries_[entry].next = free_;
-            free_ = entry;
-            break;
-          }
+    for (int entry = first_entry_[ball]; entry >= 0;)
+    {
+      Entry& e = entries_[entry];
+      const int following = e.same_ball;
+      if (e.prev >= 0)
+        entries_[e.prev].next = e.next;
+      else
+        head_[e.cell] = e.next;
+      if (e.next >= 0)
+        entries_[e.next].prev = e.prev;
+      e.next = free_;
+      free_ = entry;
+      entry = following;
+    }
+    first_entry_[ball] = -1;
     r = Rect{0, -1, 0, -1};
   }
 
@@ -440,7 +449,9 @@ private:
   struct Entry
   {
     int ball = -1;
-    int next = -1;
+    int prev = -1, next = -1;  ///< in the cell's list
+    int same_ball = -1;        ///< the ball's next entry
+    int cell = -1;
   };
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * nx_ + static_cast<std::size_t>(x); }
   /// The cell a coordinate falls in, clamped to the grid (infinite and NaN bounds included).
@@ -482,7 +493,8 @@ private:
   int nx_ = 1, ny_ = 1;
   std::vector<int> head_;  ///< first entry of each cell's list, or -1
   std::vector<Entry> entries_;
-  int free_ = -1;  ///< first unused entry
+  int free_ = -1;                 ///< first unused entry
+  std::vector<int> first_entry_;  ///< each ball's first entry, or -1
   std::vector<Rect> listed_;
   std::vector<unsigned> seen_;
   unsigned stamp_ = 0;
