@@ -439,9 +439,8 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
       computePath(b, i, paths, windowFrom(i, std::max(b.time, state.event_time)));
     list(i);
   }
-  const auto pushOwn = [&](std::size_t i) {
-    if (std::isfinite(static_cast<double>(paths.first[i].time)))
-      push(paths.first[i]);
+  /// Queues the ball's box renewal, if its window ends before its own next event.
+  const auto pushRenewal = [&](std::size_t i) {
     if (state.balls[i].translating() && paths.window[i] < paths.first[i].time)
     {
       Candidate renewal;
@@ -450,6 +449,11 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
       renewal.ball = static_cast<int>(i);
       push(renewal);
     }
+  };
+  const auto pushOwn = [&](std::size_t i) {
+    if (std::isfinite(static_cast<double>(paths.first[i].time)))
+      push(paths.first[i]);
+    pushRenewal(i);
   };
   for (std::size_t i = 0; i < n; ++i)
     if (state.balls[i].moving())
@@ -521,14 +525,7 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
       queue.pop_back();
       drawBox(state.balls[k], k, paths, windowFrom(k, paths.window[k]));
       list(k);
-      if (paths.window[k] < paths.first[k].time)
-      {
-        Candidate renewal;
-        renewal.time = paths.window[k];
-        renewal.rank = Candidate::Renewal;
-        renewal.ball = k;
-        push(renewal);
-      }
+      pushRenewal(k);
       visitNear(k, [&](int o) {
         if (pairCandidate(state, k, o, paths, pair))
           push(pair);
