@@ -120,22 +120,28 @@ void quadraticRange(S c0, S c1, S c2, S T, S& low, S& high)
 }  // namespace
 
 template <typename S>
+inline void Engine<S>::restingPath(const Ball<S>& ball, std::size_t index, Paths& paths) const
+{
+  // A ball at rest has nothing of its own to find and a box of one ball: it costs almost
+  // nothing until something reaches it.
+  paths.path[index].c0 = ball.r.template head<2>();
+  paths.path[index].c1.setZero();
+  paths.path[index].c2.setZero();
+  paths.end[index] = infinity<S>();
+  paths.first[index] = Candidate();
+  paths.first[index].ball = static_cast<int>(index);
+  paths.window[index] = infinity<S>();
+  const Vec2<S> margin = Vec2<S>::Constant(params_.ball_radius + S(1e-9));
+  paths.low[index] = paths.path[index].c0 - margin;
+  paths.high[index] = paths.path[index].c0 + margin;
+}
+
+template <typename S>
 void Engine<S>::computePath(const Ball<S>& ball, std::size_t index, Paths& paths, S window) const
 {
   if (ball.motion == Motion::Stationary)
   {
-    // A ball at rest has nothing of its own to find and a box of one ball: it costs almost
-    // nothing until something reaches it.
-    paths.path[index].c0 = ball.r.template head<2>();
-    paths.path[index].c1.setZero();
-    paths.path[index].c2.setZero();
-    paths.end[index] = infinity<S>();
-    paths.first[index] = Candidate();
-    paths.first[index].ball = static_cast<int>(index);
-    paths.window[index] = infinity<S>();
-    const Vec2<S> margin = Vec2<S>::Constant(params_.ball_radius + S(1e-9));
-    paths.low[index] = paths.path[index].c0 - margin;
-    paths.high[index] = paths.path[index].c0 + margin;
+    restingPath(ball, index, paths);
     return;
   }
   computeOwnEvent(ball, index, paths);
@@ -217,33 +223,27 @@ void Engine<S>::computeOwnEvent(const Ball<S>& ball, std::size_t index, Paths& p
         keep(tau, Candidate::Segment, k);
     }
   }
+  // A jaw or cushion end (a contact when pressed into it, as for a straight cushion) and a
+  // pocket (the centre crossing the capture circle) are both circles around a centre.
+  const auto circleContact = [&](const auto& obstacle, S reach, S approach_slope, bool pressing,
+                                 typename Candidate::Rank rank, std::size_t k) {
+    if (outOfReach(obstacle))
+      return;
+    const S limit = horizon(first.time, base);
+    if (cannotMeet<S>(p.c0 - obstacle.centre, p.c1, p.c2, reach, limit))
+      return;
+    const S tau = contactTime(distanceGap<S>(p.c0 - obstacle.centre, p.c1, p.c2, reach), limit, approach_slope,
+                              touchTolerance(reach * reach), pressing);
+    if (tau <= limit)
+      keep(tau, rank, k);
+  };
   for (std::size_t k = 0; k < obstacles_->circles.size(); ++k)
   {
-    const auto& circle = obstacles_->circles[k];
-    if (outOfReach(circle))
-      continue;
-    const S limit = horizon(first.time, base);
-    const S reach = R + circle.radius;
-    if (cannotMeet<S>(p.c0 - circle.centre, p.c1, p.c2, reach, limit))
-      continue;
-    const S tau = contactTime(distanceGap<S>(p.c0 - circle.centre, p.c1, p.c2, reach), limit,
-                              -S(2) * reach * zeroSpeed<S>(), touchTolerance(reach * reach), true);
-    if (tau <= limit)
-      keep(tau, Candidate::Circle, k);
+    const S reach = R + obstacles_->circles[k].radius;
+    circleContact(obstacles_->circles[k], reach, -S(2) * reach * zeroSpeed<S>(), true, Candidate::Circle, k);
   }
   for (std::size_t k = 0; k < obstacles_->pockets.size(); ++k)
-  {
-    const auto& pocket = obstacles_->pockets[k];
-    if (outOfReach(pocket))
-      continue;
-    const S limit = horizon(first.time, base);
-    if (cannotMeet<S>(p.c0 - pocket.centre, p.c1, p.c2, pocket.radius, limit))
-      continue;
-    const S tau = contactTime(distanceGap<S>(p.c0 - pocket.centre, p.c1, p.c2, pocket.radius), limit, S(0),
-                              touchTolerance(pocket.radius * pocket.radius));
-    if (tau <= limit)
-      keep(tau, Candidate::Pocket, k);
-  }
+    circleContact(obstacles_->pockets[k], obstacles_->pockets[k].radius, S(0), false, Candidate::Pocket, k);
 }
 
 template <typename S>
@@ -421,20 +421,11 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
     return grid ? from + S(2) * grid->cell() / (state.balls[i].v.norm() + S(0.1)) : infinity<S>();
   };
   Candidate pair;
-  const Vec2<S> ball_box = Vec2<S>::Constant(params_.ball_radius + S(1e-9));
   for (std::size_t i = 0; i < n; ++i)
   {
     const Ball<S>& b = state.balls[i];
     if (b.motion == Motion::Stationary)
-    {
-      // At rest: a point path and a one-ball box; the rest is as Paths starts it (never).
-      paths.path[i].c0 = b.r.template head<2>();
-      paths.path[i].c1.setZero();
-      paths.path[i].c2.setZero();
-      paths.first[i].ball = static_cast<int>(i);
-      paths.low[i] = paths.path[i].c0 - ball_box;
-      paths.high[i] = paths.path[i].c0 + ball_box;
-    }
+      restingPath(b, i, paths);  // the common case of a rack, kept out of a call
     else
       computePath(b, i, paths, windowFrom(i, std::max(b.time, state.event_time)));
     list(i);

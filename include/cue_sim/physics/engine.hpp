@@ -103,13 +103,14 @@ private:
   struct Paths;
   /// The ball's path, its own next event, and its box until `window` (absolute).
   void computePath(const Ball<S>& ball, std::size_t index, Paths& paths, S window) const;
+  void restingPath(const Ball<S>& ball, std::size_t index, Paths& paths) const;
   void drawBox(const Ball<S>& ball, std::size_t index, Paths& paths, S window) const;
   void computeOwnEvent(const Ball<S>& ball, std::size_t index, Paths& paths) const;
   bool pairCandidate(const TableState<S>& state, int a, int b, const Paths& paths, Candidate& out) const;
   Event<S> eventOf(const TableState<S>& state, const Candidate& candidate) const;
 
   /// Finds the balls that may be within a distance of a point at the current event: all of
-  /// them by default, a spatial grid's few in advance().
+  /// them by default; in advance(), those whose path boxes reach the point.
   class Neighbours
   {
   public:
