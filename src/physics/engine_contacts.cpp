@@ -201,27 +201,19 @@ bool Engine<S>::resolveImpactGroup(TableState<S>& state, S time, int first, int 
   std::vector<int>& nearby = context.scratch ? *context.scratch : own_nearby;
   for (std::size_t k = 0; k < group.size(); ++k)
   {
-    const auto consider = [&](int j) {
+    nearBalls(state, context, state.balls[group[k]].r.template head<2>(), touching, nearby);
+    for (int j : nearby)
+    {
       if (std::find(group.begin(), group.end(), j) != group.end() ||
           cannotReach(state.balls[j], state.balls[group[k]].r, touching, time))
-        return;
+        continue;
       const Ball<S> at_time = evolve(state.balls[j], time, params_);
       if ((at_time.r - state.balls[group[k]].r).template head<2>().norm() <= touching)
       {
         state.balls[j] = at_time;
         group.push_back(j);
       }
-    };
-    if (context.neighbours)
-    {
-      context.neighbours->near(state.balls[group[k]].r.template head<2>(), touching, nearby);
-      for (int j : nearby)
-        consider(j);
     }
-    else
-      for (int j = 0; j < static_cast<int>(state.balls.size()); ++j)
-        if (state.balls[j].inPlay())
-          consider(j);
   }
   if (group.size() == 2 && (state.balls[first].r - state.balls[second].r).template head<2>().norm() <= touching &&
       touchingWalls(state.balls[first]).empty() && touchingWalls(state.balls[second]).empty())
