@@ -93,15 +93,26 @@ Poly4<S> distanceGap(const Vec2<S>& c0, const Vec2<S>& c1, const Vec2<S>& c2, S 
 /// True if two bodies whose relative position is d(tau) = c0 + c1 tau + c2 tau^2 cannot come
 /// within `reach` for tau in [0, limit]: a cheap bound, so that pairs that pass wide or part
 /// never reach the quartic solver. The straight part c0 + c1 tau comes no closer than its
-/// closest approach within the interval, and the curved part adds at most |c2| limit^2. A
-/// nanometre of margin keeps rounding from dismissing a grazing contact.
+/// closest approach within the interval, and the curved part adds at most |c2| limit^2. When
+/// only that curved part keeps the bound from holding, the interval is halved (each half
+/// re-expanded about its start), which quarters it: sliding balls bend by up to about 1 m/s^2,
+/// so over a long window the single bound would let most passing pairs through. A nanometre
+/// of margin keeps rounding from dismissing a grazing contact.
 template <typename S>
-bool cannotMeet(const Vec2<S>& c0, const Vec2<S>& c1, const Vec2<S>& c2, S reach, S limit)
+bool cannotMeet(const Vec2<S>& c0, const Vec2<S>& c1, const Vec2<S>& c2, S reach, S limit, int halvings = 3)
 {
   const S speed2 = c1.squaredNorm();
   S tau = speed2 > S(0) ? -c0.dot(c1) / speed2 : S(0);
   tau = std::min(std::max(tau, S(0)), limit);
-  return (c0 + tau * c1).norm() - limit * limit * c2.norm() > reach + S(1e-9);
+  const S straight = (c0 + tau * c1).norm() - reach - S(1e-9);
+  const S bend = limit * limit * c2.norm();
+  if (straight > bend)
+    return true;
+  if (halvings == 0 || !(straight > S(0)) || !std::isfinite(static_cast<double>(limit)))
+    return false;
+  const S half = limit / S(2);
+  return cannotMeet<S>(c0, c1, c2, reach, half, halvings - 1) &&
+         cannotMeet<S>(c0 + half * (c1 + half * c2), c1 + S(2) * half * c2, c2, reach, limit - half, halvings - 1);
 }
 /// Speed [m/s] at which a is closing on b along their line of centres (negative: parting).
 template <typename S>
