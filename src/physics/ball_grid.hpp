@@ -23,15 +23,14 @@ class BallGrid
 public:
   /// Cells of about two balls each, never smaller than four ball radii.
   BallGrid(const Vec2<S>& low, const Vec2<S>& high, std::size_t balls, S radius)
-    : origin_(low), first_entry_(balls, -1), listed_(balls, Rect{0, -1, 0, -1}), seen_(balls, 0)
+    : origin_(low), listed_(balls, Rect{0, -1, 0, -1})
   {
     const Vec2<S> size = high - low;
     const S target = std::max<S>(S(1), S(balls) / S(2));
     cell_ = std::max(std::sqrt(size.x() * size.y() / target), S(4) * radius);
     nx_ = std::max(1, static_cast<int>(std::ceil(size.x() / cell_)));
     ny_ = std::max(1, static_cast<int>(std::ceil(size.y() / cell_)));
-    head_.assign(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_), -1);
-    entries_.reserve(4 * balls);
+    cells_.resize(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_));
   }
 
   S cell() const { return cell_; }
@@ -43,62 +42,33 @@ public:
     r = rectOf(low, high);
     for (int y = r.y0; y <= r.y1; ++y)
       for (int x = r.x0; x <= r.x1; ++x)
-      {
-        int entry;
-        if (free_ >= 0)
-        {
-          entry = free_;
-          free_ = entries_[entry].next;
-        }
-        else
-        {
-          entry = static_cast<int>(entries_.size());
-          entries_.push_back({});
-        }
-        const std::size_t cell = index(x, y);
-        const int next = head_[cell];
-        entries_[entry] = {ball, -1, next, first_entry_[ball], static_cast<int>(cell)};
-        if (next >= 0)
-          entries_[next].prev = entry;
-        head_[cell] = entry;
-        first_entry_[ball] = entry;
-      }
+        cells_[index(x, y)].push_back({low, high, ball, r.x0, r.y0});
   }
 
   void remove(int ball)
   {
-    // Each of the ball's entries is unlinked from its cell's list where it stands: no search.
-    Rect& r = listed_[ball];
-    for (int entry = first_entry_[ball]; entry >= 0;)
-    {
-      Entry& e = entries_[entry];
-      const int following = e.same_ball;
-      if (e.prev >= 0)
-        entries_[e.prev].next = e.next;
-      else
-        head_[e.cell] = e.next;
-      if (e.next >= 0)
-        entries_[e.next].prev = e.prev;
-      e.next = free_;
-      free_ = entry;
-      entry = following;
-    }
-    first_entry_[ball] = -1;
-    r = Rect{0, -1, 0, -1};
+    const Rect& r = listed_[ball];
+    for (int y = r.y0; y <= r.y1; ++y)
+      for (int x = r.x0; x <= r.x1; ++x)
+      {
+        std::vector<Listing>& cell = cells_[index(x, y)];
+        auto it = std::find_if(cell.begin(), cell.end(), [ball](const Listing& l) { return l.ball == ball; });
+        *it = cell.back();
+        cell.pop_back();
+      }
+    listed_[ball] = Rect{0, -1, 0, -1};
   }
 
-  /// Calls visit(o) once for every ball listed in a cell the box covers.
-  template <typename Visit>
-  void visitBox(const Vec2<S>& low, const Vec2<S>& high, Visit&& visit)
+  /// Sets `out` to the balls listed in a cell the box covers whose listed boxes meet it, each
+  /// once, in no particular order.
+  void collectInBox(const Vec2<S>& low, const Vec2<S>& high, std::vector<int>& out) const
   {
-    visitRect(rectOf(low, high), visit);
+    collect(rectOf(low, high), low, high, -1, out);
   }
-  /// Calls visit(o) once for every other ball listed in a cell of this ball's box.
-  template <typename Visit>
-  void visitNear(int ball, Visit&& visit)
+  /// The same for the other balls whose boxes meet this ball's.
+  void collectNear(int ball, const Vec2<S>& low, const Vec2<S>& high, std::vector<int>& out) const
   {
-    seen_[ball] = stamp_ + 1;
-    visitRect(listed_[ball], visit);
+    collect(listed_[ball], low, high, ball, out);
   }
 
 private:
@@ -106,14 +76,13 @@ private:
   {
     int x0, x1, y0, y1;
   };
-  /// One listing of a ball in a cell: the cells' lists are linked through one pool, so placing
-  /// and moving balls does not allocate.
-  struct Entry
+  /// One listing of a ball in a cell, with its box: a walk through a cell reads one short
+  /// array and nothing else.
+  struct Listing
   {
-    int ball = -1;
-    int prev = -1, next = -1;  ///< in the cell's list
-    int same_ball = -1;        ///< the ball's next entry
-    int cell = -1;
+    Vec2<S> low, high;
+    int ball;
+    int x0, y0;  ///< the first cell of the ball's listing
   };
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * nx_ + static_cast<std::size_t>(x); }
   /// The cell a coordinate falls in, clamped to the grid (infinite and NaN bounds included).
@@ -133,33 +102,41 @@ private:
         clampCell((low.x() - origin_.x()) / cell_, nx_, false), clampCell((high.x() - origin_.x()) / cell_, nx_, true),
         clampCell((low.y() - origin_.y()) / cell_, ny_, false), clampCell((high.y() - origin_.y()) / cell_, ny_, true)};
   }
-  template <typename Visit>
-  void visitRect(const Rect& r, Visit& visit)
+  void collect(const Rect& r, const Vec2<S>& low, const Vec2<S>& high, int skip, std::vector<int>& out) const
   {
-    ++stamp_;
+    // Every listing in the cells may be taken: room for all of them, without initialising it.
+    std::size_t room = 0;
     for (int y = r.y0; y <= r.y1; ++y)
       for (int x = r.x0; x <= r.x1; ++x)
-        for (int entry = head_[index(x, y)]; entry >= 0; entry = entries_[entry].next)
+        room += cells_[index(x, y)].size();
+    if (taken_.size() < room)
+      taken_.resize(2 * room);
+    int* const taken = taken_.data();
+    std::size_t count = 0;
+    for (int y = r.y0; y <= r.y1; ++y)
+      for (int x = r.x0; x <= r.x1; ++x)
+        // Written without branches: whether a listing is taken is as good as random, and a
+        // mispredicted branch per listing would cost more than the test.
+        for (const Listing& l : cells_[index(x, y)])
         {
-          const int o = entries_[entry].ball;
-          if (seen_[o] != stamp_)
-          {
-            seen_[o] = stamp_;
-            visit(o);
-          }
+          // A ball listed in several of these cells is taken in the first cell the two
+          // listings share, and only there: no record of who was seen is needed.
+          const bool first_shared = (x == std::max(r.x0, l.x0)) & (y == std::max(r.y0, l.y0));
+          // Boxes apart on either axis are out of reach; NaN never culls.
+          const bool apart =
+              (l.low.x() > high.x()) | (low.x() > l.high.x()) | (l.low.y() > high.y()) | (low.y() > l.high.y());
+          taken[count] = l.ball;
+          count += static_cast<std::size_t>(first_shared & !apart & (l.ball != skip));
         }
+    out.assign(taken, taken + count);
   }
 
   Vec2<S> origin_;
   S cell_ = S(1);
   int nx_ = 1, ny_ = 1;
-  std::vector<int> head_;  ///< first entry of each cell's list, or -1
-  std::vector<Entry> entries_;
-  int free_ = -1;                 ///< first unused entry
-  std::vector<int> first_entry_;  ///< each ball's first entry, or -1
-  std::vector<Rect> listed_;
-  std::vector<unsigned> seen_;
-  unsigned stamp_ = 0;
+  std::vector<std::vector<Listing>> cells_;
+  std::vector<Rect> listed_;        ///< the cells each ball is listed in (none: x1 < x0)
+  mutable std::vector<int> taken_;  ///< scratch for collect()
 };
 
 }  // namespace physics

@@ -55,21 +55,29 @@ struct Engine<S>::Candidate
   }
 };
 
-/// Each ball's path from its own reference time and the absolute end of its motion state.
+/// What the event search knows of each ball: one record per ball, laid out so that a pair test
+/// reads two cache lines of each ball and nothing else.
 template <typename S>
 struct Engine<S>::Paths
 {
-  std::vector<Trajectory<S>> path;
-  std::vector<S> end;
-  /// The ball's earliest event of its own (transition, cushion, jaw, pocket): the ball changes
-  /// then, so nothing of it later than this needs finding yet.
-  std::vector<Candidate> first;
-  /// The box the ball's centre stays in until `window` (at most `first`), widened by R: balls
-  /// whose boxes are apart cannot meet before one of the windows ends. A window shorter than
-  /// the path keeps the box small on a large table; it is drawn further when it ends.
-  std::vector<S> window;
-  std::vector<Vec2<S>> low, high;
-  explicit Paths(std::size_t n) : path(n), end(n, infinity<S>()), first(n), window(n, infinity<S>()), low(n), high(n) {}
+  struct alignas(64) Record
+  {
+    /// The box the ball's centre stays in until `window` (at most `first`), widened by R: balls
+    /// whose boxes are apart cannot meet before one of the windows ends. A window shorter than
+    /// the path keeps the box small on a large table; it is drawn further when it ends.
+    Vec2<S> low, high;
+    Trajectory<S> path;  ///< about the ball's own reference time
+    S time = S(0);       ///< the ball's reference time
+    S window = infinity<S>();
+    /// The ball's earliest event of its own (transition, cushion, jaw, pocket): the ball
+    /// changes then, so nothing of it later than this needs finding yet.
+    Candidate first;
+    bool in_play = false, translating = false;
+  };
+  std::vector<Record> of;
+  explicit Paths(std::size_t n) : of(n) {}
+  Record& operator[](std::size_t i) { return of[i]; }
+  const Record& operator[](std::size_t i) const { return of[i]; }
 };
 
 namespace
@@ -124,16 +132,19 @@ inline void Engine<S>::restingPath(const Ball<S>& ball, std::size_t index, Paths
 {
   // A ball at rest has nothing of its own to find and a box of one ball: it costs almost
   // nothing until something reaches it.
-  paths.path[index].c0 = ball.r.template head<2>();
-  paths.path[index].c1.setZero();
-  paths.path[index].c2.setZero();
-  paths.end[index] = infinity<S>();
-  paths.first[index] = Candidate();
-  paths.first[index].ball = static_cast<int>(index);
-  paths.window[index] = infinity<S>();
+  auto& record = paths[index];
+  record.path.c0 = ball.r.template head<2>();
+  record.path.c1.setZero();
+  record.path.c2.setZero();
+  record.time = ball.time;
+  record.first = Candidate();
+  record.first.ball = static_cast<int>(index);
+  record.window = infinity<S>();
+  record.in_play = true;
+  record.translating = false;
   const Vec2<S> margin = Vec2<S>::Constant(params_.ball_radius + S(1e-9));
-  paths.low[index] = paths.path[index].c0 - margin;
-  paths.high[index] = paths.path[index].c0 + margin;
+  record.low = record.path.c0 - margin;
+  record.high = record.path.c0 + margin;
 }
 
 template <typename S>
@@ -151,27 +162,31 @@ void Engine<S>::computePath(const Ball<S>& ball, std::size_t index, Paths& paths
 template <typename S>
 void Engine<S>::drawBox(const Ball<S>& ball, std::size_t index, Paths& paths, S window) const
 {
-  paths.window[index] = std::min(window, paths.first[index].time);
+  auto& record = paths[index];
+  record.window = std::min(window, record.first.time);
   // A nanometre more than R, so that rounding never parts boxes of balls that touch.
   const S margin = params_.ball_radius + S(1e-9);
-  const Trajectory<S>& p = paths.path[index];
-  const S T = ball.translating() ? paths.window[index] - ball.time : S(0);
+  const Trajectory<S>& p = record.path;
+  const S T = ball.translating() ? record.window - ball.time : S(0);
   for (int axis = 0; axis < 2; ++axis)
   {
     S low, high;
     quadraticRange(p.c0[axis], p.c1[axis], p.c2[axis], T, low, high);
-    paths.low[index][axis] = low - margin;
-    paths.high[index][axis] = high + margin;
+    record.low[axis] = low - margin;
+    record.high[axis] = high + margin;
   }
 }
 
 template <typename S>
 void Engine<S>::computeOwnEvent(const Ball<S>& ball, std::size_t index, Paths& paths) const
 {
-  paths.path[index] = trajectoryFrom(ball, ball.time, params_);
+  auto& record = paths[index];
+  record.path = trajectoryFrom(ball, ball.time, params_);
+  record.time = ball.time;
+  record.in_play = ball.inPlay();
+  record.translating = ball.translating();
   const S end = ball.moving() ? ball.time + timeToTransition(ball, params_) : infinity<S>();
-  paths.end[index] = end;
-  Candidate& first = paths.first[index];
+  Candidate& first = record.first;
   first = Candidate();
   first.ball = static_cast<int>(index);
   if (!ball.inPlay())
@@ -183,7 +198,7 @@ void Engine<S>::computeOwnEvent(const Ball<S>& ball, std::size_t index, Paths& p
   // cushions, jaws and pockets out of reach are dismissed by a bound, not solved.
   const S R = params_.ball_radius;
   const S base = ball.time;
-  const Trajectory<S>& p = paths.path[index];
+  const Trajectory<S>& p = record.path;
   // The box the centre sweeps until the earliest contact found so far: an obstacle whose own
   // box it misses is out of reach.
   Vec2<S> low, high;
@@ -247,31 +262,31 @@ void Engine<S>::computeOwnEvent(const Ball<S>& ball, std::size_t index, Paths& p
 }
 
 template <typename S>
-bool Engine<S>::pairCandidate(const TableState<S>& state, int a, int b, const Paths& paths, Candidate& out) const
+bool Engine<S>::pairCandidate(int a, int b, const Paths& paths, Candidate& out) const
 {
-  const Ball<S>& ba = state.balls[a];
-  const Ball<S>& bb = state.balls[b];
-  if (!ba.inPlay() || !bb.inPlay() || (!ba.translating() && !bb.translating()) ||
-      (paths.low[a].array() > paths.high[b].array()).any() || (paths.low[b].array() > paths.high[a].array()).any())
+  const auto& ra = paths[a];
+  const auto& rb = paths[b];
+  if (!ra.in_play || !rb.in_play || (!ra.translating && !rb.translating) || (ra.low.array() > rb.high.array()).any() ||
+      (rb.low.array() > ra.high.array()).any())
     return false;
   // The pair belongs to the scan of its translating ball, the lower index if both translate.
   int i = a, j = b;
-  if (!ba.translating() || (bb.translating() && b < a))
+  if (!ra.translating || (rb.translating && b < a))
     std::swap(i, j);
-  const Ball<S>& bi = state.balls[i];
-  const Ball<S>& bj = state.balls[j];
+  const auto& ri = paths[i];
+  const auto& rj = paths[j];
   // Both paths about the later of the two reference times: a function of the pair alone.
-  const S base = std::max(bi.time, bj.time);
-  const Trajectory<S> pi = shifted(paths.path[i], base - bi.time);
-  const Trajectory<S> pj = shifted(paths.path[j], base - bj.time);
+  const S base = std::max(ri.time, rj.time);
+  const Trajectory<S> pi = shifted(ri.path, base - ri.time);
+  const Trajectory<S> pj = shifted(rj.path, base - rj.time);
   // Nothing later than either ball's own next event needs finding: that event changes it.
-  const S limit = horizon(std::min(paths.first[i].time, paths.first[j].time), base);
+  const S limit = horizon(std::min(ri.first.time, rj.first.time), base);
   const S R = params_.ball_radius;
   const Vec2<S> c0 = pi.c0 - pj.c0, c1 = pi.c1 - pj.c1, c2 = pi.c2 - pj.c2;
   // Dismissed if they cannot meet before a window ends (a contact after that is looked for
   // again when the window is drawn further); otherwise solved over the whole horizon, so the
   // result never depends on the windows.
-  if (cannotMeet<S>(c0, c1, c2, S(2) * R, horizon(std::min(paths.window[i], paths.window[j]), base)))
+  if (cannotMeet<S>(c0, c1, c2, S(2) * R, horizon(std::min(ri.window, rj.window), base)))
     return false;
   const S tau = contactTime(distanceGap<S>(c0, c1, c2, S(2) * R), limit, -S(4) * R * zeroSpeed<S>(),
                             touchTolerance(S(4) * R * R), true);
@@ -338,12 +353,12 @@ Event<S> Engine<S>::nextEvent(const TableState<S>& state) const
     }
   };
   for (std::size_t i = 0; i < n; ++i)
-    if (std::isfinite(static_cast<double>(paths.first[i].time)))
-      keep(paths.first[i]);
+    if (std::isfinite(static_cast<double>(paths[i].first.time)))
+      keep(paths[i].first);
   Candidate pair;
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 1; j < n; ++j)
-      if (pairCandidate(state, static_cast<int>(i), static_cast<int>(j), paths, pair))
+      if (pairCandidate(static_cast<int>(i), static_cast<int>(j), paths, pair))
         keep(pair);
   return found ? eventOf(state, best) : Event<S>();
 }
@@ -396,25 +411,25 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
     if (!grid)
       return;
     if (state.balls[i].inPlay())
-      grid->place(static_cast<int>(i), paths.low[i], paths.high[i]);
+      grid->place(static_cast<int>(i), paths[i].low, paths[i].high);
     else
       grid->remove(static_cast<int>(i));
   };
   /// Calls visit(o) for every other ball whose box meets ball k's: the balls it may meet.
+  std::vector<int> near_k;
   const auto visitNear = [&](int k, const auto& visit) {
-    const S x0 = paths.low[k].x(), y0 = paths.low[k].y(), x1 = paths.high[k].x(), y1 = paths.high[k].y();
-    const auto ifBoxesMeet = [&](int o) {
-      const Vec2<S>& low = paths.low[o];
-      const Vec2<S>& high = paths.high[o];
-      if (!(low.x() > x1 || x0 > high.x() || low.y() > y1 || y0 > high.y()))  // NaN never culls
-        visit(o);
-    };
     if (grid)
-      grid->visitNear(k, ifBoxesMeet);
-    else
-      for (int o = 0; o < static_cast<int>(n); ++o)
-        if (o != k)
-          ifBoxesMeet(o);
+    {
+      grid->collectNear(k, paths[k].low, paths[k].high, near_k);
+      for (int o : near_k)
+        visit(o);
+      return;
+    }
+    const Vec2<S>& low = paths[k].low;
+    const Vec2<S>& high = paths[k].high;
+    for (int o = 0; o < static_cast<int>(n); ++o)
+      if (o != k && !(paths[o].low.array() > high.array()).any() && !(low.array() > paths[o].high.array()).any())
+        visit(o);
   };
   // A ball's box covers about two cells of its travel; then it is drawn further.
   const auto windowFrom = [&](std::size_t i, S from) {
@@ -432,18 +447,18 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
   }
   /// Queues the ball's box renewal, if its window ends before its own next event.
   const auto pushRenewal = [&](std::size_t i) {
-    if (state.balls[i].translating() && paths.window[i] < paths.first[i].time)
+    if (state.balls[i].translating() && paths[i].window < paths[i].first.time)
     {
       Candidate renewal;
-      renewal.time = paths.window[i];
+      renewal.time = paths[i].window;
       renewal.rank = Candidate::Renewal;
       renewal.ball = static_cast<int>(i);
       push(renewal);
     }
   };
   const auto pushOwn = [&](std::size_t i) {
-    if (std::isfinite(static_cast<double>(paths.first[i].time)))
-      push(paths.first[i]);
+    if (std::isfinite(static_cast<double>(paths[i].first.time)))
+      push(paths[i].first);
     pushRenewal(i);
   };
   for (std::size_t i = 0; i < n; ++i)
@@ -454,7 +469,7 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
     if (state.balls[i].translating())
       visitNear(static_cast<int>(i), [&](int o) {
         if (!(state.balls[o].translating() && o < static_cast<int>(i)) &&
-            pairCandidate(state, static_cast<int>(i), o, paths, pair))
+            pairCandidate(static_cast<int>(i), o, paths, pair))
           push(pair);
       });
 
@@ -463,7 +478,7 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
   class PathNeighbours : public Neighbours
   {
   public:
-    PathNeighbours(BallGrid<S>* grid, const TableState<S>& state, const Paths& paths)
+    PathNeighbours(const BallGrid<S>* grid, const TableState<S>& state, const Paths& paths)
       : grid_(grid), state_(state), paths_(paths)
     {
     }
@@ -472,23 +487,21 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
       out.clear();
       const Vec2<S> reach = Vec2<S>::Constant(distance + S(1e-9));
       const Vec2<S> low = point - reach, high = point + reach;
-      const auto take = [&](int o) {
-        if (state_.balls[o].inPlay() && !(paths_.low[o].array() > high.array()).any() &&
-            !(low.array() > paths_.high[o].array()).any())
-          out.push_back(o);
-      };
       if (grid_)
       {
-        grid_->visitBox(low, high, take);
+        grid_->collectInBox(low, high, out);
+        out.erase(std::remove_if(out.begin(), out.end(), [&](int o) { return !state_.balls[o].inPlay(); }), out.end());
         std::sort(out.begin(), out.end());
+        return;
       }
-      else
-        for (int o = 0; o < static_cast<int>(state_.balls.size()); ++o)
-          take(o);
+      for (int o = 0; o < static_cast<int>(state_.balls.size()); ++o)
+        if (state_.balls[o].inPlay() && !(paths_[o].low.array() > high.array()).any() &&
+            !(low.array() > paths_[o].high.array()).any())
+          out.push_back(o);
     }
 
   private:
-    BallGrid<S>* grid_;
+    const BallGrid<S>* grid_;
     const TableState<S>& state_;
     const Paths& paths_;
   };
@@ -514,11 +527,11 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
       const int k = queue.front().candidate.ball;
       std::pop_heap(queue.begin(), queue.end(), later);
       queue.pop_back();
-      drawBox(state.balls[k], k, paths, windowFrom(k, paths.window[k]));
+      drawBox(state.balls[k], k, paths, windowFrom(k, paths[k].window));
       list(k);
       pushRenewal(k);
       visitNear(k, [&](int o) {
-        if (pairCandidate(state, k, o, paths, pair))
+        if (pairCandidate(k, o, paths, pair))
           push(pair);
       });
       continue;
@@ -559,7 +572,7 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
       pushOwn(k);
       if (state.balls[k].inPlay())
         visitNear(k, [&](int o) {
-          if (!(is_changed[o] && o < k) && pairCandidate(state, k, o, paths, pair))
+          if (!(is_changed[o] && o < k) && pairCandidate(k, o, paths, pair))
             push(pair);
         });
     }

@@ -99,21 +99,30 @@ Poly4<S> distanceGap(const Vec2<S>& c0, const Vec2<S>& c1, const Vec2<S>& c2, S 
 /// so over a long window the single bound would let most passing pairs through. A nanometre
 /// of margin keeps rounding from dismissing a grazing contact.
 template <typename S>
-bool cannotMeet(const Vec2<S>& c0, const Vec2<S>& c1, const Vec2<S>& c2, S reach, S limit, int halvings = 3)
+bool cannotMeetWithin(const Vec2<S>& c0, const Vec2<S>& c1, const Vec2<S>& c2, S c2_norm, S reach, S limit,
+                      int halvings)
 {
   const S speed2 = c1.squaredNorm();
   S tau = speed2 > S(0) ? -c0.dot(c1) / speed2 : S(0);
   tau = std::min(std::max(tau, S(0)), limit);
-  const S straight = (c0 + tau * c1).norm() - reach - S(1e-9);
-  const S bend = limit * limit * c2.norm();
-  if (straight > bend)
+  const S closest2 = (c0 + tau * c1).squaredNorm();
+  const S needed = reach + limit * limit * c2_norm;
+  if (closest2 > needed * needed)
     return true;
-  if (halvings == 0 || !(straight > S(0)) || !std::isfinite(static_cast<double>(limit)))
+  if (halvings == 0 || !(closest2 > reach * reach) || !std::isfinite(static_cast<double>(limit)))
     return false;
   const S half = limit / S(2);
-  return cannotMeet<S>(c0, c1, c2, reach, half, halvings - 1) &&
-         cannotMeet<S>(c0 + half * (c1 + half * c2), c1 + S(2) * half * c2, c2, reach, limit - half, halvings - 1);
+  return cannotMeetWithin<S>(c0, c1, c2, c2_norm, reach, half, halvings - 1) &&
+         cannotMeetWithin<S>(c0 + half * (c1 + half * c2), c1 + S(2) * half * c2, c2, c2_norm, reach, limit - half,
+                             halvings - 1);
 }
+
+template <typename S>
+bool cannotMeet(const Vec2<S>& c0, const Vec2<S>& c1, const Vec2<S>& c2, S reach, S limit)
+{
+  return cannotMeetWithin<S>(c0, c1, c2, c2.norm(), reach + S(1e-9), limit, 3);
+}
+
 /// Speed [m/s] at which a is closing on b along their line of centres (negative: parting).
 template <typename S>
 S closingSpeed(const Ball<S>& a, const Ball<S>& b)

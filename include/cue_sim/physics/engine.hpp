@@ -97,8 +97,8 @@ public:
 
 private:
   struct Obstacles;
-  /// Event finding (engine_events.cpp): a candidate event of one ball or pair, and each ball's
-  /// path and motion end, computed once per change of the ball.
+  /// Event finding (engine_events.cpp): a candidate event of one ball or pair, and what the
+  /// search knows of each ball (path, own next event, box), computed once per change of the ball.
   struct Candidate;
   struct Paths;
   /// The ball's path, its own next event, and its box until `window` (absolute).
@@ -106,7 +106,7 @@ private:
   void restingPath(const Ball<S>& ball, std::size_t index, Paths& paths) const;
   void drawBox(const Ball<S>& ball, std::size_t index, Paths& paths, S window) const;
   void computeOwnEvent(const Ball<S>& ball, std::size_t index, Paths& paths) const;
-  bool pairCandidate(const TableState<S>& state, int a, int b, const Paths& paths, Candidate& out) const;
+  bool pairCandidate(int a, int b, const Paths& paths, Candidate& out) const;
   Event<S> eventOf(const TableState<S>& state, const Candidate& candidate) const;
 
   /// Finds the balls that may be within a distance of a point at the current event: all of
