@@ -60,6 +60,7 @@ struct Engine<S>::Candidate
 template <typename S>
 struct Engine<S>::Paths
 {
+  /// Every field is set by restingPath or computePath before it is read.
   struct alignas(64) Record
   {
     /// The box the ball's centre stays in until `window` (at most `first`), widened by R: balls
@@ -67,12 +68,12 @@ struct Engine<S>::Paths
     /// the path keeps the box small on a large table; it is drawn further when it ends.
     Vec2<S> low, high;
     Trajectory<S> path;  ///< about the ball's own reference time
-    S time = S(0);       ///< the ball's reference time
-    S window = infinity<S>();
+    S time;              ///< the ball's reference time
+    S window;
     /// The ball's earliest event of its own (transition, cushion, jaw, pocket): the ball
     /// changes then, so nothing of it later than this needs finding yet.
     Candidate first;
-    bool in_play = false, translating = false;
+    bool in_play, translating;
   };
   std::vector<Record> of;
   explicit Paths(std::size_t n) : of(n) {}
@@ -425,11 +426,14 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
         visit(o);
       return;
     }
-    const Vec2<S>& low = paths[k].low;
-    const Vec2<S>& high = paths[k].high;
+    const S x0 = paths[k].low.x(), y0 = paths[k].low.y(), x1 = paths[k].high.x(), y1 = paths[k].high.y();
     for (int o = 0; o < static_cast<int>(n); ++o)
-      if (o != k && !(paths[o].low.array() > high.array()).any() && !(low.array() > paths[o].high.array()).any())
+    {
+      const Vec2<S>& low = paths[o].low;
+      const Vec2<S>& high = paths[o].high;
+      if (o != k && !(low.x() > x1 || x0 > high.x() || low.y() > y1 || y0 > high.y()))  // NaN never culls
         visit(o);
+    }
   };
   // A ball's box covers about two cells of its travel; then it is drawn further.
   const auto windowFrom = [&](std::size_t i, S from) {
@@ -443,7 +447,8 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
       restingPath(b, i, paths);  // the common case of a rack, kept out of a call
     else
       computePath(b, i, paths, windowFrom(i, std::max(b.time, state.event_time)));
-    list(i);
+    if (grid)
+      list(i);
   }
   /// Queues the ball's box renewal, if its window ends before its own next event.
   const auto pushRenewal = [&](std::size_t i) {
