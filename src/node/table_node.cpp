@@ -74,6 +74,7 @@ TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
       throw std::runtime_error("frame ids must be non-empty and without a leading '/', got '" + *frame + "'");
   if (!(config_.rack_gap >= 0 && config_.rack_gap < 0.01))
     throw std::runtime_error("~rack_gap must be in [0, 0.01) m");
+  loadNoise(private_node);
 
   physics::PhysicsParams<double> params;
   for (const auto& field : physics::physicsParamFields())
@@ -106,14 +107,37 @@ TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
 
   state_publisher_ = private_node.advertise<cue_sim::TableState>("state", 10);
   marker_publisher_ = private_node.advertise<visualization_msgs::MarkerArray>("markers", 1, true);
-  epoch_ = ros::Time::now();
-  setRack(rack, 0.0);
+  event_publisher_ = private_node.advertise<cue_sim::Event>("events", 1000);
+  pool_ = std::make_unique<physics::ThreadPool>();
+  setRack(rack, ros::Time::now());
   strike_service_ = private_node.advertiseService("strike", &TableNode::onStrike, this);
+  predict_service_ = private_node.advertiseService("predict", &TableNode::onPredict, this);
+  predict_batch_service_ = private_node.advertiseService("predict_batch", &TableNode::onPredictBatch, this);
   rack_service_ = private_node.advertiseService("rack", &TableNode::onRack, this);
   reset_service_ = private_node.advertiseService("reset", &TableNode::onReset, this);
   ROS_INFO("cue_sim: table '%s' (%zu cushions, %zu pockets), rack '%s', models %s/%s, tf at %.0f Hz",
            table_->name().c_str(), table_->segments().size(), table_->pockets().size(), config_.initial_rack.c_str(),
            models.ball_ball.c_str(), models.cushion.c_str(), config_.publish_rate);
+}
+
+void TableNode::loadNoise(ros::NodeHandle& private_node)
+{
+  // Off by default; the deviations default to those of the computational pool tournaments.
+  physics::ExecutionNoise& noise = config_.noise;
+  private_node.param("noise/enabled", config_.noise_enabled, false);
+  private_node.param("noise/speed", noise.speed, noise.speed);
+  private_node.param("noise/phi", noise.phi, noise.phi);
+  private_node.param("noise/theta", noise.theta, noise.theta);
+  private_node.param("noise/a", noise.a, noise.a);
+  private_node.param("noise/b", noise.b, noise.b);
+  private_node.param("noise/seed", config_.noise_seed, 0);
+  const std::string why = noise.validate();
+  if (!why.empty())
+    throw std::runtime_error("~" + why);
+  if (config_.noise_seed < 0)
+    throw std::runtime_error("~noise/seed must be >= 0");
+  live_cue_ = physics::NoisyCue(config_.noise_enabled ? noise : physics::ExecutionNoise::none(),
+                                static_cast<std::uint64_t>(config_.noise_seed));
 }
 
 void TableNode::loadTable(ros::NodeHandle& node, ros::NodeHandle& private_node)
@@ -157,12 +181,15 @@ double TableNode::physicsTime(const ros::Time& stamp) const
 double TableNode::catchUp(const ros::Time& stamp)
 {
   const double now = std::max(physicsTime(stamp), state_.time);
+  if (!state_.anyMoving())
+  {
+    state_.time = now;  // nothing moves: no physics to do
+    return now;
+  }
+  std::vector<physics::Event<double>> events;
   try
   {
-    if (state_.anyMoving())
-      engine_->advance(state_, now);
-    else
-      state_.time = now;  // nothing moves: no physics to do
+    engine_->advance(state_, now, &events);
   }
   catch (const physics::EventLimitError& e)
   {
@@ -170,7 +197,15 @@ double TableNode::catchUp(const ros::Time& stamp)
     // never dies on a pathological state. The state is left at its last event.
     ROS_ERROR_THROTTLE(1.0, "cue_sim: %s", e.what());
   }
+  for (const auto& e : events)
+    event_publisher_.publish(toEventMsg(e, *table_, epoch_ + ros::Duration(e.time), e.time));
   return now;
+}
+
+void TableNode::rebaseAtRest(const ros::Time& stamp)
+{
+  epoch_ = stamp;
+  state_ = placedAt(state_, 0.0);
 }
 
 void TableNode::run()
@@ -207,9 +242,10 @@ void TableNode::tick()
   last_stamp_ = stamp;
 }
 
-void TableNode::setRack(PhysicsState rack, double now)
+void TableNode::setRack(PhysicsState rack, const ros::Time& stamp)
 {
-  state_ = placedAt(rack, now);
+  epoch_ = stamp;
+  state_ = placedAt(rack, 0.0);
   snapshot_at_rest_ = false;
   last_rack_ = rack;
   publishMarkers();
@@ -220,56 +256,6 @@ void TableNode::publishMarkers()
   marker_publisher_.publish(tableMarkers(*table_, state_, engine_->params().ball_radius,
                                          engine_->params().cushion_height,
                                          {config_.table_frame, config_.ball_frame_prefix}));
-}
-
-bool TableNode::onStrike(Strike::Request& request, Strike::Response& response)
-{
-  physics::CueStrike<double> strike;
-  strike.speed = request.speed;
-  strike.phi = request.phi;
-  strike.theta = request.theta;
-  strike.a = request.a;
-  strike.b = request.b;
-  const double now = catchUp(ros::Time::now());
-  std::string why = engine_->whyNotStrikable(state_, request.ball_id, strike);
-  if (why.empty() && state_.anyMoving() && !config_.allow_strike_while_moving)
-    why = "balls are still moving (set ~allow_strike_while_moving to strike anyway)";
-  if (!why.empty())
-  {
-    response.success = false;
-    response.message = why;
-    return true;
-  }
-  // Run the shot to rest on a copy first: it answers the request, and a shot the engine
-  // cannot finish is refused before it touches the table.
-  PhysicsState struck = state_;
-  engine_->strike(struck, request.ball_id, strike);
-  const Ball<double>& ball = struck.balls[struck.indexOf(request.ball_id)];
-  response.ball_velocity = toVector3(ball.v);
-  response.ball_angular_velocity = toVector3(ball.w);
-  PhysicsState prediction = struck;
-  physics::ShotResult<double> result;
-  try
-  {
-    result = engine_->simulateToRest(prediction);
-  }
-  catch (const physics::EventLimitError& e)
-  {
-    response.success = false;
-    response.message = std::string("the shot was not simulated: ") + e.what();
-    return true;
-  }
-  state_ = struck;
-  snapshot_at_rest_ = false;
-  response.success = true;
-  response.time_to_rest = result.duration;
-  response.num_events = static_cast<uint32_t>(result.events.size());
-  std::ostringstream message;
-  message << "struck ball " << request.ball_id << " at t = " << now << " s; "
-          << (result.at_rest ? "at rest after " : "still moving after ") << result.duration << " s, "
-          << result.events.size() << " events";
-  response.message = message.str();
-  return true;
 }
 
 bool TableNode::onRack(Rack::Request& request, Rack::Response& response)
@@ -323,8 +309,9 @@ bool TableNode::onRack(Rack::Request& request, Rack::Response& response)
     response.message = "positions: " + why;
     return true;
   }
-  const double now = catchUp(ros::Time::now());
-  setRack(rack, now);
+  const ros::Time stamp = ros::Time::now();
+  catchUp(stamp);
+  setRack(rack, stamp);
   response.success = true;
   response.message = "racked '" + request.layout + "': " + std::to_string(rack.balls.size()) + " balls";
   return true;
@@ -332,8 +319,9 @@ bool TableNode::onRack(Rack::Request& request, Rack::Response& response)
 
 bool TableNode::onReset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response)
 {
-  const double now = catchUp(ros::Time::now());
-  setRack(last_rack_, now);
+  const ros::Time stamp = ros::Time::now();
+  catchUp(stamp);
+  setRack(last_rack_, stamp);
   response.success = true;
   response.message = "back to the last rack (" + std::to_string(last_rack_.balls.size()) + " balls)";
   return true;

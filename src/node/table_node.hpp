@@ -3,6 +3,8 @@
 // change the state only after validating their request in full.
 #pragma once
 
+#include <cue_sim/Predict.h>
+#include <cue_sim/PredictBatch.h>
 #include <cue_sim/Rack.h>
 #include <cue_sim/Strike.h>
 #include <ros/ros.h>
@@ -14,6 +16,8 @@
 #include <string>
 
 #include "cue_sim/physics/engine.hpp"
+#include "cue_sim/physics/execution_noise.hpp"
+#include "cue_sim/physics/thread_pool.hpp"
 
 namespace cue_sim
 {
@@ -38,19 +42,34 @@ private:
     std::string ball_frame_prefix = "ball_";
     std::string initial_rack = "eight";
     double rack_gap = 1e-5;
+    bool noise_enabled = false;  ///< execution noise on ~strike
+    physics::ExecutionNoise noise;
+    int noise_seed = 0;
   };
 
   void loadTable(ros::NodeHandle& node, ros::NodeHandle& private_node);
   void tick();
-  /// Physics time [s] of a ROS time: seconds since the node started.
+  void loadNoise(ros::NodeHandle& private_node);
+  /// Physics time [s] of a ROS time: seconds since epoch_.
   double physicsTime(const ros::Time& stamp) const;
-  /// Brings the live state up to `stamp` (processing its events) and returns the physics time.
+  /// Brings the live state up to `stamp` (processing its events, published on ~events) and
+  /// returns the physics time.
   double catchUp(const ros::Time& stamp);
-  void setRack(physics::TableState<double> rack, double now);
+  /// Makes `stamp` physics time 0 for a table at rest: every shot from rest then starts at
+  /// time 0, as a prediction does, and gives the prediction's numbers bit for bit.
+  void rebaseAtRest(const ros::Time& stamp);
+  void setRack(physics::TableState<double> rack, const ros::Time& stamp);
   void publishStaticFrames(const std::string& urdf_xml);
   void publishMarkers();
 
+  // Shots (shot_services.cpp).
   bool onStrike(Strike::Request& request, Strike::Response& response);
+  bool onPredict(Predict::Request& request, Predict::Response& response);
+  bool onPredictBatch(PredictBatch::Request& request, PredictBatch::Response& response);
+  /// The table a prediction starts from: the given balls, or the live table if none are given
+  /// (which must be at rest); every ball referred to time 0. Empty if it can, else why not.
+  std::string predictionStart(const std::vector<BallState>& balls, physics::TableState<double>& start);
+
   bool onRack(Rack::Request& request, Rack::Response& response);
   bool onReset(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
 
@@ -61,6 +80,8 @@ private:
   physics::TableState<double> last_rack_;
   std::vector<physics::Ball<double>> snapshot_;  ///< the balls as last published
   bool snapshot_at_rest_ = false;                ///< and nothing has moved since
+  physics::NoisyCue live_cue_;                   ///< ~strike's execution noise
+  std::unique_ptr<physics::ThreadPool> pool_;    ///< ~predict_batch's threads
   ros::Time epoch_;
   ros::Time last_stamp_;
 
@@ -68,7 +89,8 @@ private:
   tf2_ros::StaticTransformBroadcaster static_broadcaster_;
   ros::Publisher state_publisher_;
   ros::Publisher marker_publisher_;
-  ros::ServiceServer strike_service_, rack_service_, reset_service_;
+  ros::Publisher event_publisher_;
+  ros::ServiceServer strike_service_, predict_service_, predict_batch_service_, rack_service_, reset_service_;
 };
 
 }  // namespace cue_sim

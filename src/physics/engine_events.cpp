@@ -561,7 +561,13 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
     context.scratch = &scratch;
     processEvent(state, event, context);
     if (events)
-      events->push_back(event);
+    {
+      Event<S> record = event;
+      record.speed = state.balls[queue_top_ball].v.norm();
+      if (queue_top_other >= 0)
+        record.other_speed = state.balls[queue_top_other].v.norm();
+      events->push_back(record);
+    }
     // Only the balls the event changed get new candidates; every other candidate stands.
     std::sort(changed.begin(), changed.end());
     changed.erase(std::unique(changed.begin(), changed.end()), changed.end());

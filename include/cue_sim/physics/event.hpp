@@ -33,6 +33,8 @@ struct Event
   int ball = -1;           ///< id of the (first) ball
   int other = -1;          ///< id of the second ball (BallBall) or -1
   int obstacle = -1;       ///< index of the cushion, circle or pocket, or -1
+  S speed = S(0);          ///< [m/s] the ball's speed right after the event (recorded by advance)
+  S other_speed = S(0);    ///< [m/s] the other ball's, BallBall only
 
   bool valid() const { return kind != EventKind::None; }
   bool isCollision() const
