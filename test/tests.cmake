@@ -34,3 +34,8 @@ target_include_directories(node_tests PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(node_tests ${catkin_LIBRARIES})
 add_dependencies(node_tests table_node ${PROJECT_NAME}_generate_messages_cpp)
 target_compile_definitions(node_tests PRIVATE CUE_SIM_TEST_DIR="${CMAKE_CURRENT_BINARY_DIR}")
+
+add_rostest_gtest(research_tests test/node/research_interface.test test/node/test_research_interface.cpp)
+target_include_directories(research_tests PRIVATE ${catkin_INCLUDE_DIRS})
+target_link_libraries(research_tests ${catkin_LIBRARIES})
+add_dependencies(research_tests table_node ${PROJECT_NAME}_generate_messages_cpp)

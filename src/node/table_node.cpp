@@ -67,9 +67,10 @@ TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
   private_node.param("world_frame", config_.world_frame, config_.world_frame);
   private_node.param("rack", config_.initial_rack, config_.initial_rack);
   private_node.param("rack_gap", config_.rack_gap, config_.rack_gap);
+  private_node.param("ball_frame_prefix", config_.ball_frame_prefix, config_.ball_frame_prefix);
   if (!(config_.publish_rate > 0 && config_.publish_rate <= 10000))
     throw std::runtime_error("~publish_rate must be in (0, 10000] Hz");
-  for (const std::string* frame : {&config_.table_frame, &config_.world_frame})
+  for (const std::string* frame : {&config_.table_frame, &config_.world_frame, &config_.ball_frame_prefix})
     if (frame->empty() || frame->front() == '/')
       throw std::runtime_error("frame ids must be non-empty and without a leading '/', got '" + *frame + "'");
   if (!(config_.rack_gap >= 0 && config_.rack_gap < 0.01))

@@ -1,0 +1,146 @@
+// A test client of one table_node (by its name): service calls and the latest ~state, through
+// a real master. Needs a running spinner (the tests' main starts an AsyncSpinner).
+#pragma once
+
+#include <cue_sim/Predict.h>
+#include <cue_sim/PredictBatch.h>
+#include <cue_sim/Rack.h>
+#include <cue_sim/Strike.h>
+#include <cue_sim/TableState.h>
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <std_srvs/Trigger.h>
+
+#include <map>
+#include <mutex>
+#include <string>
+#include <utility>
+#include <vector>
+
+class TableClient
+{
+public:
+  explicit TableClient(const std::string& node = "/table") : node_(node)
+  {
+    EXPECT_TRUE(ros::service::waitForService(node + "/predict_batch", ros::Duration(20))) << node;
+    strike_ = nh_.serviceClient<cue_sim::Strike>(node + "/strike");
+    predict_ = nh_.serviceClient<cue_sim::Predict>(node + "/predict");
+    predict_batch_ = nh_.serviceClient<cue_sim::PredictBatch>(node + "/predict_batch");
+    rack_ = nh_.serviceClient<cue_sim::Rack>(node + "/rack");
+    state_sub_ = nh_.subscribe<cue_sim::TableState>(node + "/state", 10, [this](const cue_sim::TableStateConstPtr& m) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      last_state_ = m;
+    });
+  }
+
+  cue_sim::Rack::Response rack(const std::string& layout, const std::vector<int>& ids = {},
+                               const std::vector<std::pair<double, double>>& xy = {})
+  {
+    cue_sim::Rack srv;
+    srv.request.layout = layout;
+    for (int id : ids)
+      srv.request.ids.push_back(id);
+    for (const auto& p : xy)
+    {
+      geometry_msgs::Point point;
+      point.x = p.first;
+      point.y = p.second;
+      srv.request.positions.push_back(point);
+    }
+    EXPECT_TRUE(rack_.call(srv)) << node_;
+    return srv.response;
+  }
+
+  static cue_sim::Shot shot(int ball, double speed, double phi, double theta = 0, double a = 0, double b = 0)
+  {
+    cue_sim::Shot s;
+    s.ball_id = ball;
+    s.speed = speed;
+    s.phi = phi;
+    s.theta = theta;
+    s.a = a;
+    s.b = b;
+    return s;
+  }
+
+  cue_sim::Strike::Response strike(const cue_sim::Shot& s)
+  {
+    cue_sim::Strike srv;
+    srv.request.ball_id = s.ball_id;
+    srv.request.speed = s.speed;
+    srv.request.phi = s.phi;
+    srv.request.theta = s.theta;
+    srv.request.a = s.a;
+    srv.request.b = s.b;
+    EXPECT_TRUE(strike_.call(srv)) << node_;
+    return srv.response;
+  }
+
+  cue_sim::Prediction predict(const cue_sim::Shot& s, const std::vector<cue_sim::BallState>& balls = {},
+                              double sample_period = 0, bool noise = false, uint64_t seed = 0)
+  {
+    cue_sim::Predict srv;
+    srv.request.shot = s;
+    srv.request.balls = balls;
+    srv.request.sample_period = sample_period;
+    srv.request.noise = noise;
+    srv.request.seed = seed;
+    EXPECT_TRUE(predict_.call(srv)) << node_;
+    return srv.response.prediction;
+  }
+
+  cue_sim::PredictBatch::Response predictBatch(const std::vector<cue_sim::Shot>& shots,
+                                               const std::vector<cue_sim::BallState>& balls = {})
+  {
+    cue_sim::PredictBatch srv;
+    srv.request.shots = shots;
+    srv.request.balls = balls;
+    EXPECT_TRUE(predict_batch_.call(srv)) << node_;
+    return srv.response;
+  }
+
+  /// The first ~state message stamped after now.
+  cue_sim::TableStateConstPtr freshState()
+  {
+    const ros::Time asked = ros::Time::now();
+    for (int i = 0; i < 500; ++i)
+    {
+      ros::Duration(0.01).sleep();
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (last_state_ && last_state_->header.stamp > asked)
+        return last_state_;
+    }
+    ADD_FAILURE() << "no " << node_ << "/state message";
+    return boost::make_shared<cue_sim::TableState>();
+  }
+
+  /// The first ~state at rest, waiting at most `timeout` seconds.
+  cue_sim::TableStateConstPtr atRest(double timeout)
+  {
+    const ros::Time until = ros::Time::now() + ros::Duration(timeout);
+    while (ros::Time::now() < until)
+    {
+      const auto state = freshState();
+      if (!state->moving)
+        return state;
+    }
+    ADD_FAILURE() << node_ << ": balls still moving after " << timeout << " s";
+    return freshState();
+  }
+
+  static std::map<int, cue_sim::BallState> byId(const std::vector<cue_sim::BallState>& balls)
+  {
+    std::map<int, cue_sim::BallState> out;
+    for (const auto& b : balls)
+      out[b.id] = b;
+    return out;
+  }
+
+private:
+  std::string node_;
+  ros::NodeHandle nh_;
+  ros::ServiceClient strike_, predict_, predict_batch_, rack_;
+  ros::Subscriber state_sub_;
+  std::mutex mutex_;
+  cue_sim::TableStateConstPtr last_state_;
+};

@@ -1,0 +1,282 @@
+// The research interface through a real master: ~predict and ~predict_batch against ~strike
+// (bit for bit), ~events, execution noise, and refusals by field.
+#include <cue_sim/Event.h>
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+
+#include <cmath>
+#include <mutex>
+#include <vector>
+
+#include "table_client.hpp"
+
+namespace
+{
+const double kRadius = 0.028575, kMuSlide = 0.2, kMuRoll = 0.01, kGravity = 9.81;
+
+/// A few balls that a 1 m/s shot sends into each other and a cushion, and that rest within
+/// about 8 s.
+const std::vector<int> kIds = {0, 1, 2, 3};
+const std::vector<std::pair<double, double>> kPositions = {{-0.6, 0.0}, {0.0, 0.02}, {0.15, -0.2}, {0.3, 0.25}};
+
+void expectSameBalls(const std::vector<cue_sim::BallState>& got, const std::vector<cue_sim::BallState>& want,
+                     const std::string& what)
+{
+  const auto g = TableClient::byId(got), w = TableClient::byId(want);
+  ASSERT_EQ(g.size(), w.size()) << what;
+  for (const auto& [id, b] : w)
+  {
+    const cue_sim::BallState& a = g.at(id);
+    EXPECT_EQ(a.position.x, b.position.x) << what << ", ball " << id;
+    EXPECT_EQ(a.position.y, b.position.y) << what << ", ball " << id;
+    EXPECT_EQ(a.position.z, b.position.z) << what << ", ball " << id;
+    EXPECT_EQ(a.velocity.x, b.velocity.x) << what << ", ball " << id;
+    EXPECT_EQ(a.velocity.y, b.velocity.y) << what << ", ball " << id;
+    EXPECT_EQ(a.motion, b.motion) << what << ", ball " << id;
+    EXPECT_EQ(a.pocketed, b.pocketed) << what << ", ball " << id;
+  }
+}
+
+void expectSameEvents(const std::vector<cue_sim::Event>& got, const std::vector<cue_sim::Event>& want,
+                      const std::string& what)
+{
+  ASSERT_EQ(got.size(), want.size()) << what;
+  for (std::size_t i = 0; i < want.size(); ++i)
+  {
+    EXPECT_EQ(got[i].kind, want[i].kind) << what << ", event " << i;
+    EXPECT_EQ(got[i].ball_id, want[i].ball_id) << what << ", event " << i;
+    EXPECT_EQ(got[i].other_ball_id, want[i].other_ball_id) << what << ", event " << i;
+    EXPECT_EQ(got[i].obstacle, want[i].obstacle) << what << ", event " << i;
+    EXPECT_EQ(got[i].shot_time, want[i].shot_time) << what << ", event " << i;
+    EXPECT_EQ(got[i].ball_speed, want[i].ball_speed) << what << ", event " << i;
+    EXPECT_EQ(got[i].other_speed, want[i].other_speed) << what << ", event " << i;
+  }
+}
+
+class ResearchInterfaceTest : public ::testing::Test
+{
+protected:
+  void SetUp() override
+  {
+    events_sub_ = nh_.subscribe<cue_sim::Event>("/table/events", 1000, [this](const cue_sim::EventConstPtr& e) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      events_.push_back(*e);
+    });
+    ASSERT_TRUE(table_.rack("custom", kIds, kPositions).success);
+  }
+
+  std::vector<cue_sim::Event> eventsSince(const ros::Time& stamp)
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::vector<cue_sim::Event> out;
+    for (const auto& e : events_)
+      if (e.stamp >= stamp)
+        out.push_back(e);
+    return out;
+  }
+
+  ros::NodeHandle nh_;
+  TableClient table_;
+  ros::Subscriber events_sub_;
+  std::mutex mutex_;
+  std::vector<cue_sim::Event> events_;
+};
+
+TEST_F(ResearchInterfaceTest, StrikeDoesExactlyWhatPredictSaidBitForBit)
+{
+  const cue_sim::TableState before = *table_.atRest(5);
+  const cue_sim::Shot shot = TableClient::shot(0, 1.0, 0.05, 0.1, 0.2, -0.1);
+  const cue_sim::Prediction prediction = table_.predict(shot);
+  ASSERT_TRUE(prediction.success) << prediction.message;
+  ASSERT_GE(prediction.events.size(), 6u);
+  bool ball_ball = false, cushion = false;
+  for (const auto& e : prediction.events)
+  {
+    ball_ball = ball_ball || e.kind == cue_sim::Event::BALL_BALL;
+    cushion = cushion || e.kind == cue_sim::Event::BALL_CUSHION;
+  }
+  EXPECT_TRUE(ball_ball && cushion) << "the scene should have ball-ball and cushion events";
+
+  // Predicting left the live table as it was.
+  const cue_sim::TableState after_predict = *table_.freshState();
+  EXPECT_FALSE(after_predict.moving);
+  expectSameBalls(after_predict.balls, before.balls, "after ~predict");
+
+  const cue_sim::Strike::Response struck = table_.strike(shot);
+  ASSERT_TRUE(struck.success) << struck.message;
+  EXPECT_EQ(struck.time_to_rest, prediction.time_to_rest);
+  EXPECT_EQ(struck.num_events, prediction.events.size());
+  EXPECT_EQ(struck.executed.speed, shot.speed);  // no noise by default
+  EXPECT_EQ(struck.executed.a, shot.a);
+  const cue_sim::TableState rest = *table_.atRest(prediction.time_to_rest + 10);
+  expectSameBalls(rest.balls, prediction.final_balls, "live table at rest against the prediction");
+
+  // ~events carried every event, stamped at the strike's stamp plus its shot time.
+  const std::vector<cue_sim::Event> live = eventsSince(struck.stamp);
+  expectSameEvents(live, prediction.events, "~events against the prediction");
+  for (const auto& e : live)
+    EXPECT_NEAR((e.stamp - struck.stamp).toSec(), e.shot_time, 1e-9);
+}
+
+TEST_F(ResearchInterfaceTest, PredictFromGivenBallsMatchesTheClosedFormAndSamplesTheTrajectory)
+{
+  // One ball, struck level through its centre along +x: it slides, then rolls to rest
+  // (PHYSICS.md): tau_slide = 2 v0 / (7 mu_s g); then |5/7 v0|^2 / (2 mu_r g) of rolling.
+  cue_sim::BallState ball;
+  ball.id = 0;
+  ball.position.x = -0.8;
+  ball.position.y = 0.1;
+  const double period = 0.01;
+  const cue_sim::Prediction p = table_.predict(TableClient::shot(0, 0.4, 0.0), {ball}, period);
+  ASSERT_TRUE(p.success) << p.message;
+  ASSERT_EQ(p.final_balls.size(), 1u);
+  ASSERT_FALSE(p.samples.empty());
+  const double v0 = p.samples[0].balls[0].velocity.x;
+  ASSERT_GT(v0, 0.3);
+  const double t_slide = 2 * v0 / (7 * kMuSlide * kGravity), v_roll = 5.0 / 7.0 * v0;
+  const double distance =
+      v0 * t_slide - 0.5 * kMuSlide * kGravity * t_slide * t_slide + v_roll * v_roll / (2 * kMuRoll * kGravity);
+  EXPECT_NEAR(p.final_balls[0].position.x, -0.8 + distance, 1e-12);
+  EXPECT_EQ(p.final_balls[0].position.y, 0.1);  // nothing turns it
+  EXPECT_NEAR(p.time_to_rest, t_slide + v_roll / (kMuRoll * kGravity), 1e-12);
+  ASSERT_EQ(p.events.size(), 2u);
+  EXPECT_EQ(p.events[0].kind, cue_sim::Event::SLIDE_TO_ROLL);
+  EXPECT_EQ(p.events[1].kind, cue_sim::Event::ROLL_TO_STOP);
+  EXPECT_NEAR(p.events[0].shot_time, t_slide, 1e-12);
+  EXPECT_NEAR(p.events[0].ball_speed, v_roll, 1e-12);
+
+  // Samples every 10 ms from the strike, on the same closed form.
+  EXPECT_EQ(p.samples.size(), static_cast<std::size_t>(std::floor(p.time_to_rest / period)) + 1);
+  for (std::size_t k = 0; k < p.samples.size(); ++k)
+  {
+    const double t = k * period;
+    double x = -0.8;
+    if (t <= t_slide)
+      x += v0 * t - 0.5 * kMuSlide * kGravity * t * t;
+    else
+      x += v0 * t_slide - 0.5 * kMuSlide * kGravity * t_slide * t_slide + v_roll * (t - t_slide) -
+           0.5 * kMuRoll * kGravity * (t - t_slide) * (t - t_slide);
+    ASSERT_NEAR(p.samples[k].balls[0].position.x, x, 1e-12) << "sample " << k;
+  }
+  // The live table was not touched: it still has the four balls of the rack.
+  EXPECT_EQ(table_.freshState()->balls.size(), kIds.size());
+}
+
+TEST_F(ResearchInterfaceTest, PredictBatchGivesWhatPredictGivesShotByShot)
+{
+  std::vector<cue_sim::Shot> shots;
+  for (int k = 0; k < 7; ++k)
+    shots.push_back(TableClient::shot(0, 0.5 + 0.6 * k, -0.3 + 0.1 * k, 0.05 * k, 0.05 * (k - 3), 0.04 * (3 - k)));
+  shots.push_back(TableClient::shot(0, 20.0, 0.0));  // too fast: refused alone
+  shots.push_back(TableClient::shot(9, 1.0, 0.0));   // no ball 9 in this rack
+  const cue_sim::PredictBatch::Response batch = table_.predictBatch(shots);
+  ASSERT_TRUE(batch.success) << batch.message;
+  ASSERT_EQ(batch.predictions.size(), shots.size());
+  for (std::size_t i = 0; i < 7; ++i)
+  {
+    const cue_sim::Prediction alone = table_.predict(shots[i]);
+    const cue_sim::Prediction& in_batch = batch.predictions[i];
+    ASSERT_TRUE(in_batch.success) << in_batch.message;
+    EXPECT_EQ(in_batch.time_to_rest, alone.time_to_rest) << "shot " << i;
+    expectSameBalls(in_batch.final_balls, alone.final_balls, "shot " + std::to_string(i));
+    expectSameEvents(in_batch.events, alone.events, "shot " + std::to_string(i));
+  }
+  EXPECT_FALSE(batch.predictions[7].success);
+  EXPECT_NE(batch.predictions[7].message.find("speed"), std::string::npos) << batch.predictions[7].message;
+  EXPECT_FALSE(batch.predictions[8].success);
+  EXPECT_NE(batch.predictions[8].message.find("ball_id 9"), std::string::npos) << batch.predictions[8].message;
+}
+
+TEST_F(ResearchInterfaceTest, NoiseIsReproducibleFromItsSeedAndReportsTheShotExecuted)
+{
+  const cue_sim::Shot shot = TableClient::shot(0, 1.0, 0.0, 0.2, 0.1, 0.1);
+  const cue_sim::Prediction first = table_.predict(shot, {}, 0, true, 5);
+  const cue_sim::Prediction again = table_.predict(shot, {}, 0, true, 5);
+  const cue_sim::Prediction other = table_.predict(shot, {}, 0, true, 6);
+  ASSERT_TRUE(first.success && again.success && other.success);
+  EXPECT_NE(first.executed.phi, shot.phi);
+  EXPECT_NE(first.executed.speed, shot.speed);
+  EXPECT_EQ(first.executed.phi, again.executed.phi);
+  EXPECT_EQ(first.executed.b, again.executed.b);
+  expectSameBalls(again.final_balls, first.final_balls, "the same seed");
+  EXPECT_NE(other.executed.phi, first.executed.phi);
+  // The noisy shot is the executed one: predicting it without noise gives the same numbers.
+  const cue_sim::Prediction replay = table_.predict(first.executed);
+  EXPECT_EQ(replay.time_to_rest, first.time_to_rest);
+  expectSameBalls(replay.final_balls, first.final_balls, "the executed shot without noise");
+}
+
+TEST_F(ResearchInterfaceTest, TheNoisyTableStrikesWithNoiseAndSaysHow)
+{
+  TableClient noisy("/noisy_table");
+  ASSERT_TRUE(noisy.rack("custom", kIds, kPositions).success);
+  const cue_sim::TableState start = *noisy.atRest(5);
+  const cue_sim::Shot shot = TableClient::shot(0, 1.0, 0.0);
+  const cue_sim::Strike::Response struck = noisy.strike(shot);
+  ASSERT_TRUE(struck.success) << struck.message;
+  EXPECT_NE(struck.executed.phi, shot.phi);
+  EXPECT_NE(struck.executed.speed, shot.speed);
+  // What it reports is what it did: the executed shot, predicted from the same balls.
+  const cue_sim::Prediction p = noisy.predict(struck.executed, start.balls);
+  ASSERT_TRUE(p.success) << p.message;
+  EXPECT_EQ(p.time_to_rest, struck.time_to_rest);
+  EXPECT_EQ(p.events.size(), struck.num_events);
+}
+
+TEST_F(ResearchInterfaceTest, BadPredictionsAreRefusedByFieldAndChangeNothing)
+{
+  const cue_sim::TableState before = *table_.atRest(5);
+  const cue_sim::Shot fine = TableClient::shot(0, 1.0, 0.0);
+  cue_sim::Prediction p = table_.predict(fine, {}, 1e-5);
+  EXPECT_FALSE(p.success);
+  EXPECT_NE(p.message.find("sample_period"), std::string::npos) << p.message;
+  p = table_.predict(TableClient::shot(0, 1.0, 0.0, 0, 0.6, 0));
+  EXPECT_FALSE(p.success);
+  EXPECT_NE(p.message.find("a and b"), std::string::npos) << p.message;
+
+  cue_sim::BallState a, b;
+  a.id = 0;
+  b.id = 1;
+  b.position.x = 0.01;  // overlaps ball 0
+  p = table_.predict(fine, {a, b});
+  EXPECT_FALSE(p.success);
+  EXPECT_NE(p.message.find("balls:"), std::string::npos) << p.message;
+  b.id = 16;
+  b.position.x = 0.5;
+  p = table_.predict(fine, {a, b});
+  EXPECT_FALSE(p.success);
+  EXPECT_NE(p.message.find("balls[1].id"), std::string::npos) << p.message;
+  b.id = 1;
+  b.velocity.z = 0.1;
+  p = table_.predict(fine, {a, b});
+  EXPECT_FALSE(p.success);
+  EXPECT_NE(p.message.find("balls[1].velocity.z"), std::string::npos) << p.message;
+  b.velocity.z = 0;
+  b.position.x = 5;  // off the table
+  p = table_.predict(fine, {a, b});
+  EXPECT_FALSE(p.success);
+  EXPECT_NE(p.message.find("balls:"), std::string::npos) << p.message;
+
+  const auto batch = table_.predictBatch({fine}, {a, b});
+  EXPECT_FALSE(batch.success);
+  EXPECT_NE(batch.message.find("balls:"), std::string::npos) << batch.message;
+  expectSameBalls(table_.freshState()->balls, before.balls, "after refused predictions");
+
+  // While the live table moves, it is not a start for a prediction.
+  ASSERT_TRUE(table_.strike(fine).success);
+  p = table_.predict(fine);
+  EXPECT_FALSE(p.success);
+  EXPECT_NE(p.message.find("moving"), std::string::npos) << p.message;
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "research_interface_test");
+  ros::AsyncSpinner spinner(2);
+  spinner.start();
+  const int result = RUN_ALL_TESTS();
+  ros::shutdown();
+  return result;
+}
