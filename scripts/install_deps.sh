@@ -8,7 +8,7 @@ PACKAGES=(
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev
   # ROS 1 (Debian's own packages, no /opt/ros)
   ros-message-runtime libroscpp-dev ros-std-msgs ros-geometry-msgs libstd-msgs-dev libgeometry-msgs-dev
-  libvisualization-msgs-dev libstd-srvs-dev ros-std-srvs libtf2-ros-dev libtf2-geometry-msgs-dev
+  libvisualization-msgs-dev libros-rosgraph-msgs-dev libstd-srvs-dev ros-std-srvs libtf2-ros-dev libtf2-geometry-msgs-dev
   librosbag-dev librostest-dev rosout python3-rostest python3-roslaunch python3-rosbag python3-rosservice
   python3-rospy python3-rostopic python3-rosnode rosbash python3-geometry-msgs python3-tf2-msgs python3-visualization-msgs
   liburdfdom-tools

@@ -39,3 +39,9 @@ add_rostest_gtest(research_tests test/node/research_interface.test test/node/tes
 target_include_directories(research_tests PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(research_tests ${catkin_LIBRARIES})
 add_dependencies(research_tests table_node ${PROJECT_NAME}_generate_messages_cpp)
+
+add_rostest_gtest(sim_control_tests test/node/sim_control.test test/node/test_sim_control.cpp)
+target_include_directories(sim_control_tests PRIVATE ${catkin_INCLUDE_DIRS})
+target_link_libraries(sim_control_tests cue_sim_table_description ${catkin_LIBRARIES})
+add_dependencies(sim_control_tests table_node ${PROJECT_NAME}_generate_messages_cpp)
+target_compile_definitions(sim_control_tests PRIVATE CUE_SIM_TEST_DIR="${CMAKE_CURRENT_BINARY_DIR}")

@@ -1,6 +1,7 @@
 #include "node/table_node.hpp"
 
 #include <geometry_msgs/TransformStamped.h>
+#include <rosgraph_msgs/Clock.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include <cmath>
@@ -68,8 +69,16 @@ TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
   private_node.param("rack", config_.initial_rack, config_.initial_rack);
   private_node.param("rack_gap", config_.rack_gap, config_.rack_gap);
   private_node.param("ball_frame_prefix", config_.ball_frame_prefix, config_.ball_frame_prefix);
+  private_node.param("real_time_factor", config_.real_time_factor, config_.real_time_factor);
+  private_node.param("paused", paused_, false);
   if (!(config_.publish_rate > 0 && config_.publish_rate <= 10000))
     throw std::runtime_error("~publish_rate must be in (0, 10000] Hz");
+  sim_time_ = ros::Time::isSimTime();
+  if (!(config_.real_time_factor >= 0 && config_.real_time_factor <= 1000))
+    throw std::runtime_error("~real_time_factor must be in [0, 1000] (0: as fast as possible, with use_sim_time)");
+  if (config_.real_time_factor == 0 && !sim_time_)
+    throw std::runtime_error(
+        "~real_time_factor 0 (as fast as possible) needs use_sim_time: the node then drives /clock");
   for (const std::string* frame : {&config_.table_frame, &config_.world_frame, &config_.ball_frame_prefix})
     if (frame->empty() || frame->front() == '/')
       throw std::runtime_error("frame ids must be non-empty and without a leading '/', got '" + *frame + "'");
@@ -109,13 +118,27 @@ TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
   state_publisher_ = private_node.advertise<cue_sim::TableState>("state", 10);
   marker_publisher_ = private_node.advertise<visualization_msgs::MarkerArray>("markers", 1, true);
   event_publisher_ = private_node.advertise<cue_sim::Event>("events", 1000);
+  if (sim_time_)
+  {
+    // This node's clock starts at the wall time (never 0) and only ever moves forward.
+    clock_publisher_ = node.advertise<rosgraph_msgs::Clock>("/clock", 10);
+    sim_now_ = ros::Time(ros::WallTime::now().sec, ros::WallTime::now().nsec);
+    ros::Time::setNow(sim_now_);
+  }
   pool_ = std::make_unique<physics::ThreadPool>();
+  if (!sim_time_)
+    clock_.setRate(ros::Time::now(), paused_ ? 0 : config_.real_time_factor);
   setRack(rack, ros::Time::now());
-  strike_service_ = private_node.advertiseService("strike", &TableNode::onStrike, this);
-  predict_service_ = private_node.advertiseService("predict", &TableNode::onPredict, this);
-  predict_batch_service_ = private_node.advertiseService("predict_batch", &TableNode::onPredictBatch, this);
-  rack_service_ = private_node.advertiseService("rack", &TableNode::onRack, this);
-  reset_service_ = private_node.advertiseService("reset", &TableNode::onReset, this);
+  services_ = {
+      private_node.advertiseService("strike", &TableNode::onStrike, this),
+      private_node.advertiseService("predict", &TableNode::onPredict, this),
+      private_node.advertiseService("predict_batch", &TableNode::onPredictBatch, this),
+      private_node.advertiseService("rack", &TableNode::onRack, this),
+      private_node.advertiseService("reset", &TableNode::onReset, this),
+      private_node.advertiseService("set_state", &TableNode::onSetState, this),
+      private_node.advertiseService("pause", &TableNode::onPause, this),
+      private_node.advertiseService("step", &TableNode::onStep, this),
+  };
   ROS_INFO("cue_sim: table '%s' (%zu cushions, %zu pockets), rack '%s', models %s/%s, tf at %.0f Hz",
            table_->name().c_str(), table_->segments().size(), table_->pockets().size(), config_.initial_rack.c_str(),
            models.ball_ball.c_str(), models.cushion.c_str(), config_.publish_rate);
@@ -174,14 +197,9 @@ void TableNode::publishStaticFrames(const std::string& urdf_xml)
   static_broadcaster_.sendTransform(frames);
 }
 
-double TableNode::physicsTime(const ros::Time& stamp) const
-{
-  return (stamp - epoch_).toSec();
-}
-
 double TableNode::catchUp(const ros::Time& stamp)
 {
-  const double now = std::max(physicsTime(stamp), state_.time);
+  const double now = std::max(clock_.at(stamp), state_.time);
   if (!state_.anyMoving())
   {
     state_.time = now;  // nothing moves: no physics to do
@@ -199,30 +217,60 @@ double TableNode::catchUp(const ros::Time& stamp)
     ROS_ERROR_THROTTLE(1.0, "cue_sim: %s", e.what());
   }
   for (const auto& e : events)
-    event_publisher_.publish(toEventMsg(e, *table_, epoch_ + ros::Duration(e.time), e.time));
+    event_publisher_.publish(toEventMsg(e, *table_, clock_.stampOf(e.time, stamp), e.time));
   return now;
 }
 
 void TableNode::rebaseAtRest(const ros::Time& stamp)
 {
-  epoch_ = stamp;
+  clock_.restart(stamp);
   state_ = placedAt(state_, 0.0);
 }
 
 void TableNode::run()
 {
-  ros::Rate rate(config_.publish_rate);
+  if (!sim_time_)
+  {
+    ros::Rate rate(config_.publish_rate);
+    while (ros::ok())
+    {
+      ros::spinOnce();
+      tick(ros::Time::now());
+      rate.sleep();
+    }
+    return;
+  }
+  // Sim time: the clock moves at real_time_factor x wall time, or one publish period per
+  // loop without waiting (as fast as possible), and not at all while paused.
+  const ros::WallDuration period(1.0 / config_.publish_rate);
+  ros::WallTime last = ros::WallTime::now();
   while (ros::ok())
   {
     ros::spinOnce();
-    tick();
-    rate.sleep();
+    const ros::WallTime wall = ros::WallTime::now();
+    if (!paused_)
+      advanceSimClock(config_.real_time_factor == 0 ? ros::Duration(period.toSec())
+                                                    : ros::Duration((wall - last).toSec() * config_.real_time_factor));
+    last = wall;
+    if (paused_ || config_.real_time_factor > 0)
+      period.sleep();
   }
 }
 
-void TableNode::tick()
+void TableNode::advanceSimClock(const ros::Duration& by)
 {
-  const ros::Time stamp = ros::Time::now();
+  if (by <= ros::Duration(0))
+    return;
+  sim_now_ += by;
+  ros::Time::setNow(sim_now_);
+  rosgraph_msgs::Clock clock;
+  clock.clock = sim_now_;
+  clock_publisher_.publish(clock);
+  tick(sim_now_);
+}
+
+void TableNode::tick(const ros::Time& stamp)
+{
   if (stamp <= last_stamp_)
     return;  // tf must never see the same stamp twice (TF_REPEATED_DATA)
   catchUp(stamp);
@@ -245,7 +293,7 @@ void TableNode::tick()
 
 void TableNode::setRack(PhysicsState rack, const ros::Time& stamp)
 {
-  epoch_ = stamp;
+  clock_.restart(stamp);
   state_ = placedAt(rack, 0.0);
   snapshot_at_rest_ = false;
   last_rack_ = rack;
@@ -257,75 +305,6 @@ void TableNode::publishMarkers()
   marker_publisher_.publish(tableMarkers(*table_, state_, engine_->params().ball_radius,
                                          engine_->params().cushion_height,
                                          {config_.table_frame, config_.ball_frame_prefix}));
-}
-
-bool TableNode::onRack(Rack::Request& request, Rack::Response& response)
-{
-  const double R = engine_->params().ball_radius;
-  PhysicsState rack;
-  response.success = false;
-  if (request.layout == "custom")
-  {
-    if (request.ids.size() != request.positions.size())
-    {
-      response.message = "ids and positions must have the same length (got " + std::to_string(request.ids.size()) +
-                         " and " + std::to_string(request.positions.size()) + ")";
-      return true;
-    }
-    for (std::size_t i = 0; i < request.ids.size(); ++i)
-    {
-      if (request.ids[i] < 0 || request.ids[i] > 15)
-      {
-        response.message = "ids[" + std::to_string(i) + "] = " + std::to_string(request.ids[i]) + " is not in [0, 15]";
-        return true;
-      }
-      Ball<double> b;
-      b.id = request.ids[i];
-      b.r = physics::Vec3<double>(request.positions[i].x, request.positions[i].y, R);
-      rack.balls.push_back(b);
-    }
-  }
-  else
-  {
-    if (!request.ids.empty() || !request.positions.empty())
-    {
-      response.message = "ids and positions are for layout 'custom' only";
-      return true;
-    }
-    try
-    {
-      physics::RackOptions options;
-      options.gap = config_.rack_gap;
-      rack = physics::rackLayout<double>(request.layout, *table_, R, options);
-    }
-    catch (const std::invalid_argument&)
-    {
-      response.message = "layout must be one of eight, nine, empty, custom; got '" + request.layout + "'";
-      return true;
-    }
-  }
-  const std::string why = engine_->whyInvalid(rack);
-  if (!why.empty())
-  {
-    response.message = "positions: " + why;
-    return true;
-  }
-  const ros::Time stamp = ros::Time::now();
-  catchUp(stamp);
-  setRack(rack, stamp);
-  response.success = true;
-  response.message = "racked '" + request.layout + "': " + std::to_string(rack.balls.size()) + " balls";
-  return true;
-}
-
-bool TableNode::onReset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response)
-{
-  const ros::Time stamp = ros::Time::now();
-  catchUp(stamp);
-  setRack(last_rack_, stamp);
-  response.success = true;
-  response.message = "back to the last rack (" + std::to_string(last_rack_.balls.size()) + " balls)";
-  return true;
 }
 
 }  // namespace cue_sim

@@ -6,8 +6,11 @@
 #include <cue_sim/Predict.h>
 #include <cue_sim/PredictBatch.h>
 #include <cue_sim/Rack.h>
+#include <cue_sim/SetState.h>
+#include <cue_sim/Step.h>
 #include <cue_sim/Strike.h>
 #include <ros/ros.h>
+#include <std_srvs/SetBool.h>
 #include <std_srvs/Trigger.h>
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
@@ -18,6 +21,7 @@
 #include "cue_sim/physics/engine.hpp"
 #include "cue_sim/physics/execution_noise.hpp"
 #include "cue_sim/physics/thread_pool.hpp"
+#include "node/physics_clock.hpp"
 
 namespace cue_sim
 {
@@ -42,16 +46,18 @@ private:
     std::string ball_frame_prefix = "ball_";
     std::string initial_rack = "eight";
     double rack_gap = 1e-5;
-    bool noise_enabled = false;  ///< execution noise on ~strike
+    double real_time_factor = 1.0;  ///< 0: as fast as possible (sim time only)
+    bool noise_enabled = false;     ///< execution noise on ~strike
     physics::ExecutionNoise noise;
     int noise_seed = 0;
   };
 
   void loadTable(ros::NodeHandle& node, ros::NodeHandle& private_node);
-  void tick();
+  /// Brings the table up to `stamp` and publishes tf and ~state stamped with it.
+  void tick(const ros::Time& stamp);
+  /// With use_sim_time: moves the node's /clock on by `by` and ticks there.
+  void advanceSimClock(const ros::Duration& by);
   void loadNoise(ros::NodeHandle& private_node);
-  /// Physics time [s] of a ROS time: seconds since epoch_.
-  double physicsTime(const ros::Time& stamp) const;
   /// Brings the live state up to `stamp` (processing its events, published on ~events) and
   /// returns the physics time.
   double catchUp(const ros::Time& stamp);
@@ -70,6 +76,10 @@ private:
   /// (which must be at rest); every ball referred to time 0. Empty if it can, else why not.
   std::string predictionStart(const std::vector<BallState>& balls, physics::TableState<double>& start);
 
+  // Simulation control (control_services.cpp).
+  bool onPause(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response);
+  bool onStep(Step::Request& request, Step::Response& response);
+  bool onSetState(SetState::Request& request, SetState::Response& response);
   bool onRack(Rack::Request& request, Rack::Response& response);
   bool onReset(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
 
@@ -82,7 +92,10 @@ private:
   bool snapshot_at_rest_ = false;                ///< and nothing has moved since
   physics::NoisyCue live_cue_;                   ///< ~strike's execution noise
   std::unique_ptr<physics::ThreadPool> pool_;    ///< ~predict_batch's threads
-  ros::Time epoch_;
+  PhysicsClock clock_;
+  bool sim_time_ = false;  ///< use_sim_time: this node drives /clock
+  bool paused_ = false;
+  ros::Time sim_now_;  ///< the time it last published on /clock
   ros::Time last_stamp_;
 
   tf2_ros::TransformBroadcaster tf_broadcaster_;
@@ -90,7 +103,8 @@ private:
   ros::Publisher state_publisher_;
   ros::Publisher marker_publisher_;
   ros::Publisher event_publisher_;
-  ros::ServiceServer strike_service_, predict_service_, predict_batch_service_, rack_service_, reset_service_;
+  ros::Publisher clock_publisher_;
+  std::vector<ros::ServiceServer> services_;
 };
 
 }  // namespace cue_sim

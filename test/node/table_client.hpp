@@ -114,6 +114,21 @@ public:
     return boost::make_shared<cue_sim::TableState>();
   }
 
+  /// The first ~state stamped at or after `stamp` (a time the node reported).
+  cue_sim::TableStateConstPtr stateAfter(const ros::Time& stamp)
+  {
+    const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(10);
+    while (ros::WallTime::now() < until)
+    {
+      ros::WallDuration(0.01).sleep();
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (last_state_ && last_state_->header.stamp >= stamp)
+        return last_state_;
+    }
+    ADD_FAILURE() << "no " << node_ << "/state message stamped at or after " << stamp;
+    return boost::make_shared<cue_sim::TableState>();
+  }
+
   /// The first ~state at rest, waiting at most `timeout` seconds.
   cue_sim::TableStateConstPtr atRest(double timeout)
   {
@@ -140,7 +155,8 @@ private:
   std::string node_;
   ros::NodeHandle nh_;
   ros::ServiceClient strike_, predict_, predict_batch_, rack_;
-  ros::Subscriber state_sub_;
   std::mutex mutex_;
   cue_sim::TableStateConstPtr last_state_;
+  // Last, so that it is destroyed first: no callback can then reach the members above.
+  ros::Subscriber state_sub_;
 };

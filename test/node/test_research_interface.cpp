@@ -77,9 +77,9 @@ protected:
 
   ros::NodeHandle nh_;
   TableClient table_;
-  ros::Subscriber events_sub_;
   std::mutex mutex_;
   std::vector<cue_sim::Event> events_;
+  ros::Subscriber events_sub_;  // last: destroyed first, before what its callback uses
 };
 
 TEST_F(ResearchInterfaceTest, StrikeDoesExactlyWhatPredictSaidBitForBit)

@@ -115,8 +115,8 @@ protected:
 
   ros::NodeHandle nh_;
   ros::ServiceClient strike_, rack_, reset_;
-  ros::Subscriber state_sub_;
   cue_sim::TableStateConstPtr last_state_;
+  ros::Subscriber state_sub_;  // last: destroyed first, before what its callback uses
 };
 
 TEST_F(TableNodeTest, MarkersArriveLatchedWithEveryLayer)

@@ -1,0 +1,272 @@
+// Simulation control through a real master, with use_sim_time: the node drives /clock as fast
+// as possible; ~pause, ~step, ~set_state; and a rosbag of a shot whose every ball transform is
+// the engine's exact trajectory at its stamp.
+#include <cue_sim/SetState.h>
+#include <cue_sim/Step.h>
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <rosbag/bag.h>
+#include <rosbag/view.h>
+#include <rosgraph_msgs/Clock.h>
+#include <std_srvs/SetBool.h>
+#include <std_srvs/Trigger.h>
+#include <tf2_msgs/TFMessage.h>
+
+#include <cstdlib>
+#include <mutex>
+#include <thread>
+
+#include "cue_sim/physics/engine.hpp"
+#include "cue_sim/table_description/urdf_table_loader.hpp"
+#include "table_client.hpp"
+
+namespace
+{
+class SimControlTest : public ::testing::Test
+{
+protected:
+  void SetUp() override
+  {
+    ASSERT_TRUE(ros::Time::isSimTime()) << "the launch file sets /use_sim_time";
+    clock_sub_ = nh_.subscribe<rosgraph_msgs::Clock>("/clock", 100, [this](const rosgraph_msgs::ClockConstPtr& c) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      clocks_.push_back(c->clock);
+    });
+    pause_ = nh_.serviceClient<std_srvs::SetBool>("/table/pause");
+    step_ = nh_.serviceClient<cue_sim::Step>("/table/step");
+    set_state_ = nh_.serviceClient<cue_sim::SetState>("/table/set_state");
+    reset_ = nh_.serviceClient<std_srvs::Trigger>("/table/reset");
+    ASSERT_TRUE(ros::service::waitForService("/table/step", ros::Duration(20)));
+    pause(false);
+  }
+
+  void pause(bool on)
+  {
+    std_srvs::SetBool srv;
+    srv.request.data = on;
+    ASSERT_TRUE(pause_.call(srv));
+    ASSERT_TRUE(srv.response.success);
+  }
+
+  cue_sim::Step::Response step(double duration)
+  {
+    cue_sim::Step srv;
+    srv.request.duration = duration;
+    EXPECT_TRUE(step_.call(srv));
+    return srv.response;
+  }
+
+  cue_sim::SetState::Response setState(const std::vector<cue_sim::BallState>& balls)
+  {
+    cue_sim::SetState srv;
+    srv.request.balls = balls;
+    EXPECT_TRUE(set_state_.call(srv));
+    return srv.response;
+  }
+
+  std::vector<ros::Time> clocks()
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return clocks_;
+  }
+
+  ros::NodeHandle nh_;
+  TableClient table_;
+  ros::ServiceClient pause_, step_, set_state_, reset_;
+  std::mutex mutex_;
+  std::vector<ros::Time> clocks_;
+  ros::Subscriber clock_sub_;  // last: destroyed first, before what its callback uses
+};
+
+TEST_F(SimControlTest, TheClockRunsAheadOfTheWallNeverZeroAndNeverBackAcrossResets)
+{
+  ros::WallDuration(0.5).sleep();
+  const ros::Time start = ros::Time::now();
+  const ros::WallTime wall_start = ros::WallTime::now();
+  ASSERT_TRUE(table_.rack("nine").success);
+  std_srvs::Trigger reset;
+  ASSERT_TRUE(reset_.call(reset));
+  ros::WallDuration(1.0).sleep();
+  // As fast as possible: well over real time.
+  EXPECT_GT((ros::Time::now() - start).toSec(), 3 * (ros::WallTime::now() - wall_start).toSec());
+  const std::vector<ros::Time> seen = clocks();
+  ASSERT_GT(seen.size(), 50u);
+  EXPECT_GT(seen.front().toSec(), 1e9) << "the clock starts at the wall time, not 0";
+  for (std::size_t i = 1; i < seen.size(); ++i)
+    ASSERT_LT(seen[i - 1], seen[i]) << "clock message " << i;
+}
+
+TEST_F(SimControlTest, PauseStopsTheClockAndStepMovesItByExactlyTheDuration)
+{
+  EXPECT_FALSE(step(0.1).success) << "a step needs a paused table";
+  ASSERT_TRUE(table_.rack("custom", {0, 1}, {{-0.5, 0.0}, {0.3, 0.0}}).success);
+  pause(true);
+  // This process's clock follows /clock: let the messages already on their way arrive.
+  ros::WallDuration(0.3).sleep();
+  const ros::Time paused_at = ros::Time::now();
+  ros::WallDuration(0.3).sleep();
+  EXPECT_EQ(ros::Time::now(), paused_at);
+  const cue_sim::Strike::Response struck = table_.strike(TableClient::shot(0, 1.0, 0.0));
+  ASSERT_TRUE(struck.success) << struck.message;
+  EXPECT_EQ(struck.stamp, paused_at);
+
+  const cue_sim::Step::Response stepped = step(0.25);
+  ASSERT_TRUE(stepped.success) << stepped.message;
+  EXPECT_EQ(stepped.stamp - struck.stamp, ros::Duration(0.25));
+  ros::WallDuration(0.3).sleep();
+  EXPECT_EQ(ros::Time::now(), stepped.stamp);
+  // The ~state stamped at the step's end has the cue ball 0.25 s into its shot.
+  const cue_sim::TableStateConstPtr after = table_.stateAfter(stepped.stamp);
+  EXPECT_EQ(after->header.stamp, stepped.stamp);
+  EXPECT_TRUE(after->moving);
+  EXPECT_GT(TableClient::byId(after->balls).at(0).position.x, -0.5 + 0.2);
+
+  EXPECT_FALSE(step(0).success);
+  const cue_sim::Step::Response too_long = step(61);
+  EXPECT_FALSE(too_long.success);
+  EXPECT_NE(too_long.message.find("duration"), std::string::npos) << too_long.message;
+  pause(false);
+  table_.atRest(30);
+}
+
+TEST_F(SimControlTest, SetStatePlacesMovingBallsAndRefusesBadOnesByField)
+{
+  ASSERT_TRUE(table_.rack("custom", {0, 1}, {{-0.5, 0.0}, {0.3, 0.0}}).success);
+  const cue_sim::TableState before = *table_.atRest(10);
+  cue_sim::BallState cue, other;
+  cue.id = 0;
+  cue.position.x = -0.2;
+  cue.velocity.x = 0.5;
+  cue.angular_velocity.y = 0.5 / 0.028575;  // rolling
+  other.id = 3;
+  other.position.x = 0.4;
+  other.position.y = 0.2;
+
+  cue_sim::BallState overlapping = other;
+  overlapping.position.x = -0.19;
+  overlapping.position.y = 0;
+  cue_sim::SetState::Response r = setState({cue, overlapping});
+  EXPECT_FALSE(r.success);
+  EXPECT_NE(r.message.find("balls:"), std::string::npos) << r.message;
+  cue_sim::BallState bad_id = other;
+  bad_id.id = -1;
+  r = setState({cue, bad_id});
+  EXPECT_FALSE(r.success);
+  EXPECT_NE(r.message.find("balls[1].id"), std::string::npos) << r.message;
+  cue_sim::BallState nan = other;
+  nan.velocity.y = std::nan("");
+  r = setState({nan});
+  EXPECT_FALSE(r.success);
+  EXPECT_NE(r.message.find("finite"), std::string::npos) << r.message;
+  EXPECT_EQ(TableClient::byId(table_.freshState()->balls).size(), TableClient::byId(before.balls).size());
+
+  // Placed while paused, then stepped 0.1 s: the cue ball rolls on from where it was put.
+  pause(true);
+  r = setState({cue, other});
+  ASSERT_TRUE(r.success) << r.message;
+  const cue_sim::Step::Response stepped = step(0.1);
+  ASSERT_TRUE(stepped.success) << stepped.message;
+  EXPECT_EQ(stepped.stamp - r.stamp, ros::Duration(0.1));
+  const auto placed = table_.stateAfter(stepped.stamp);
+  pause(false);
+  const auto balls = TableClient::byId(placed->balls);
+  ASSERT_EQ(balls.size(), 2u);
+  EXPECT_TRUE(placed->moving);
+  EXPECT_EQ(balls.at(0).motion, cue_sim::BallState::ROLLING);
+  // Rolling at 0.5 m/s, slowed by mu_r g: 0.1 s later it is 0.05 - mu_r g 0.1^2 / 2 further.
+  EXPECT_NEAR(balls.at(0).position.x, -0.2 + 0.05 - 0.5 * 0.01 * 9.81 * 0.01, 1e-12);
+  EXPECT_EQ(balls.at(3).motion, cue_sim::BallState::STATIONARY);
+  table_.atRest(30);
+}
+
+TEST_F(SimControlTest, EveryBallTransformInTheBagIsTheExactTrajectoryAtItsStamp)
+{
+  const std::vector<int> ids = {0, 1, 2, 3};
+  ASSERT_TRUE(table_.rack("custom", ids, {{-0.6, 0.0}, {0.0, 0.02}, {0.15, -0.2}, {0.3, 0.25}}).success);
+  const cue_sim::TableState rack = *table_.atRest(10);
+  pause(true);
+  const std::string bag_path = std::string(CUE_SIM_TEST_DIR) + "/sim_shot_test.bag";
+  std::remove(bag_path.c_str());
+  std::thread recorder([&] {
+    const std::string command = "roslaunch cue_sim record.launch bag:=" + bag_path + " > " +
+                                std::string(CUE_SIM_TEST_DIR) + "/sim_record_test.log 2>&1";
+    EXPECT_EQ(std::system(command.c_str()), 0);
+  });
+  ros::WallDuration(2.5).sleep();  // let rosbag subscribe while the table waits
+  const cue_sim::Shot shot = TableClient::shot(0, 1.5, 0.05, 0.1, 0.2, -0.1);
+  const cue_sim::Strike::Response struck = table_.strike(shot);
+  ASSERT_TRUE(struck.success) << struck.message;
+  pause(false);
+  table_.atRest(60);
+  ros::WallDuration(0.5).sleep();
+  EXPECT_EQ(std::system("rosnode kill /record > /dev/null 2>&1"), 0);
+  recorder.join();
+
+  // The same engine, in this process: the table from robot_description, the node's parameters.
+  std::string urdf;
+  ASSERT_TRUE(nh_.getParam("/robot_description", urdf));
+  auto table = std::make_shared<const cue_sim::physics::TableModel>(cue_sim::tableFromUrdf(urdf));
+  cue_sim::physics::PhysicsParams<double> params;
+  for (const auto& field : cue_sim::physics::physicsParamFields())
+    ASSERT_TRUE(nh_.getParam("/table/" + std::string(field.name), params.*field.member)) << field.name;
+  cue_sim::physics::ModelChoice models;
+  nh_.getParam("/table/ball_ball_model", models.ball_ball);
+  nh_.getParam("/table/cushion_model", models.cushion);
+  const cue_sim::physics::Engine<double> engine(table, params, models);
+  cue_sim::physics::TableState<double> state;
+  for (const auto& b : rack.balls)
+  {
+    cue_sim::physics::Ball<double> ball;
+    ball.id = b.id;
+    ball.r = cue_sim::physics::Vec3<double>(b.position.x, b.position.y, b.position.z);
+    state.balls.push_back(ball);
+  }
+  cue_sim::physics::CueStrike<double> cue;
+  cue.speed = shot.speed;
+  cue.phi = shot.phi;
+  cue.theta = shot.theta;
+  cue.a = shot.a;
+  cue.b = shot.b;
+  engine.strike(state, 0, cue);
+
+  rosbag::Bag bag(bag_path, rosbag::bagmode::Read);
+  std::size_t compared = 0;
+  double largest = 0, moved = 0;
+  for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery(std::string("/tf"))))
+  {
+    const auto tf = m.instantiate<tf2_msgs::TFMessage>();
+    if (!tf || tf->transforms.empty() || tf->transforms[0].header.stamp < struck.stamp)
+      continue;
+    const double t = (tf->transforms[0].header.stamp - struck.stamp).toSec();
+    engine.advance(state, t);
+    const auto balls = engine.snapshot(state);
+    for (const auto& transform : tf->transforms)
+    {
+      ASSERT_EQ(transform.header.stamp, tf->transforms[0].header.stamp);
+      const int id = std::stoi(transform.child_frame_id.substr(std::string("ball_").size()));
+      const auto& exact = balls[state.indexOf(id)].r;
+      const double error =
+          std::hypot(transform.transform.translation.x - exact.x(), transform.transform.translation.y - exact.y());
+      largest = std::max(largest, error);
+      moved = std::max(moved, std::hypot(exact.x() - rack.balls[state.indexOf(id)].position.x,
+                                         exact.y() - rack.balls[state.indexOf(id)].position.y));
+      ++compared;
+    }
+  }
+  bag.close();
+  EXPECT_GT(compared, 4u * 100u) << "transforms of the four balls over the shot";
+  EXPECT_GT(moved, 0.3);
+  EXPECT_LE(largest, 1e-9) << "largest distance of a recorded pose from the exact trajectory [m]";
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "sim_control_test");
+  ros::AsyncSpinner spinner(2);
+  spinner.start();
+  const int result = RUN_ALL_TESTS();
+  ros::shutdown();
+  return result;
+}
