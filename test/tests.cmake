@@ -11,6 +11,7 @@ catkin_add_gtest(physics_tests
   test/physics/test_golden.cpp
   test/physics/test_batch.cpp
   test/physics/test_execution_noise.cpp
+  test/physics/test_cue_aim.cpp
 )
 target_link_libraries(physics_tests cue_sim_physics gtest_main)
 target_compile_definitions(physics_tests PRIVATE CUE_SIM_SOURCE_DIR="${PROJECT_SOURCE_DIR}")

@@ -1,0 +1,156 @@
+// From a cue's pose to the strike: the ball it meets, phi, theta, a and b with the README's
+// signs, and refusals that say what is wrong.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "cue_sim/physics/cue_aim.hpp"
+
+using namespace cue_sim::physics;
+
+namespace
+{
+const PhysicsParams<double> kParams;
+const double R = kParams.ball_radius;
+
+Ball<double> ballAt(int id, double x, double y)
+{
+  Ball<double> b;
+  b.id = id;
+  b.r = Vec3<double>(x, y, R);
+  return b;
+}
+
+/// The cue that strikes `ball` with `strike` (the inverse of aimCue): its axis along phi,
+/// tilted down by theta, passing the centre where the tip's offsets put it, the tip `gap`
+/// metres short of the ball.
+CueStick cueFor(const Ball<double>& ball, const CueStrike<double>& strike, double gap)
+{
+  const Vec3<double> u(std::cos(strike.theta) * std::cos(strike.phi), std::cos(strike.theta) * std::sin(strike.phi),
+                       -std::sin(strike.theta));
+  const Vec3<double> right = u.cross(Vec3<double>::UnitZ()).normalized();
+  const Vec3<double> up = right.cross(u);
+  const double scale = 1 + kParams.cue_tip_radius / R;  // axis offset per contact offset
+  const Vec3<double> offset = R * scale * (strike.a * right + strike.b * up);
+  const double along = std::sqrt(R * R - offset.squaredNorm());
+  CueStick cue;
+  cue.tip = ball.r + offset - u * (along + gap);
+  cue.axis = u;
+  return cue;
+}
+
+CueStrike<double> strikeOf(double phi, double theta, double a, double b)
+{
+  CueStrike<double> s;
+  s.speed = 2;
+  s.phi = phi;
+  s.theta = theta;
+  s.a = a;
+  s.b = b;
+  return s;
+}
+}  // namespace
+
+TEST(CueAim, ALevelCueThroughTheCentreIsACentreHitAlongItsAxis)
+{
+  const std::vector<Ball<double>> balls = {ballAt(0, 0.1, 0.2)};
+  CueStick cue;
+  cue.tip = Vec3<double>(0.1 - R - 0.05, 0.2, R);
+  cue.axis = Vec3<double>(3, 0, 0);
+  CueAim aim;
+  ASSERT_EQ(aimCue(balls, kParams, cue, 2.5, aim), "");
+  EXPECT_EQ(aim.ball_id, 0);
+  EXPECT_EQ(aim.strike.speed, 2.5);
+  EXPECT_EQ(aim.strike.phi, 0);
+  EXPECT_EQ(aim.strike.theta, 0);
+  EXPECT_NEAR(aim.strike.a, 0, 1e-15);
+  EXPECT_NEAR(aim.strike.b, 0, 1e-15);
+  EXPECT_NEAR(aim.travel, 0.05, 1e-15);
+}
+
+TEST(CueAim, AnAxisRightOfCentreIsRightEnglishAndAboveIsFollow)
+{
+  // Shooting along +x, the shooter's right is -y.
+  const std::vector<Ball<double>> balls = {ballAt(0, 0, 0)};
+  CueStick cue;
+  cue.axis = Vec3<double>(1, 0, 0);
+  cue.tip = Vec3<double>(-0.1, -0.01, R);
+  CueAim aim;
+  ASSERT_EQ(aimCue(balls, kParams, cue, 2, aim), "");
+  EXPECT_NEAR(aim.strike.a, contactOffset(0.01 / R, kParams), 1e-12);
+  EXPECT_GT(aim.strike.a, 0);
+  EXPECT_NEAR(aim.strike.b, 0, 1e-15);
+  cue.tip = Vec3<double>(-0.1, 0, R + 0.008);
+  ASSERT_EQ(aimCue(balls, kParams, cue, 2, aim), "");
+  EXPECT_NEAR(aim.strike.b, contactOffset(0.008 / R, kParams), 1e-12);
+  EXPECT_GT(aim.strike.b, 0);
+  EXPECT_NEAR(aim.strike.a, 0, 1e-15);
+}
+
+TEST(CueAim, RecoversEveryStrikeFromTheCueThatMakesIt)
+{
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(0, 1);
+  const Ball<double> ball = ballAt(4, 0.3, -0.1);
+  for (int i = 0; i < 500; ++i)
+  {
+    const double radius = 0.49 * std::sqrt(unit(random)), angle = 2 * M_PI * unit(random);
+    const CueStrike<double> want =
+        strikeOf(M_PI * (2 * unit(random) - 1), 1.5 * unit(random), radius * std::cos(angle), radius * std::sin(angle));
+    CueAim aim;
+    ASSERT_EQ(aimCue({ball}, kParams, cueFor(ball, want, 0.02), 2, aim), "") << "strike " << i;
+    EXPECT_EQ(aim.ball_id, 4);
+    EXPECT_NEAR(aim.strike.phi, want.phi, 1e-12) << "strike " << i;
+    EXPECT_NEAR(aim.strike.theta, want.theta, 1e-12) << "strike " << i;
+    EXPECT_NEAR(aim.strike.a, want.a, 1e-12) << "strike " << i;
+    EXPECT_NEAR(aim.strike.b, want.b, 1e-12) << "strike " << i;
+    EXPECT_NEAR(aim.travel, 0.02, 1e-12) << "strike " << i;
+  }
+}
+
+TEST(CueAim, TheFirstBallAlongTheStrokeIsTheOneStruck)
+{
+  const std::vector<Ball<double>> balls = {ballAt(0, 0.3, 0), ballAt(1, 0.0, 0)};
+  CueStick cue;
+  cue.tip = Vec3<double>(-0.2, 0, R);
+  cue.axis = Vec3<double>(1, 0, 0);
+  CueAim aim;
+  ASSERT_EQ(aimCue(balls, kParams, cue, 2, aim), "");
+  EXPECT_EQ(aim.ball_id, 1);
+  EXPECT_NEAR(aim.travel, 0.2 - R, 1e-15);
+}
+
+TEST(CueAim, RefusalsSayWhatIsWrong)
+{
+  Ball<double> pocketed = ballAt(9, 0, 0);
+  pocketed.motion = Motion::Pocketed;
+  const std::vector<Ball<double>> balls = {ballAt(0, 0, 0), ballAt(2, -0.3, 0.0), pocketed};
+  CueAim aim;
+  const auto refusal = [&](Vec3<double> tip, Vec3<double> axis) {
+    CueStick cue;
+    cue.tip = tip;
+    cue.axis = axis;
+    return aimCue(balls, kParams, cue, 2, aim);
+  };
+  // Beside the ball.
+  EXPECT_NE(refusal({-0.1, 0.1, R}, {1, 0, 0}).find("meets no ball"), std::string::npos);
+  // The axis inside the ball, but too far out for the tip: a miscue.
+  EXPECT_NE(refusal({0.1, 0.8 * R, R}, {-1, 0, 0}).find("miscue"), std::string::npos);
+  // Only the rim of the shaft reaches the ball.
+  EXPECT_NE(refusal({0.1, R + 0.003, R}, {-1, 0, 0}).find("side of the cue's tip"), std::string::npos);
+  // Ball 2 sits on the shaft behind the tip.
+  EXPECT_NE(refusal({-0.1, 0, R}, {1, 0, 0}).find("shaft passes through ball 2"), std::string::npos);
+  EXPECT_NE(refusal({0.2, 0, R}, {-1, 0, 0.1}).find("points upwards"), std::string::npos);
+  EXPECT_NE(refusal({0.005, 0, R}, {1, 0, 0}).find("inside ball 0"), std::string::npos);
+  EXPECT_NE(refusal({0.2, 0, R}, {0, 0, 0}).find("non-zero axis"), std::string::npos);
+  // From the other side, ball 0 is met first and ball 2 is not in the way; the pocketed ball
+  // at the same place as ball 0 is not there at all.
+  EXPECT_EQ(refusal({0.2, 0, R}, {-1, 0, 0}), "");
+  EXPECT_EQ(aim.ball_id, 0);
+  EXPECT_NEAR(aim.strike.phi, M_PI, 1e-15);
+  CueStick fast;
+  fast.tip = Vec3<double>(0.2, 0, R);
+  fast.axis = Vec3<double>(-1, 0, 0);
+  EXPECT_NE(aimCue(balls, kParams, fast, 13, aim).find("speed"), std::string::npos);
+}
