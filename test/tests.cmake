@@ -38,7 +38,7 @@ target_compile_definitions(node_tests PRIVATE CUE_SIM_TEST_DIR="${CMAKE_CURRENT_
 
 add_rostest_gtest(research_tests test/node/research_interface.test test/node/test_research_interface.cpp)
 target_include_directories(research_tests PRIVATE ${catkin_INCLUDE_DIRS})
-target_link_libraries(research_tests ${catkin_LIBRARIES})
+target_link_libraries(research_tests cue_sim_physics ${catkin_LIBRARIES})
 add_dependencies(research_tests table_node ${PROJECT_NAME}_generate_messages_cpp)
 
 add_rostest_gtest(sim_control_tests test/node/sim_control.test test/node/test_sim_control.cpp)

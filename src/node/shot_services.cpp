@@ -1,8 +1,13 @@
 // table_node's shot services: ~strike changes the live table; ~predict and ~predict_batch run
 // the same shot on a copy. All three go through predictShot, so they agree bit for bit.
+#include <tf2_geometry_msgs/tf2_geometry_msgs.h>
+
+#include <cmath>
 #include <sstream>
 
+#include "cue_sim/physics/cue_aim.hpp"
 #include "node/ros_conversions.hpp"
+#include "node/shot_markers.hpp"
 #include "node/shot_prediction.hpp"
 #include "node/table_node.hpp"
 
@@ -42,7 +47,6 @@ std::string TableNode::predictionStart(const std::vector<BallState>& balls, phys
 
 bool TableNode::onStrike(Strike::Request& request, Strike::Response& response)
 {
-  const ros::Time stamp = ros::Time::now();
   Shot shot;
   shot.ball_id = request.ball_id;
   shot.speed = request.speed;
@@ -50,22 +54,28 @@ bool TableNode::onStrike(Strike::Request& request, Strike::Response& response)
   shot.theta = request.theta;
   shot.a = request.a;
   shot.b = request.b;
+  strikeLive(shot, ros::Time::now(), response);
+  return true;
+}
+
+void TableNode::strikeLive(const Shot& shot, const ros::Time& stamp, Strike::Response& response)
+{
   response.executed = shot;
   catchUp(stamp);
-  std::string why = engine_->whyNotStrikable(state_, request.ball_id, toCueStrike(shot));
+  std::string why = engine_->whyNotStrikable(state_, shot.ball_id, toCueStrike(shot));
   if (why.empty() && state_.anyMoving() && !config_.allow_strike_while_moving)
     why = "balls are still moving (set ~allow_strike_while_moving to strike anyway)";
   if (!why.empty())
   {
     response.success = false;
     response.message = why;
-    return true;
+    return;
   }
   // A strike from rest starts at physics time 0, like a prediction.
   if (!state_.anyMoving())
     rebaseAtRest(stamp);
   const physics::CueStrike<double> executed = live_cue_.execute(toCueStrike(shot), engine_->params().ball_radius);
-  response.executed = toShotMsg(request.ball_id, executed);
+  response.executed = toShotMsg(shot.ball_id, executed);
   // Run the shot to rest on a copy first: it answers the request, and a shot the engine
   // cannot finish is refused before it touches the table.
   Prediction prediction = predictShot(*engine_, state_, response.executed, {0, nullptr, 0, config_.table_frame});
@@ -73,11 +83,14 @@ bool TableNode::onStrike(Strike::Request& request, Strike::Response& response)
   {
     response.success = false;
     response.message = prediction.message;
-    return true;
+    return;
   }
-  engine_->strike(state_, request.ball_id, executed);
+  const physics::Ball<double> before = engine_->snapshot(state_)[state_.indexOf(shot.ball_id)];
+  cue_publisher_.publish(cueStickMarker(physics::cueStickFor(before, executed, engine_->params(), 0.005),
+                                        config_.table_frame, stamp, 1.5));
+  engine_->strike(state_, shot.ball_id, executed);
   snapshot_at_rest_ = false;
-  const physics::Ball<double>& ball = state_.balls[state_.indexOf(request.ball_id)];
+  const physics::Ball<double>& ball = state_.balls[state_.indexOf(shot.ball_id)];
   response.ball_velocity = toVector3(ball.v);
   response.ball_angular_velocity = toVector3(ball.w);
   response.success = true;
@@ -85,8 +98,67 @@ bool TableNode::onStrike(Strike::Request& request, Strike::Response& response)
   response.time_to_rest = prediction.time_to_rest;
   response.num_events = static_cast<uint32_t>(prediction.events.size());
   std::ostringstream message;
-  message << "struck ball " << request.ball_id << " at " << stamp << "; " << prediction.message;
+  message << "struck ball " << shot.ball_id << " at " << stamp << "; " << prediction.message;
   response.message = message.str();
+}
+
+std::string TableNode::cueInTableFrame(const geometry_msgs::PoseStamped& pose, physics::CueStick& cue)
+{
+  const auto& q = pose.pose.orientation;
+  const double norm = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
+  if (!(std::abs(norm - 1) < 1e-3))
+    return "cue.pose.orientation must be a unit quaternion (its norm is " + std::to_string(norm) + ")";
+  if (pose.header.frame_id.empty())
+    return "cue.header.frame_id is empty: give the frame of the cue pose";
+  geometry_msgs::PoseStamped in_table = pose;
+  if (pose.header.frame_id != config_.table_frame)
+  {
+    if (!tf_buffer_)
+    {
+      tf_buffer_ = std::make_unique<tf2_ros::Buffer>();
+      tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_);
+    }
+    try
+    {
+      const geometry_msgs::TransformStamped t =
+          tf_buffer_->lookupTransform(config_.table_frame, pose.header.frame_id, ros::Time(0), ros::Duration(1.0));
+      tf2::doTransform(pose, in_table, t);
+    }
+    catch (const tf2::TransformException& e)
+    {
+      return "cannot transform the cue pose from '" + pose.header.frame_id + "' to '" + config_.table_frame +
+             "': " + e.what();
+    }
+  }
+  const auto& p = in_table.pose.position;
+  const auto& r = in_table.pose.orientation;
+  cue.tip = physics::Vec3<double>(p.x, p.y, p.z);
+  cue.axis = Eigen::Quaterniond(r.w, r.x, r.y, r.z).normalized() * physics::Vec3<double>::UnitX();
+  return "";
+}
+
+bool TableNode::onStrikeCue(StrikeCue::Request& request, StrikeCue::Response& response)
+{
+  const ros::Time stamp = ros::Time::now();
+  response.success = false;
+  physics::CueStick cue;
+  response.message = cueInTableFrame(request.cue, cue);
+  if (!response.message.empty())
+    return true;
+  catchUp(stamp);
+  physics::CueAim aim;
+  response.message = physics::aimCue(engine_->snapshot(state_), engine_->params(), cue, request.speed, aim);
+  if (!response.message.empty())
+    return true;
+  response.shot = toShotMsg(aim.ball_id, aim.strike);
+  Strike::Response struck;
+  strikeLive(response.shot, stamp, struck);
+  response.success = struck.success;
+  response.message = struck.message;
+  response.executed = struck.executed;
+  response.stamp = struck.stamp;
+  response.time_to_rest = struck.time_to_rest;
+  response.num_events = struck.num_events;
   return true;
 }
 
@@ -106,6 +178,9 @@ bool TableNode::onPredict(Predict::Request& request, Predict::Response& response
   const PredictionOptions options{request.sample_period, request.noise ? &config_.noise : nullptr, request.seed,
                                   config_.table_frame};
   prediction = predictShot(*engine_, start, request.shot, options);
+  if (prediction.success)
+    preview_publisher_.publish(
+        previewMarkers(*engine_, start, request.shot.ball_id, toCueStrike(prediction.executed), config_.table_frame));
   return true;
 }
 

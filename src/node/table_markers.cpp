@@ -20,26 +20,6 @@ std_msgs::ColorRGBA rgba(float r, float g, float b, float a = 1.0f)
   return c;
 }
 
-/// Standard pool colours: 1 yellow, 2 blue, 3 red, 4 purple, 5 orange, 6 green, 7 maroon,
-/// 8 black; 9-15 are the stripes of 1-7; 0 is the white cue ball.
-std_msgs::ColorRGBA poolColour(int id)
-{
-  static const std::array<std::array<float, 3>, 8> colours = {{
-      {0.97f, 0.97f, 0.93f},
-      {1.0f, 0.82f, 0.0f},
-      {0.0f, 0.2f, 0.8f},
-      {0.85f, 0.05f, 0.05f},
-      {0.4f, 0.1f, 0.55f},
-      {1.0f, 0.45f, 0.0f},
-      {0.0f, 0.5f, 0.2f},
-      {0.5f, 0.08f, 0.1f},
-  }};
-  if (id == 8)
-    return rgba(0.05f, 0.05f, 0.05f);
-  const auto& c = colours[id >= 9 && id <= 15 ? id - 8 : (id >= 0 && id <= 7 ? id : 0)];
-  return rgba(c[0], c[1], c[2]);
-}
-
 Marker base(const std::string& frame, const std::string& ns, int id, int type)
 {
   Marker m;
@@ -89,6 +69,24 @@ void setYaw(Marker& m, double yaw)
   m.pose.orientation.w = std::cos(yaw / 2);
 }
 }  // namespace
+
+std_msgs::ColorRGBA poolColour(int id)
+{
+  static const std::array<std::array<float, 3>, 8> colours = {{
+      {0.97f, 0.97f, 0.93f},
+      {1.0f, 0.82f, 0.0f},
+      {0.0f, 0.2f, 0.8f},
+      {0.85f, 0.05f, 0.05f},
+      {0.4f, 0.1f, 0.55f},
+      {1.0f, 0.45f, 0.0f},
+      {0.0f, 0.5f, 0.2f},
+      {0.5f, 0.08f, 0.1f},
+  }};
+  if (id == 8)
+    return rgba(0.05f, 0.05f, 0.05f);
+  const auto& c = colours[id >= 9 && id <= 15 ? id - 8 : (id >= 0 && id <= 7 ? id : 0)];
+  return rgba(c[0], c[1], c[2]);
+}
 
 visualization_msgs::MarkerArray tableMarkers(const physics::TableModel& table, const physics::TableState<double>& state,
                                              double R, double cushion_height, const MarkerFrames& frames)

@@ -8,6 +8,10 @@
 
 namespace cue_sim
 {
+/// Standard pool colours: 1 yellow, 2 blue, 3 red, 4 purple, 5 orange, 6 green, 7 maroon,
+/// 8 black; 9-15 are the stripes of 1-7; 0 is the white cue ball.
+std_msgs::ColorRGBA poolColour(int id);
+
 struct MarkerFrames
 {
   std::string table;        ///< the table frame

@@ -118,6 +118,8 @@ TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
   state_publisher_ = private_node.advertise<cue_sim::TableState>("state", 10);
   marker_publisher_ = private_node.advertise<visualization_msgs::MarkerArray>("markers", 1, true);
   event_publisher_ = private_node.advertise<cue_sim::Event>("events", 1000);
+  cue_publisher_ = private_node.advertise<visualization_msgs::Marker>("cue", 1, true);
+  preview_publisher_ = private_node.advertise<visualization_msgs::MarkerArray>("preview", 1, true);
   if (sim_time_)
   {
     // This node's clock starts at the wall time (never 0) and only ever moves forward.
@@ -131,6 +133,7 @@ TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
   setRack(rack, ros::Time::now());
   services_ = {
       private_node.advertiseService("strike", &TableNode::onStrike, this),
+      private_node.advertiseService("strike_cue", &TableNode::onStrikeCue, this),
       private_node.advertiseService("predict", &TableNode::onPredict, this),
       private_node.advertiseService("predict_batch", &TableNode::onPredictBatch, this),
       private_node.advertiseService("rack", &TableNode::onRack, this),
@@ -229,6 +232,8 @@ void TableNode::rebaseAtRest(const ros::Time& stamp)
 
 void TableNode::run()
 {
+  // The balls' frames exist from the start, even on a table started paused.
+  tick(ros::Time::now());
   if (!sim_time_)
   {
     ros::Rate rate(config_.publish_rate);

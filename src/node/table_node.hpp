@@ -9,15 +9,20 @@
 #include <cue_sim/SetState.h>
 #include <cue_sim/Step.h>
 #include <cue_sim/Strike.h>
+#include <cue_sim/StrikeCue.h>
+#include <geometry_msgs/PoseStamped.h>
 #include <ros/ros.h>
 #include <std_srvs/SetBool.h>
 #include <std_srvs/Trigger.h>
+#include <tf2_ros/buffer.h>
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
+#include <tf2_ros/transform_listener.h>
 
 #include <memory>
 #include <string>
 
+#include "cue_sim/physics/cue_aim.hpp"
 #include "cue_sim/physics/engine.hpp"
 #include "cue_sim/physics/execution_noise.hpp"
 #include "cue_sim/physics/thread_pool.hpp"
@@ -70,6 +75,11 @@ private:
 
   // Shots (shot_services.cpp).
   bool onStrike(Strike::Request& request, Strike::Response& response);
+  bool onStrikeCue(StrikeCue::Request& request, StrikeCue::Response& response);
+  /// Strikes the live table as ~strike does (noise, refusals) and fills the response.
+  void strikeLive(const Shot& shot, const ros::Time& stamp, Strike::Response& response);
+  /// The cue pose in the table frame, or why not (an unknown frame, a bad quaternion).
+  std::string cueInTableFrame(const geometry_msgs::PoseStamped& pose, physics::CueStick& cue);
   bool onPredict(Predict::Request& request, Predict::Response& response);
   bool onPredictBatch(PredictBatch::Request& request, PredictBatch::Response& response);
   /// The table a prediction starts from: the given balls, or the live table if none are given
@@ -103,6 +113,11 @@ private:
   ros::Publisher state_publisher_;
   ros::Publisher marker_publisher_;
   ros::Publisher event_publisher_;
+  ros::Publisher cue_publisher_;      ///< the cue stick at a strike
+  ros::Publisher preview_publisher_;  ///< the paths of the last ~predict
+  /// Listening to tf starts with the first cue pose in another frame than the table's.
+  std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
+  std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
   ros::Publisher clock_publisher_;
   std::vector<ros::ServiceServer> services_;
 };

@@ -93,7 +93,7 @@ std::string aimCue(const std::vector<Ball<double>>& balls, const PhysicsParams<d
   CueStrike<double> strike;
   strike.speed = speed;
   strike.phi = std::hypot(u.x(), u.y()) > 1e-12 ? std::atan2(u.y(), u.x()) : 0.0;
-  strike.theta = std::asin(std::min(1.0, -u.z()));
+  strike.theta = std::max(0.0, std::asin(std::min(1.0, -u.z())));  // never -0 for a level cue
   strike.a = contactOffset(first_axis_offset.dot(right) / R, params);
   strike.b = contactOffset(first_axis_offset.dot(up) / R, params);
   const double tip_offset = std::hypot(strike.a, strike.b);
@@ -110,6 +110,24 @@ std::string aimCue(const std::vector<Ball<double>>& balls, const PhysicsParams<d
   out.strike = strike;
   out.travel = first_travel;
   return "";
+}
+
+CueStick cueStickFor(const Ball<double>& ball, const CueStrike<double>& strike, const PhysicsParams<double>& params,
+                     double gap)
+{
+  const Vec3<double> u(std::cos(strike.theta) * std::cos(strike.phi), std::cos(strike.theta) * std::sin(strike.phi),
+                       -std::sin(strike.theta));
+  Vec3<double> right = u.cross(Vec3<double>::UnitZ());
+  right = right.norm() < 1e-12 ? Vec3<double>(-Vec3<double>::UnitY()) : Vec3<double>(right.normalized());
+  const Vec3<double> up = right.cross(u);
+  const double R = params.ball_radius;
+  const double axis_per_contact = 1 + params.cue_tip_radius / R;  // contactOffset inverted
+  const Vec3<double> offset = R * axis_per_contact * (strike.a * right + strike.b * up);
+  const double along = std::sqrt(std::max(0.0, R * R - offset.squaredNorm()));
+  CueStick cue;
+  cue.tip = ball.r + offset - u * (along + gap);
+  cue.axis = u;
+  return cue;
 }
 
 }  // namespace physics

@@ -6,6 +6,7 @@
 #include <cue_sim/PredictBatch.h>
 #include <cue_sim/Rack.h>
 #include <cue_sim/Strike.h>
+#include <cue_sim/StrikeCue.h>
 #include <cue_sim/TableState.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
@@ -27,6 +28,7 @@ public:
     predict_ = nh_.serviceClient<cue_sim::Predict>(node + "/predict");
     predict_batch_ = nh_.serviceClient<cue_sim::PredictBatch>(node + "/predict_batch");
     rack_ = nh_.serviceClient<cue_sim::Rack>(node + "/rack");
+    strike_cue_ = nh_.serviceClient<cue_sim::StrikeCue>(node + "/strike_cue");
     state_sub_ = nh_.subscribe<cue_sim::TableState>(node + "/state", 10, [this](const cue_sim::TableStateConstPtr& m) {
       std::lock_guard<std::mutex> lock(mutex_);
       last_state_ = m;
@@ -73,6 +75,15 @@ public:
     srv.request.a = s.a;
     srv.request.b = s.b;
     EXPECT_TRUE(strike_.call(srv)) << node_;
+    return srv.response;
+  }
+
+  cue_sim::StrikeCue::Response strikeCue(const geometry_msgs::PoseStamped& cue, double speed)
+  {
+    cue_sim::StrikeCue srv;
+    srv.request.cue = cue;
+    srv.request.speed = speed;
+    EXPECT_TRUE(strike_cue_.call(srv)) << node_;
     return srv.response;
   }
 
@@ -154,7 +165,7 @@ public:
 private:
   std::string node_;
   ros::NodeHandle nh_;
-  ros::ServiceClient strike_, predict_, predict_batch_, rack_;
+  ros::ServiceClient strike_, predict_, predict_batch_, rack_, strike_cue_;
   std::mutex mutex_;
   cue_sim::TableStateConstPtr last_state_;
   // Last, so that it is destroyed first: no callback can then reach the members above.

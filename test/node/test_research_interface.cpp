@@ -3,11 +3,15 @@
 #include <cue_sim/Event.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
+#include <tf2_ros/static_transform_broadcaster.h>
+#include <visualization_msgs/MarkerArray.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <mutex>
 #include <vector>
 
+#include "cue_sim/physics/cue_aim.hpp"
 #include "table_client.hpp"
 
 namespace
@@ -267,6 +271,148 @@ TEST_F(ResearchInterfaceTest, BadPredictionsAreRefusedByFieldAndChangeNothing)
   p = table_.predict(fine);
   EXPECT_FALSE(p.success);
   EXPECT_NE(p.message.find("moving"), std::string::npos) << p.message;
+}
+
+/// A cue pose in the table frame that makes `shot` on a ball at `centre` (cueStickFor), its
+/// tip `gap` metres short.
+geometry_msgs::PoseStamped cuePose(const cue_sim::BallState& ball, const cue_sim::Shot& shot, double gap)
+{
+  cue_sim::physics::Ball<double> b;
+  b.r = cue_sim::physics::Vec3<double>(ball.position.x, ball.position.y, ball.position.z);
+  cue_sim::physics::CueStrike<double> strike;
+  strike.speed = shot.speed;
+  strike.phi = shot.phi;
+  strike.theta = shot.theta;
+  strike.a = shot.a;
+  strike.b = shot.b;
+  const cue_sim::physics::CueStick cue =
+      cue_sim::physics::cueStickFor(b, strike, cue_sim::physics::PhysicsParams<double>(), gap);
+  const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitX(), cue.axis);
+  geometry_msgs::PoseStamped pose;
+  pose.header.frame_id = "table";
+  pose.pose.position.x = cue.tip.x();
+  pose.pose.position.y = cue.tip.y();
+  pose.pose.position.z = cue.tip.z();
+  pose.pose.orientation.x = q.x();
+  pose.pose.orientation.y = q.y();
+  pose.pose.orientation.z = q.z();
+  pose.pose.orientation.w = q.w();
+  return pose;
+}
+
+TEST_F(ResearchInterfaceTest, StrikeCueFindsTheBallAndTheStrikeFromThePoseInAnyFrame)
+{
+  const cue_sim::TableState rack = *table_.atRest(5);
+  const auto balls = TableClient::byId(rack.balls);
+  const cue_sim::Shot planned = TableClient::shot(0, 1.0, 0.2, 0.15, 0.2, -0.1);
+  geometry_msgs::PoseStamped pose = cuePose(balls.at(0), planned, 0.03);
+
+  // The same pose in a robot's frame: the table seen from a base 1 m along x, 2 m along y,
+  // 0.5 m down, turned a quarter turn about z.
+  tf2_ros::StaticTransformBroadcaster broadcaster;
+  geometry_msgs::TransformStamped base;
+  base.header.stamp = ros::Time::now();
+  base.header.frame_id = "table";
+  base.child_frame_id = "robot_base";
+  base.transform.translation.x = 1;
+  base.transform.translation.y = 2;
+  base.transform.translation.z = -0.5;
+  const Eigen::Quaterniond turn(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
+  base.transform.rotation.x = turn.x();
+  base.transform.rotation.y = turn.y();
+  base.transform.rotation.z = turn.z();
+  base.transform.rotation.w = turn.w();
+  broadcaster.sendTransform(base);
+  const Eigen::Vector3d tip_table(pose.pose.position.x, pose.pose.position.y, pose.pose.position.z);
+  const Eigen::Vector3d tip_base = turn.inverse() * (tip_table - Eigen::Vector3d(1, 2, -0.5));
+  const Eigen::Quaterniond q_table(pose.pose.orientation.w, pose.pose.orientation.x, pose.pose.orientation.y,
+                                   pose.pose.orientation.z);
+  const Eigen::Quaterniond q_base = turn.inverse() * q_table;
+  geometry_msgs::PoseStamped in_base = pose;
+  in_base.header.frame_id = "robot_base";
+  in_base.pose.position.x = tip_base.x();
+  in_base.pose.position.y = tip_base.y();
+  in_base.pose.position.z = tip_base.z();
+  in_base.pose.orientation.x = q_base.x();
+  in_base.pose.orientation.y = q_base.y();
+  in_base.pose.orientation.z = q_base.z();
+  in_base.pose.orientation.w = q_base.w();
+
+  const cue_sim::StrikeCue::Response struck = table_.strikeCue(in_base, 1.0);
+  ASSERT_TRUE(struck.success) << struck.message;
+  EXPECT_EQ(struck.shot.ball_id, 0);
+  EXPECT_NEAR(struck.shot.phi, planned.phi, 1e-9);
+  EXPECT_NEAR(struck.shot.theta, planned.theta, 1e-9);
+  EXPECT_NEAR(struck.shot.a, planned.a, 1e-9);
+  EXPECT_NEAR(struck.shot.b, planned.b, 1e-9);
+  EXPECT_EQ(struck.executed.phi, struck.shot.phi);  // no noise on this table
+  // It struck what it says: that shot predicted from the same balls takes the same time.
+  const cue_sim::Prediction p = table_.predict(struck.executed, rack.balls);
+  ASSERT_TRUE(p.success) << p.message;
+  EXPECT_EQ(p.time_to_rest, struck.time_to_rest);
+  EXPECT_EQ(p.events.size(), struck.num_events);
+  // The cue stick is shown along the stroke, its tip at the ball.
+  const auto cue = ros::topic::waitForMessage<visualization_msgs::Marker>("/table/cue", ros::Duration(5));
+  ASSERT_TRUE(cue);
+  EXPECT_EQ(cue->type, visualization_msgs::Marker::CYLINDER);
+  const Eigen::Quaterniond q(cue->pose.orientation.w, cue->pose.orientation.x, cue->pose.orientation.y,
+                             cue->pose.orientation.z);
+  const Eigen::Vector3d tip = Eigen::Vector3d(cue->pose.position.x, cue->pose.position.y, cue->pose.position.z) +
+                              q * Eigen::Vector3d::UnitZ() * (cue->scale.z / 2);
+  const auto& b0 = balls.at(0).position;
+  EXPECT_NEAR((tip - Eigen::Vector3d(b0.x, b0.y, b0.z)).norm(), kRadius + 0.005, 2e-3);
+  table_.atRest(30);
+}
+
+TEST_F(ResearchInterfaceTest, StrikeCueRefusesMissesMiscuesBlockedCuesAndUnknownFrames)
+{
+  const cue_sim::TableState rack = *table_.atRest(5);
+  const auto balls = TableClient::byId(rack.balls);
+  const geometry_msgs::PoseStamped good = cuePose(balls.at(0), TableClient::shot(0, 1, 0.0), 0.03);
+  geometry_msgs::PoseStamped pose = good;
+  pose.pose.position.y += 0.1;  // beside the ball
+  EXPECT_NE(table_.strikeCue(pose, 1).message.find("meets no ball"), std::string::npos);
+  pose = good;
+  pose.pose.position.y -= 0.8 * kRadius;  // inside it, but too far out for the tip
+  EXPECT_NE(table_.strikeCue(pose, 1).message.find("miscue"), std::string::npos);
+  pose = good;
+  pose.header.frame_id = "nowhere";
+  EXPECT_NE(table_.strikeCue(pose, 1).message.find("cannot transform"), std::string::npos);
+  pose = good;
+  pose.pose.orientation.w = 0;
+  EXPECT_NE(table_.strikeCue(pose, 1).message.find("unit quaternion"), std::string::npos);
+  EXPECT_NE(table_.strikeCue(good, 13).message.find("speed"), std::string::npos);
+  // Ball 1 struck away from ball 0, along their line: the shaft passes through ball 0.
+  const cue_sim::Shot backwards = TableClient::shot(1, 1, std::atan2(0.02, 0.6));
+  EXPECT_NE(table_.strikeCue(cuePose(balls.at(1), backwards, 0.01), 1).message.find("shaft passes through ball 0"),
+            std::string::npos);
+  expectSameBalls(table_.freshState()->balls, rack.balls, "after refused cue strikes");
+}
+
+TEST_F(ResearchInterfaceTest, PredictShowsThePathsOfTheBallsThatMoveUntilTheyRest)
+{
+  const cue_sim::TableState rack = *table_.atRest(5);
+  const cue_sim::Prediction p = table_.predict(TableClient::shot(0, 1.0, 0.05, 0.1, 0.2, -0.1));
+  ASSERT_TRUE(p.success) << p.message;
+  ros::Duration(0.3).sleep();
+  const auto preview = ros::topic::waitForMessage<visualization_msgs::MarkerArray>("/table/preview", ros::Duration(5));
+  ASSERT_TRUE(preview);
+  ASSERT_FALSE(preview->markers.empty());
+  EXPECT_EQ(preview->markers[0].action, visualization_msgs::Marker::DELETEALL);
+  const auto start = TableClient::byId(rack.balls), end = TableClient::byId(p.final_balls);
+  std::size_t moved = 0;
+  for (const auto& [id, b] : end)
+    moved += b.position.x != start.at(id).position.x || b.position.y != start.at(id).position.y;
+  ASSERT_EQ(preview->markers.size(), 1 + moved);
+  for (std::size_t k = 1; k < preview->markers.size(); ++k)
+  {
+    const auto& line = preview->markers[k];
+    EXPECT_EQ(line.type, visualization_msgs::Marker::LINE_STRIP);
+    ASSERT_GT(line.points.size(), 10u);
+    EXPECT_EQ(line.points.front().x, start.at(line.id).position.x) << "ball " << line.id;
+    EXPECT_EQ(line.points.back().x, end.at(line.id).position.x) << "ball " << line.id;
+    EXPECT_EQ(line.points.back().y, end.at(line.id).position.y) << "ball " << line.id;
+  }
 }
 }  // namespace
 

@@ -22,24 +22,6 @@ Ball<double> ballAt(int id, double x, double y)
   return b;
 }
 
-/// The cue that strikes `ball` with `strike` (the inverse of aimCue): its axis along phi,
-/// tilted down by theta, passing the centre where the tip's offsets put it, the tip `gap`
-/// metres short of the ball.
-CueStick cueFor(const Ball<double>& ball, const CueStrike<double>& strike, double gap)
-{
-  const Vec3<double> u(std::cos(strike.theta) * std::cos(strike.phi), std::cos(strike.theta) * std::sin(strike.phi),
-                       -std::sin(strike.theta));
-  const Vec3<double> right = u.cross(Vec3<double>::UnitZ()).normalized();
-  const Vec3<double> up = right.cross(u);
-  const double scale = 1 + kParams.cue_tip_radius / R;  // axis offset per contact offset
-  const Vec3<double> offset = R * scale * (strike.a * right + strike.b * up);
-  const double along = std::sqrt(R * R - offset.squaredNorm());
-  CueStick cue;
-  cue.tip = ball.r + offset - u * (along + gap);
-  cue.axis = u;
-  return cue;
-}
-
 CueStrike<double> strikeOf(double phi, double theta, double a, double b)
 {
   CueStrike<double> s;
@@ -88,6 +70,7 @@ TEST(CueAim, AnAxisRightOfCentreIsRightEnglishAndAboveIsFollow)
   EXPECT_NEAR(aim.strike.a, 0, 1e-15);
 }
 
+// aimCue and cueStickFor invert each other.
 TEST(CueAim, RecoversEveryStrikeFromTheCueThatMakesIt)
 {
   std::mt19937 random(5);
@@ -99,7 +82,7 @@ TEST(CueAim, RecoversEveryStrikeFromTheCueThatMakesIt)
     const CueStrike<double> want =
         strikeOf(M_PI * (2 * unit(random) - 1), 1.5 * unit(random), radius * std::cos(angle), radius * std::sin(angle));
     CueAim aim;
-    ASSERT_EQ(aimCue({ball}, kParams, cueFor(ball, want, 0.02), 2, aim), "") << "strike " << i;
+    ASSERT_EQ(aimCue({ball}, kParams, cueStickFor(ball, want, kParams, 0.02), 2, aim), "") << "strike " << i;
     EXPECT_EQ(aim.ball_id, 4);
     EXPECT_NEAR(aim.strike.phi, want.phi, 1e-12) << "strike " << i;
     EXPECT_NEAR(aim.strike.theta, want.theta, 1e-12) << "strike " << i;

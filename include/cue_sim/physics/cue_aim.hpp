@@ -33,5 +33,11 @@ struct CueAim
 std::string aimCue(const std::vector<Ball<double>>& balls, const PhysicsParams<double>& params, const CueStick& cue,
                    double speed, CueAim& out);
 
+/// The cue that makes `strike` on `ball` (the inverse of aimCue): its axis along phi, tilted
+/// down by theta, passing the centre where the tip's offsets put it (contactOffset), its tip
+/// `gap` metres short of touching.
+CueStick cueStickFor(const Ball<double>& ball, const CueStrike<double>& strike, const PhysicsParams<double>& params,
+                     double gap);
+
 }  // namespace physics
 }  // namespace cue_sim
