@@ -131,6 +131,9 @@ TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
   if (!sim_time_)
     clock_.setRate(ros::Time::now(), paused_ ? 0 : config_.real_time_factor);
   setRack(rack, ros::Time::now());
+  applied_config_ = TableNodeConfig::__getDefault__();
+  reconfigure_ = std::make_unique<dynamic_reconfigure::Server<TableNodeConfig>>(private_node);
+  reconfigure_->setCallback([this](TableNodeConfig& config, uint32_t level) { onReconfigure(config, level); });
   services_ = {
       private_node.advertiseService("strike", &TableNode::onStrike, this),
       private_node.advertiseService("strike_cue", &TableNode::onStrikeCue, this),
@@ -206,6 +209,7 @@ double TableNode::catchUp(const ros::Time& stamp)
   if (!state_.anyMoving())
   {
     state_.time = now;  // nothing moves: no physics to do
+    applyPendingPhysics();
     return now;
   }
   std::vector<physics::Event<double>> events;
@@ -221,6 +225,7 @@ double TableNode::catchUp(const ros::Time& stamp)
   }
   for (const auto& e : events)
     event_publisher_.publish(toEventMsg(e, *table_, clock_.stampOf(e.time, stamp), e.time));
+  applyPendingPhysics();  // between shots only
   return now;
 }
 

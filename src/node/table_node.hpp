@@ -10,6 +10,8 @@
 #include <cue_sim/Step.h>
 #include <cue_sim/Strike.h>
 #include <cue_sim/StrikeCue.h>
+#include <cue_sim/TableNodeConfig.h>
+#include <dynamic_reconfigure/server.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <ros/ros.h>
 #include <std_srvs/SetBool.h>
@@ -20,6 +22,7 @@
 #include <tf2_ros/transform_listener.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "cue_sim/physics/cue_aim.hpp"
@@ -86,6 +89,13 @@ private:
   /// (which must be at rest); every ball referred to time 0. Empty if it can, else why not.
   std::string predictionStart(const std::vector<BallState>& balls, physics::TableState<double>& start);
 
+  // dynamic_reconfigure (reconfigure.cpp): coefficients and models apply between shots.
+  void onReconfigure(TableNodeConfig& config, uint32_t level);
+  /// Empty if the coefficients and models of `config` make a valid engine for the balls on the
+  /// table, which it then builds into `engine`; else why not.
+  std::string engineFor(const TableNodeConfig& config, std::unique_ptr<physics::Engine<double>>& engine) const;
+  void applyPendingPhysics();
+
   // Simulation control (control_services.cpp).
   bool onPause(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response);
   bool onStep(Step::Request& request, Step::Response& response);
@@ -120,6 +130,9 @@ private:
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
   ros::Publisher clock_publisher_;
   std::vector<ros::ServiceServer> services_;
+  std::unique_ptr<dynamic_reconfigure::Server<TableNodeConfig>> reconfigure_;
+  TableNodeConfig applied_config_;                           ///< the last valid configuration
+  std::unique_ptr<physics::Engine<double>> pending_engine_;  ///< waiting for the balls to rest
 };
 
 }  // namespace cue_sim

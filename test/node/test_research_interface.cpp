@@ -1,6 +1,7 @@
 // The research interface through a real master: ~predict and ~predict_batch against ~strike
 // (bit for bit), ~events, execution noise, and refusals by field.
 #include <cue_sim/Event.h>
+#include <dynamic_reconfigure/Reconfigure.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <tf2_ros/static_transform_broadcaster.h>
@@ -8,6 +9,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <map>
 #include <mutex>
 #include <vector>
 
@@ -413,6 +415,97 @@ TEST_F(ResearchInterfaceTest, PredictShowsThePathsOfTheBallsThatMoveUntilTheyRes
     EXPECT_EQ(line.points.back().x, end.at(line.id).position.x) << "ball " << line.id;
     EXPECT_EQ(line.points.back().y, end.at(line.id).position.y) << "ball " << line.id;
   }
+}
+
+/// Sets doubles and strings of a node's dynamic_reconfigure; answers the configuration after.
+dynamic_reconfigure::Config reconfigure(const std::string& node, const std::map<std::string, double>& doubles,
+                                        const std::map<std::string, std::string>& strings = {})
+{
+  dynamic_reconfigure::Reconfigure srv;
+  for (const auto& [name, value] : doubles)
+  {
+    dynamic_reconfigure::DoubleParameter p;
+    p.name = name;
+    p.value = value;
+    srv.request.config.doubles.push_back(p);
+  }
+  for (const auto& [name, value] : strings)
+  {
+    dynamic_reconfigure::StrParameter p;
+    p.name = name;
+    p.value = value;
+    srv.request.config.strs.push_back(p);
+  }
+  EXPECT_TRUE(ros::service::call(node + "/set_parameters", srv));
+  return srv.response.config;
+}
+
+double doubleOf(const dynamic_reconfigure::Config& config, const std::string& name)
+{
+  for (const auto& p : config.doubles)
+    if (p.name == name)
+      return p.value;
+  ADD_FAILURE() << name << " is not in the configuration";
+  return std::nan("");
+}
+
+std::string stringOf(const dynamic_reconfigure::Config& config, const std::string& name)
+{
+  for (const auto& p : config.strs)
+    if (p.name == name)
+      return p.value;
+  ADD_FAILURE() << name << " is not in the configuration";
+  return "";
+}
+
+/// Time to rest [s] of one ball struck level through its centre, by the closed form.
+double restTime(const cue_sim::Prediction& p, double mu_roll)
+{
+  const double v0 = p.samples.at(0).balls.at(0).velocity.x;
+  return 2 * v0 / (7 * kMuSlide * kGravity) + 5.0 / 7.0 * v0 / (mu_roll * kGravity);
+}
+
+TEST_F(ResearchInterfaceTest, ReconfigureStartsFromTheNodesParametersAndChangesPhysicsBetweenShots)
+{
+  // The noisy table was started with mu_roll 0.015 (its launch parameters), not the default.
+  EXPECT_EQ(doubleOf(reconfigure("/noisy_table", {}), "mu_roll"), 0.015);
+  const dynamic_reconfigure::Config start = reconfigure("/table", {});
+  EXPECT_EQ(doubleOf(start, "mu_roll"), kMuRoll);
+  EXPECT_EQ(doubleOf(start, "mu_slide"), kMuSlide);
+  EXPECT_EQ(stringOf(start, "ball_ball_model"), "frictional");
+
+  cue_sim::BallState lone;
+  lone.id = 0;
+  lone.position.x = -0.8;
+  const cue_sim::Shot gentle = TableClient::shot(0, 0.3, 0.0);
+  // At rest, a change applies at once.
+  EXPECT_EQ(doubleOf(reconfigure("/table", {{"mu_roll", 0.02}}), "mu_roll"), 0.02);
+  cue_sim::Prediction p = table_.predict(gentle, {lone}, 0.01);
+  ASSERT_TRUE(p.success) << p.message;
+  EXPECT_NEAR(p.time_to_rest, restTime(p, 0.02), 1e-12);
+
+  // During a shot, the shot finishes with the physics it started with.
+  const cue_sim::Shot shot = TableClient::shot(0, 1.0, 0.05, 0.1, 0.2, -0.1);
+  const cue_sim::Prediction planned = table_.predict(shot);
+  ASSERT_TRUE(table_.strike(shot).success);
+  reconfigure("/table", {{"mu_roll", kMuRoll}});
+  const cue_sim::TableState rest = *table_.atRest(planned.time_to_rest + 10);
+  expectSameBalls(rest.balls, planned.final_balls, "a shot during a reconfiguration");
+  p = table_.predict(gentle, {lone}, 0.01);
+  EXPECT_NEAR(p.time_to_rest, restTime(p, kMuRoll), 1e-12);
+
+  // An invalid value is refused, and the last valid one stays.
+  EXPECT_EQ(doubleOf(reconfigure("/table", {{"mu_slide", -1}}), "mu_slide"), kMuSlide);
+  EXPECT_EQ(table_.predict(gentle, {lone}, 0.01).time_to_rest, p.time_to_rest);
+
+  // Another model gives other physics; back again, the same as before.
+  ASSERT_TRUE(table_.rack("custom", kIds, kPositions).success);
+  const cue_sim::Prediction frictional = table_.predict(shot);
+  EXPECT_EQ(stringOf(reconfigure("/table", {}, {{"ball_ball_model", "frictionless"}}), "ball_ball_model"),
+            "frictionless");
+  EXPECT_NE(table_.predict(shot).time_to_rest, frictional.time_to_rest);
+  reconfigure("/table", {}, {{"ball_ball_model", "frictional"}});
+  EXPECT_EQ(table_.predict(shot).time_to_rest, frictional.time_to_rest);
 }
 }  // namespace
 
