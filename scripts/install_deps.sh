@@ -12,6 +12,7 @@ PACKAGES=(
   librosbag-dev librostest-dev rosout python3-rostest python3-roslaunch python3-rosbag python3-rosservice
   python3-std-srvs python3-rosgraph-msgs python3-rospy python3-rostopic python3-rosnode rosbash python3-geometry-msgs python3-tf2-msgs python3-visualization-msgs
   liburdfdom-tools libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure python3-yaml
+  libinteractive-markers-dev
   # rviz, and rviz without a screen (screenshots)
   rviz xvfb xauth imagemagick
   # plots of the work-precision report

@@ -134,6 +134,27 @@ TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
   applied_config_ = TableNodeConfig::__getDefault__();
   reconfigure_ = std::make_unique<dynamic_reconfigure::Server<TableNodeConfig>>(private_node);
   reconfigure_->setCallback([this](TableNodeConfig& config, uint32_t level) { onReconfigure(config, level); });
+  bool aim_marker = true;
+  private_node.param("aim_marker", aim_marker, aim_marker);
+  if (aim_marker)
+    aim_marker_ = std::make_unique<AimMarker>(
+        private_node.resolveName("aim"), config_.table_frame, engine_->params().ball_radius,
+        [this](const Shot& shot) {
+          Strike::Response response;
+          strikeLive(shot, ros::Time::now(), response);
+          if (response.success)
+            ROS_INFO("cue_sim: aim marker: %s", response.message.c_str());
+          else
+            ROS_WARN("cue_sim: aim marker: %s", response.message.c_str());
+        },
+        [this](const Shot& shot) {
+          Predict::Request request;
+          Predict::Response response;
+          request.shot = shot;
+          onPredict(request, response);
+          if (!response.prediction.success)
+            ROS_WARN("cue_sim: aim marker: %s", response.prediction.message.c_str());
+        });
   services_ = {
       private_node.advertiseService("strike", &TableNode::onStrike, this),
       private_node.advertiseService("strike_cue", &TableNode::onStrikeCue, this),
@@ -289,6 +310,10 @@ void TableNode::tick(const ros::Time& stamp)
   {
     snapshot_ = engine_->snapshot(state_);
     snapshot_at_rest_ = !state_.anyMoving();
+    // The aim marker waits at the cue ball once everything rests.
+    const int cue = state_.indexOf(0);
+    if (snapshot_at_rest_ && aim_marker_ && cue >= 0 && snapshot_[cue].inPlay())
+      aim_marker_->place(snapshot_[cue].r.head<2>());
   }
   const std::vector<Ball<double>>& balls = snapshot_;
   std::vector<geometry_msgs::TransformStamped> transforms;

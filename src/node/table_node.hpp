@@ -29,6 +29,7 @@
 #include "cue_sim/physics/engine.hpp"
 #include "cue_sim/physics/execution_noise.hpp"
 #include "cue_sim/physics/thread_pool.hpp"
+#include "node/aim_marker.hpp"
 #include "node/physics_clock.hpp"
 
 namespace cue_sim
@@ -131,6 +132,7 @@ private:
   ros::Publisher clock_publisher_;
   std::vector<ros::ServiceServer> services_;
   std::unique_ptr<dynamic_reconfigure::Server<TableNodeConfig>> reconfigure_;
+  std::unique_ptr<AimMarker> aim_marker_;                    ///< rviz: aim and fire at the cue ball
   TableNodeConfig applied_config_;                           ///< the last valid configuration
   std::unique_ptr<physics::Engine<double>> pending_engine_;  ///< waiting for the balls to rest
 };

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <tf2_ros/static_transform_broadcaster.h>
+#include <visualization_msgs/InteractiveMarkerFeedback.h>
+#include <visualization_msgs/InteractiveMarkerInit.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include <Eigen/Geometry>
@@ -506,6 +508,49 @@ TEST_F(ResearchInterfaceTest, ReconfigureStartsFromTheNodesParametersAndChangesP
   EXPECT_NE(table_.predict(shot).time_to_rest, frictional.time_to_rest);
   reconfigure("/table", {}, {{"ball_ball_model", "frictional"}});
   EXPECT_EQ(table_.predict(shot).time_to_rest, frictional.time_to_rest);
+}
+
+TEST_F(ResearchInterfaceTest, TheAimMarkerFiresTheShotItShows)
+{
+  const cue_sim::TableState rack = *table_.atRest(5);
+  const auto cue_ball = TableClient::byId(rack.balls).at(0).position;
+  // rviz's side of the conversation: the marker as the server sends it, and the user's drag
+  // and menu click as feedback.
+  const auto full =
+      ros::topic::waitForMessage<visualization_msgs::InteractiveMarkerInit>("/table/aim/update_full", ros::Duration(5));
+  ASSERT_TRUE(full);
+  ASSERT_EQ(full->markers.size(), 1u);
+  EXPECT_NEAR(full->markers[0].pose.position.x, cue_ball.x + 0.5, 1e-12) << "the default aim: 2 m/s along +x";
+  EXPECT_NEAR(full->markers[0].pose.position.y, cue_ball.y, 1e-12);
+  ros::Publisher feedback = nh_.advertise<visualization_msgs::InteractiveMarkerFeedback>("/table/aim/feedback", 10);
+  for (int i = 0; i < 100 && feedback.getNumSubscribers() == 0; ++i)
+    ros::Duration(0.05).sleep();
+  ASSERT_GT(feedback.getNumSubscribers(), 0u);
+  visualization_msgs::InteractiveMarkerFeedback f;
+  f.header.frame_id = "table";
+  f.client_id = "/test";
+  f.marker_name = "aim";
+  f.control_name = "aim";
+  f.event_type = visualization_msgs::InteractiveMarkerFeedback::POSE_UPDATE;
+  f.pose.position.x = cue_ball.x + 0.2;
+  f.pose.position.y = cue_ball.y + 0.1;
+  f.pose.orientation.w = 1;
+  feedback.publish(f);
+  ros::Duration(0.3).sleep();
+  // What the marker aims: heading to the handle, 4 m/s per metre of arrow.
+  const Eigen::Vector2d aim =
+      Eigen::Vector2d(f.pose.position.x, f.pose.position.y) - Eigen::Vector2d(cue_ball.x, cue_ball.y);
+  const cue_sim::Shot aimed = TableClient::shot(0, std::min(12.0, 4.0 * aim.norm()), std::atan2(aim.y(), aim.x()));
+  const cue_sim::Prediction planned = table_.predict(aimed);
+  ASSERT_TRUE(planned.success) << planned.message;
+
+  const ros::Time clicked = ros::Time::now();
+  f.event_type = visualization_msgs::InteractiveMarkerFeedback::MENU_SELECT;
+  f.control_name = "menu";
+  f.menu_entry_id = 1;  // "Strike"
+  feedback.publish(f);
+  table_.atRest(planned.time_to_rest + 10);
+  expectSameEvents(eventsSince(clicked), planned.events, "the shot fired from the aim marker");
 }
 }  // namespace
 
