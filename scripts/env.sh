@@ -19,5 +19,8 @@ cue_sim_source_devel() {
   source "$CUE_SIM_DEVEL/setup.bash"
   set -u
   # A standalone package build leaves its source out of ROS_PACKAGE_PATH: add it.
-  export ROS_PACKAGE_PATH="$CUE_SIM_ROOT${ROS_PACKAGE_PATH:+:$ROS_PACKAGE_PATH}"
+  case ":${ROS_PACKAGE_PATH:-}:" in
+    *":$CUE_SIM_ROOT:"*) ;;
+    *) export ROS_PACKAGE_PATH="$CUE_SIM_ROOT${ROS_PACKAGE_PATH:+:$ROS_PACKAGE_PATH}" ;;
+  esac
 }
