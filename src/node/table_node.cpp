@@ -134,27 +134,7 @@ TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
   applied_config_ = TableNodeConfig::__getDefault__();
   reconfigure_ = std::make_unique<dynamic_reconfigure::Server<TableNodeConfig>>(private_node);
   reconfigure_->setCallback([this](TableNodeConfig& config, uint32_t level) { onReconfigure(config, level); });
-  bool aim_marker = true;
-  private_node.param("aim_marker", aim_marker, aim_marker);
-  if (aim_marker)
-    aim_marker_ = std::make_unique<AimMarker>(
-        private_node.resolveName("aim"), config_.table_frame, engine_->params().ball_radius,
-        [this](const Shot& shot) {
-          Strike::Response response;
-          strikeLive(shot, ros::Time::now(), response);
-          if (response.success)
-            ROS_INFO("cue_sim: aim marker: %s", response.message.c_str());
-          else
-            ROS_WARN("cue_sim: aim marker: %s", response.message.c_str());
-        },
-        [this](const Shot& shot) {
-          Predict::Request request;
-          Predict::Response response;
-          request.shot = shot;
-          onPredict(request, response);
-          if (!response.prediction.success)
-            ROS_WARN("cue_sim: aim marker: %s", response.prediction.message.c_str());
-        });
+  startAimMarker(private_node);
   services_ = {
       private_node.advertiseService("strike", &TableNode::onStrike, this),
       private_node.advertiseService("strike_cue", &TableNode::onStrikeCue, this),
@@ -189,6 +169,32 @@ void TableNode::loadNoise(ros::NodeHandle& private_node)
     throw std::runtime_error("~noise/seed must be >= 0");
   live_cue_ = physics::NoisyCue(config_.noise_enabled ? noise : physics::ExecutionNoise::none(),
                                 static_cast<std::uint64_t>(config_.noise_seed));
+}
+
+void TableNode::startAimMarker(ros::NodeHandle& private_node)
+{
+  bool enabled = true;
+  private_node.param("aim_marker", enabled, enabled);
+  if (!enabled)
+    return;
+  const auto strike = [this](const Shot& shot) {
+    Strike::Response response;
+    strikeLive(shot, ros::Time::now(), response);
+    if (response.success)
+      ROS_INFO("cue_sim: aim marker: %s", response.message.c_str());
+    else
+      ROS_WARN("cue_sim: aim marker: %s", response.message.c_str());
+  };
+  const auto predict = [this](const Shot& shot) {
+    Predict::Request request;
+    Predict::Response response;
+    request.shot = shot;
+    onPredict(request, response);  // draws the paths on ~preview
+    if (!response.prediction.success)
+      ROS_WARN("cue_sim: aim marker: %s", response.prediction.message.c_str());
+  };
+  aim_marker_ = std::make_unique<AimMarker>(private_node.resolveName("aim"), config_.table_frame,
+                                            engine_->params().ball_radius, strike, predict);
 }
 
 void TableNode::loadTable(ros::NodeHandle& node, ros::NodeHandle& private_node)

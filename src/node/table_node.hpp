@@ -67,6 +67,7 @@ private:
   /// With use_sim_time: moves the node's /clock on by `by` and ticks there.
   void advanceSimClock(const ros::Duration& by);
   void loadNoise(ros::NodeHandle& private_node);
+  void startAimMarker(ros::NodeHandle& private_node);
   /// Brings the live state up to `stamp` (processing its events, published on ~events) and
   /// returns the physics time.
   double catchUp(const ros::Time& stamp);
