@@ -106,11 +106,11 @@ Trajectory<S> shifted(const Trajectory<S>& path, S delta)
 
 namespace
 {
-/// Smallest and largest value of c0 + c1 tau + c2 tau^2 over tau in [0, T] (T may be +inf).
+/// Smallest and largest value of c0 + c1 tau + c2 tau^2 over tau in [T0, T] (T may be +inf).
 template <typename S>
-void quadraticRange(S c0, S c1, S c2, S T, S& low, S& high)
+void quadraticRange(S c0, S c1, S c2, S T0, S T, S& low, S& high)
 {
-  low = high = c0;
+  low = high = T0 == S(0) ? c0 : c0 + T0 * (c1 + T0 * c2);
   const auto include = [&](S x) {
     low = std::min(low, x);
     high = std::max(high, x);
@@ -122,7 +122,7 @@ void quadraticRange(S c0, S c1, S c2, S T, S& low, S& high)
   if (c2 != S(0))
   {
     const S vertex = -c1 / (S(2) * c2);
-    if (vertex > S(0) && vertex < T)
+    if (vertex > T0 && vertex < T)
       include(c0 + vertex * (c1 + vertex * c2));
   }
 }
@@ -157,11 +157,11 @@ void Engine<S>::computePath(const Ball<S>& ball, std::size_t index, Paths& paths
     return;
   }
   computeOwnEvent(ball, index, paths);
-  drawBox(ball, index, paths, window);
+  drawBox(ball, index, paths, ball.time, window);
 }
 
 template <typename S>
-void Engine<S>::drawBox(const Ball<S>& ball, std::size_t index, Paths& paths, S window) const
+void Engine<S>::drawBox(const Ball<S>& ball, std::size_t index, Paths& paths, S from, S window) const
 {
   auto& record = paths[index];
   record.window = std::min(window, record.first.time);
@@ -169,10 +169,11 @@ void Engine<S>::drawBox(const Ball<S>& ball, std::size_t index, Paths& paths, S 
   const S margin = params_.ball_radius + S(1e-9);
   const Trajectory<S>& p = record.path;
   const S T = ball.translating() ? record.window - ball.time : S(0);
+  const S T0 = ball.translating() ? std::min(from - ball.time, T) : S(0);
   for (int axis = 0; axis < 2; ++axis)
   {
     S low, high;
-    quadraticRange(p.c0[axis], p.c1[axis], p.c2[axis], T, low, high);
+    quadraticRange(p.c0[axis], p.c1[axis], p.c2[axis], T0, T, low, high);
     record.low[axis] = low - margin;
     record.high[axis] = high + margin;
   }
@@ -206,7 +207,7 @@ void Engine<S>::computeOwnEvent(const Ball<S>& ball, std::size_t index, Paths& p
   const auto sweep = [&] {
     const S T = first.time - base;
     for (int axis = 0; axis < 2; ++axis)
-      quadraticRange(p.c0[axis], p.c1[axis], p.c2[axis], T, low[axis], high[axis]);
+      quadraticRange(p.c0[axis], p.c1[axis], p.c2[axis], S(0), T, low[axis], high[axis]);
   };
   const auto outOfReach = [&](const auto& obstacle) {
     return (low.array() > obstacle.high.array()).any() || (obstacle.low.array() > high.array()).any();
@@ -532,7 +533,9 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
       const int k = queue.front().candidate.ball;
       std::pop_heap(queue.begin(), queue.end(), later);
       queue.pop_back();
-      drawBox(state.balls[k], k, paths, windowFrom(k, paths[k].window));
+      // Only what is still ahead: the new box starts where the old window ends (nothing is
+      // tested against a time before it any more).
+      drawBox(state.balls[k], k, paths, paths[k].window, windowFrom(k, paths[k].window));
       list(k);
       pushRenewal(k);
       visitNear(k, [&](int o) {

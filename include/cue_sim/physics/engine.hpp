@@ -104,7 +104,8 @@ private:
   /// The ball's path, its own next event, and its box until `window` (absolute).
   void computePath(const Ball<S>& ball, std::size_t index, Paths& paths, S window) const;
   void restingPath(const Ball<S>& ball, std::size_t index, Paths& paths) const;
-  void drawBox(const Ball<S>& ball, std::size_t index, Paths& paths, S window) const;
+  /// The box the ball's centre stays in from `from` until `window` (absolute times).
+  void drawBox(const Ball<S>& ball, std::size_t index, Paths& paths, S from, S window) const;
   void computeOwnEvent(const Ball<S>& ball, std::size_t index, Paths& paths) const;
   bool pairCandidate(int a, int b, const Paths& paths, Candidate& out) const;
   Event<S> eventOf(const TableState<S>& state, const Candidate& candidate) const;
