@@ -19,86 +19,38 @@
 #include <sstream>
 #include <thread>
 
+#include "table_client.hpp"
+
 namespace
 {
 const double kRadius = 0.028575;
 const double kMassRatio = 0.170097 / 0.567;
 
+/// The table through TableClient (table_client.hpp), with this file's shorthands.
 class TableNodeTest : public ::testing::Test
 {
 protected:
   void SetUp() override
   {
-    ASSERT_TRUE(ros::service::waitForService("/table/strike", ros::Duration(20)));
-    ASSERT_TRUE(ros::service::waitForService("/table/rack", ros::Duration(5)));
-    strike_ = nh_.serviceClient<cue_sim::Strike>("/table/strike");
-    rack_ = nh_.serviceClient<cue_sim::Rack>("/table/rack");
+    ASSERT_TRUE(ros::service::waitForService("/table/reset", ros::Duration(5)));
     reset_ = nh_.serviceClient<std_srvs::Trigger>("/table/reset");
-    state_sub_ = nh_.subscribe<cue_sim::TableState>("/table/state", 10,
-                                                    [this](const cue_sim::TableStateConstPtr& m) { last_state_ = m; });
   }
 
   cue_sim::Rack::Response rack(const std::string& layout, const std::vector<int>& ids = {},
                                const std::vector<std::pair<double, double>>& xy = {})
   {
-    cue_sim::Rack srv;
-    srv.request.layout = layout;
-    for (int id : ids)
-      srv.request.ids.push_back(id);
-    for (const auto& p : xy)
-    {
-      geometry_msgs::Point point;
-      point.x = p.first;
-      point.y = p.second;
-      srv.request.positions.push_back(point);
-    }
-    EXPECT_TRUE(rack_.call(srv));
-    return srv.response;
+    return table_.rack(layout, ids, xy);
   }
 
   cue_sim::Strike::Response strike(int ball, double speed, double phi, double theta = 0, double a = 0, double b = 0)
   {
-    cue_sim::Strike srv;
-    srv.request.ball_id = ball;
-    srv.request.speed = speed;
-    srv.request.phi = phi;
-    srv.request.theta = theta;
-    srv.request.a = a;
-    srv.request.b = b;
-    EXPECT_TRUE(strike_.call(srv));
-    return srv.response;
+    return table_.strike(TableClient::shot(ball, speed, phi, theta, a, b));
   }
 
   /// The next ~state message published after now.
-  cue_sim::TableStateConstPtr freshState()
-  {
-    const ros::Time asked = ros::Time::now();
-    for (int i = 0; i < 500; ++i)
-    {
-      ros::Duration(0.01).sleep();
-      if (last_state_ && last_state_->header.stamp > asked)
-        return last_state_;
-    }
-    ADD_FAILURE() << "no ~state message";
-    return last_state_;
-  }
-
-  void waitUntilAtRest(double timeout)
-  {
-    const ros::Time until = ros::Time::now() + ros::Duration(timeout);
-    while (ros::Time::now() < until)
-      if (!freshState()->moving)
-        return;
-    ADD_FAILURE() << "balls still moving after " << timeout << " s";
-  }
-
-  static std::map<int, cue_sim::BallState> byId(const cue_sim::TableState& s)
-  {
-    std::map<int, cue_sim::BallState> out;
-    for (const auto& b : s.balls)
-      out[b.id] = b;
-    return out;
-  }
+  cue_sim::TableStateConstPtr freshState() { return table_.freshState(); }
+  void waitUntilAtRest(double timeout) { table_.atRest(timeout); }
+  static std::map<int, cue_sim::BallState> byId(const cue_sim::TableState& s) { return TableClient::byId(s.balls); }
 
   void expectUnchanged(const cue_sim::TableState& before, const std::string& what)
   {
@@ -114,9 +66,8 @@ protected:
   }
 
   ros::NodeHandle nh_;
-  ros::ServiceClient strike_, rack_, reset_;
-  cue_sim::TableStateConstPtr last_state_;
-  ros::Subscriber state_sub_;  // last: destroyed first, before what its callback uses
+  TableClient table_;
+  ros::ServiceClient reset_;
 };
 
 TEST_F(TableNodeTest, MarkersArriveLatchedWithEveryLayer)
