@@ -13,18 +13,6 @@
 
 namespace cue_sim
 {
-namespace
-{
-/// Every ball referred to time 0, as at a strike from rest.
-physics::TableState<double> atTimeZero(physics::TableState<double> state)
-{
-  state.time = state.event_time = 0;
-  for (auto& b : state.balls)
-    b.time = 0;
-  return state;
-}
-}  // namespace
-
 std::string TableNode::predictionStart(const std::vector<BallState>& balls, physics::TableState<double>& start)
 {
   if (balls.empty())

@@ -32,15 +32,6 @@ std::string readFile(const std::string& path)
   return text.str();
 }
 
-/// A rack placed at time t: every ball at rest, referred to t.
-PhysicsState placedAt(PhysicsState rack, double t)
-{
-  rack.time = rack.event_time = t;
-  for (auto& b : rack.balls)
-    b.time = t;
-  return rack;
-}
-
 geometry_msgs::TransformStamped makeTransform(const std::string& parent, const std::string& child,
                                               const Eigen::Vector3d& p, const Eigen::Quaterniond& q,
                                               const ros::Time& stamp)
@@ -59,6 +50,14 @@ geometry_msgs::TransformStamped makeTransform(const std::string& parent, const s
   return t;
 }
 }  // namespace
+
+physics::TableState<double> atTimeZero(physics::TableState<double> state)
+{
+  state.time = state.event_time = 0;
+  for (auto& b : state.balls)
+    b.time = 0;
+  return state;
+}
 
 TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
 {
@@ -259,7 +258,7 @@ double TableNode::catchUp(const ros::Time& stamp)
 void TableNode::rebaseAtRest(const ros::Time& stamp)
 {
   clock_.restart(stamp);
-  state_ = placedAt(state_, 0.0);
+  state_ = atTimeZero(state_);
 }
 
 void TableNode::run()
@@ -335,7 +334,7 @@ void TableNode::tick(const ros::Time& stamp)
 void TableNode::setRack(PhysicsState rack, const ros::Time& stamp)
 {
   clock_.restart(stamp);
-  state_ = placedAt(rack, 0.0);
+  state_ = atTimeZero(rack);
   snapshot_at_rest_ = false;
   last_rack_ = rack;
   publishMarkers();

@@ -34,6 +34,10 @@
 
 namespace cue_sim
 {
+/// Every ball referred to time 0: a table at rest, as at a strike from rest (the node's physics
+/// time restarts there, and predictions start there too).
+physics::TableState<double> atTimeZero(physics::TableState<double> state);
+
 class TableNode
 {
 public:
