@@ -110,13 +110,14 @@ public:
     return srv.response;
   }
 
-  /// The first ~state message stamped after now.
+  /// The first ~state message stamped after now. Waits in wall time: with sim time as fast as
+  /// possible, a simulated 10 ms passes in next to no time.
   cue_sim::TableStateConstPtr freshState()
   {
     const ros::Time asked = ros::Time::now();
     for (int i = 0; i < 500; ++i)
     {
-      ros::Duration(0.01).sleep();
+      ros::WallDuration(0.01).sleep();
       std::lock_guard<std::mutex> lock(mutex_);
       if (last_state_ && last_state_->header.stamp > asked)
         return last_state_;
@@ -140,11 +141,11 @@ public:
     return boost::make_shared<cue_sim::TableState>();
   }
 
-  /// The first ~state at rest, waiting at most `timeout` seconds.
+  /// The first ~state at rest, waiting at most `timeout` seconds of wall time.
   cue_sim::TableStateConstPtr atRest(double timeout)
   {
-    const ros::Time until = ros::Time::now() + ros::Duration(timeout);
-    while (ros::Time::now() < until)
+    const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(timeout);
+    while (ros::WallTime::now() < until)
     {
       const auto state = freshState();
       if (!state->moving)

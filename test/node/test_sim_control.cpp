@@ -184,6 +184,7 @@ TEST_F(SimControlTest, EveryBallTransformInTheBagIsTheExactTrajectoryAtItsStamp)
   const std::vector<int> ids = {0, 1, 2, 3};
   ASSERT_TRUE(table_.rack("custom", ids, {{-0.6, 0.0}, {0.0, 0.02}, {0.15, -0.2}, {0.3, 0.25}}).success);
   const cue_sim::TableState rack = *table_.atRest(10);
+  ASSERT_EQ(rack.balls.size(), ids.size());
   pause(true);
   const std::string bag_path = std::string(CUE_SIM_TEST_DIR) + "/sim_shot_test.bag";
   std::remove(bag_path.c_str());
