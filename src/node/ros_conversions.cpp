@@ -15,13 +15,30 @@ geometry_msgs::Vector3 toVector3(const physics::Vec3<double>& v)
   return out;
 }
 
+geometry_msgs::Point toPoint(const physics::Vec3<double>& p)
+{
+  geometry_msgs::Point out;
+  out.x = p.x();
+  out.y = p.y();
+  out.z = p.z();
+  return out;
+}
+
+geometry_msgs::Quaternion toQuaternion(const Eigen::Quaterniond& q)
+{
+  geometry_msgs::Quaternion out;
+  out.x = q.x();
+  out.y = q.y();
+  out.z = q.z();
+  out.w = q.w();
+  return out;
+}
+
 BallState toBallStateMsg(const physics::Ball<double>& ball, const physics::TableModel& table)
 {
   BallState msg;
   msg.id = ball.id;
-  msg.position.x = ball.r.x();
-  msg.position.y = ball.r.y();
-  msg.position.z = ball.r.z();
+  msg.position = toPoint(ball.r);
   msg.velocity = toVector3(ball.v);
   msg.angular_velocity = toVector3(ball.w);
   msg.motion = static_cast<uint8_t>(ball.motion);
@@ -65,6 +82,18 @@ Shot toShotMsg(int ball_id, const physics::CueStrike<double>& strike)
   shot.theta = strike.theta;
   shot.a = strike.a;
   shot.b = strike.b;
+  return shot;
+}
+
+Shot shotOf(const Strike::Request& request)
+{
+  Shot shot;
+  shot.ball_id = request.ball_id;
+  shot.speed = request.speed;
+  shot.phi = request.phi;
+  shot.theta = request.theta;
+  shot.a = request.a;
+  shot.b = request.b;
   return shot;
 }
 

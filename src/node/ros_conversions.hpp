@@ -4,9 +4,13 @@
 #include <cue_sim/BallState.h>
 #include <cue_sim/Event.h>
 #include <cue_sim/Shot.h>
+#include <cue_sim/Strike.h>
 #include <cue_sim/TableState.h>
+#include <geometry_msgs/Point.h>
+#include <geometry_msgs/Quaternion.h>
 #include <geometry_msgs/Vector3.h>
 
+#include <Eigen/Geometry>
 #include <string>
 #include <vector>
 
@@ -15,12 +19,16 @@
 namespace cue_sim
 {
 geometry_msgs::Vector3 toVector3(const physics::Vec3<double>& v);
+geometry_msgs::Point toPoint(const physics::Vec3<double>& p);
+geometry_msgs::Quaternion toQuaternion(const Eigen::Quaterniond& q);
 BallState toBallStateMsg(const physics::Ball<double>& ball, const physics::TableModel& table);
 TableState toTableStateMsg(const std::vector<physics::Ball<double>>& balls, const physics::TableModel& table,
                            const ros::Time& stamp, const std::string& frame_id);
 
 physics::CueStrike<double> toCueStrike(const Shot& shot);
 Shot toShotMsg(int ball_id, const physics::CueStrike<double>& strike);
+/// The shot a ~strike request asks for (its fields are those of cue_sim/Shot).
+Shot shotOf(const Strike::Request& request);
 
 /// `stamp` is when the event happened (zero in predictions); `shot_time` [s] since the strike.
 Event toEventMsg(const physics::Event<double>& event, const physics::TableModel& table, const ros::Time& stamp,

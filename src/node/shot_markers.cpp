@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "node/ros_conversions.hpp"
 #include "node/table_markers.hpp"
 
 namespace cue_sim
@@ -23,13 +24,8 @@ Marker cueStickMarker(const physics::CueStick& cue, const std::string& frame, co
   const Eigen::Vector3d middle = cue.tip - u * (cue.length / 2);
   // A cylinder's axis is its z axis: turn z onto the stroke.
   const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), u);
-  m.pose.position.x = middle.x();
-  m.pose.position.y = middle.y();
-  m.pose.position.z = middle.z();
-  m.pose.orientation.x = q.x();
-  m.pose.orientation.y = q.y();
-  m.pose.orientation.z = q.z();
-  m.pose.orientation.w = q.w();
+  m.pose.position = toPoint(middle);
+  m.pose.orientation = toQuaternion(q);
   m.scale.x = m.scale.y = 2 * cue.shaft_radius;
   m.scale.z = cue.length;
   m.color.r = 0.85f;

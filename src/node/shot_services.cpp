@@ -35,14 +35,7 @@ std::string TableNode::predictionStart(const std::vector<BallState>& balls, phys
 
 bool TableNode::onStrike(Strike::Request& request, Strike::Response& response)
 {
-  Shot shot;
-  shot.ball_id = request.ball_id;
-  shot.speed = request.speed;
-  shot.phi = request.phi;
-  shot.theta = request.theta;
-  shot.a = request.a;
-  shot.b = request.b;
-  strikeLive(shot, ros::Time::now(), response);
+  strikeLive(shotOf(request), ros::Time::now(), response);
   return true;
 }
 

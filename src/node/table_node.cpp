@@ -40,13 +40,8 @@ geometry_msgs::TransformStamped makeTransform(const std::string& parent, const s
   t.header.stamp = stamp;
   t.header.frame_id = parent;
   t.child_frame_id = child;
-  t.transform.translation.x = p.x();
-  t.transform.translation.y = p.y();
-  t.transform.translation.z = p.z();
-  t.transform.rotation.x = q.x();
-  t.transform.rotation.y = q.y();
-  t.transform.rotation.z = q.z();
-  t.transform.rotation.w = q.w();
+  t.transform.translation = toVector3(p);
+  t.transform.rotation = toQuaternion(q);
   return t;
 }
 }  // namespace
