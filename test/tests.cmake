@@ -12,8 +12,11 @@ catkin_add_gtest(physics_tests
   test/physics/test_batch.cpp
   test/physics/test_execution_noise.cpp
   test/physics/test_cue_aim.cpp
+  test/physics/test_event_search.cpp
 )
 target_link_libraries(physics_tests cue_sim_physics gtest_main)
+# The event search's internal structures are tested on their own too.
+target_include_directories(physics_tests PRIVATE src)
 target_compile_definitions(physics_tests PRIVATE CUE_SIM_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 
 catkin_add_gtest(accuracy_tests test/physics/test_accuracy.cpp)

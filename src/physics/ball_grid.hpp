@@ -6,7 +6,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <vector>
+#ifdef __SSE__
+#include <xmmintrin.h>
+#endif
 
 #include "cue_sim/physics/types.hpp"
 
@@ -28,6 +33,8 @@ public:
     const Vec2<S> size = high - low;
     const S target = std::max<S>(S(1), S(balls) / S(2));
     cell_ = std::max(std::sqrt(size.x() * size.y() / target), S(4) * radius);
+    // Listings keep their first cell in 16 bits.
+    cell_ = std::max({cell_, size.x() / S(kMaxCells), size.y() / S(kMaxCells)});
     nx_ = std::max(1, static_cast<int>(std::ceil(size.x() / cell_)));
     ny_ = std::max(1, static_cast<int>(std::ceil(size.y() / cell_)));
     cells_.resize(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_));
@@ -40,9 +47,10 @@ public:
     remove(ball);
     Rect& r = listed_[ball];
     r = rectOf(low, high);
+    const Listing listing = listingOf(ball, low, high, r);
     for (int y = r.y0; y <= r.y1; ++y)
       for (int x = r.x0; x <= r.x1; ++x)
-        cells_[index(x, y)].push_back({low, high, ball, r.x0, r.y0});
+        cells_[index(x, y)].push_back(listing);
   }
 
   void remove(int ball)
@@ -59,32 +67,71 @@ public:
     listed_[ball] = Rect{0, -1, 0, -1};
   }
 
-  /// Sets `out` to the balls listed in a cell the box covers whose listed boxes meet it, each
-  /// once, in no particular order.
+  /// Sets `out` to the balls listed in a cell the box covers whose listed boxes may meet it
+  /// (compared in floats rounded outwards: every ball whose box meets it, and rarely one whose
+  /// box only comes within a float's rounding of it), each once, in no particular order.
   void collectInBox(const Vec2<S>& low, const Vec2<S>& high, std::vector<int>& out) const
   {
     collect(rectOf(low, high), low, high, -1, out);
   }
-  /// The same for the other balls whose boxes meet this ball's.
+  /// The same for the other balls whose boxes may meet this ball's.
   void collectNear(int ball, const Vec2<S>& low, const Vec2<S>& high, std::vector<int>& out) const
   {
     collect(listed_[ball], low, high, ball, out);
   }
 
 private:
+  static constexpr int kMaxCells = 32000;  ///< per axis
   struct Rect
   {
     int x0, x1, y0, y1;
   };
-  /// One listing of a ball in a cell, with its box: a walk through a cell reads one short
-  /// array and nothing else.
+  /// One listing of a ball in a cell, with its box in floats rounded outwards (24 bytes: a
+  /// walk through a cell reads one short array and nothing else). The box is stored as
+  /// (low x, low y, -high x, -high y), so that one comparison of four lanes finds whether two
+  /// boxes are apart. Rounded outwards, it can only keep a ball the exact test then drops.
   struct Listing
   {
-    Vec2<S> low, high;
+    float bounds[4];
     int ball;
-    int x0, y0;  ///< the first cell of the ball's listing
+    std::int16_t x0, y0;  ///< the first cell of the ball's listing
   };
-  std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * nx_ + static_cast<std::size_t>(x); }
+  /// A box as compared with listings: (high x, high y, -low x, -low y), rounded outwards.
+  struct Query
+  {
+    float bounds[4];
+  };
+  /// A float at or below v, and one at or above it: v is moved out by 2^-22 of itself (four
+  /// float roundings) and 1e-30, then rounded to the nearest float (no libm call, no branch).
+  /// NaN stays NaN, which never culls.
+  static float floatBelow(S v) { return static_cast<float>(v - std::abs(v) * S(0x1p-22) - S(1e-30)); }
+  static float floatAbove(S v) { return -floatBelow(-v); }
+  static Listing listingOf(int ball, const Vec2<S>& low, const Vec2<S>& high, const Rect& r)
+  {
+    return {{floatBelow(low.x()), floatBelow(low.y()), -floatAbove(high.x()), -floatAbove(high.y())},
+            ball,
+            static_cast<std::int16_t>(r.x0),
+            static_cast<std::int16_t>(r.y0)};
+  }
+  static Query queryOf(const Vec2<S>& low, const Vec2<S>& high)
+  {
+    return {{floatAbove(high.x()), floatAbove(high.y()), -floatBelow(low.x()), -floatBelow(low.y())}};
+  }
+  /// True if the listed box and the queried one are apart on either axis: one comparison of
+  /// four lanes where SSE is there.
+  static bool apart(const Listing& l, const Query& q)
+  {
+#ifdef __SSE__
+    return _mm_movemask_ps(_mm_cmpgt_ps(_mm_loadu_ps(l.bounds), _mm_loadu_ps(q.bounds))) != 0;
+#else
+    return (l.bounds[0] > q.bounds[0]) | (l.bounds[1] > q.bounds[1]) | (l.bounds[2] > q.bounds[2]) |
+           (l.bounds[3] > q.bounds[3]);
+#endif
+  }
+  std::size_t index(int x, int y) const
+  {
+    return static_cast<std::size_t>(y) * nx_ + static_cast<std::size_t>(x);
+  }
   /// The cell a coordinate falls in, clamped to the grid (infinite and NaN bounds included).
   static int clampCell(S q, int count, bool upper)
   {
@@ -113,21 +160,26 @@ private:
       taken_.resize(2 * room);
     int* const taken = taken_.data();
     std::size_t count = 0;
+    const Query query = queryOf(low, high);
     for (int y = r.y0; y <= r.y1; ++y)
+    {
+      // A ball listed in several of these cells is taken in the first cell the two listings
+      // share, and only there: no record of who was seen is needed. A listing in cell (x, y)
+      // starts at or before it, so that cell is its first shared one when the listing starts
+      // in it, or the walk does.
+      const int y_from = y == r.y0 ? std::numeric_limits<int>::min() : y;
       for (int x = r.x0; x <= r.x1; ++x)
+      {
+        const int x_from = x == r.x0 ? std::numeric_limits<int>::min() : x;
         // Written without branches: whether a listing is taken is as good as random, and a
         // mispredicted branch per listing would cost more than the test.
         for (const Listing& l : cells_[index(x, y)])
         {
-          // A ball listed in several of these cells is taken in the first cell the two
-          // listings share, and only there: no record of who was seen is needed.
-          const bool first_shared = (x == std::max(r.x0, l.x0)) & (y == std::max(r.y0, l.y0));
-          // Boxes apart on either axis are out of reach; NaN never culls.
-          const bool apart =
-              (l.low.x() > high.x()) | (low.x() > l.high.x()) | (l.low.y() > high.y()) | (low.y() > l.high.y());
           taken[count] = l.ball;
-          count += static_cast<std::size_t>(first_shared & !apart & (l.ball != skip));
+          count += static_cast<std::size_t>((l.x0 >= x_from) & (l.y0 >= y_from) & !apart(l, query) & (l.ball != skip));
         }
+      }
+    }
     out.assign(taken, taken + count);
   }
 

@@ -11,6 +11,7 @@
 #include "cue_sim/physics/motion.hpp"
 #include "physics/ball_grid.hpp"
 #include "physics/engine_geometry.hpp"
+#include "physics/event_queue.hpp"
 
 namespace cue_sim
 {
@@ -365,44 +366,12 @@ Event<S> Engine<S>::nextEvent(const TableState<S>& state) const
   return found ? eventOf(state, best) : Event<S>();
 }
 
-namespace
-{
-/// A candidate in the queue, stamped with the versions of the balls it was computed from: it
-/// is stale once either ball has changed since.
-template <typename Candidate>
-struct QueuedCandidate
-{
-  Candidate candidate;
-  unsigned version = 0, other_version = 0;
-};
-}  // namespace
-
 template <typename S>
 void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* events) const
 {
   const std::size_t n = state.balls.size();
   Paths paths(n);
-  std::vector<unsigned> version(n, 0);
-  using Entry = QueuedCandidate<Candidate>;
-  std::vector<Entry> queue;
-  const auto later = [](const Entry& x, const Entry& y) { return y.candidate.before(x.candidate); };
-  const auto stale = [&](const Entry& e) {
-    return e.version != version[e.candidate.ball] ||
-           (e.candidate.other >= 0 && e.other_version != version[e.candidate.other]);
-  };
-  // Stale candidates are dropped when they come to the top; when they crowd the queue, all at
-  // once, so that it stays small enough to live in cache.
-  std::size_t sweep_at = 64 + 8 * n;
-  const auto push = [&](const Candidate& c) {
-    queue.push_back({c, version[c.ball], c.other >= 0 ? version[c.other] : 0u});
-    std::push_heap(queue.begin(), queue.end(), later);
-    if (queue.size() > sweep_at)
-    {
-      queue.erase(std::remove_if(queue.begin(), queue.end(), stale), queue.end());
-      std::make_heap(queue.begin(), queue.end(), later);
-      sweep_at = std::max(sweep_at, 2 * queue.size());
-    }
-  };
+  EventQueue<Candidate> queue(n);
   const Vec2<S> centre = table_->clothCentre().template cast<S>();
   const Vec2<S> half(S(table_->clothLength() / 2), S(table_->clothWidth() / 2));
   // A few balls are simply all looked at; beyond that a grid keeps each look local.
@@ -452,31 +421,31 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
       list(i);
   }
   /// Queues the ball's box renewal, if its window ends before its own next event.
-  const auto pushRenewal = [&](std::size_t i) {
+  const auto fileRenewal = [&](std::size_t i) {
     if (state.balls[i].translating() && paths[i].window < paths[i].first.time)
     {
       Candidate renewal;
       renewal.time = paths[i].window;
       renewal.rank = Candidate::Renewal;
       renewal.ball = static_cast<int>(i);
-      push(renewal);
+      queue.file(static_cast<int>(i), renewal);
     }
   };
-  const auto pushOwn = [&](std::size_t i) {
+  const auto fileOwn = [&](std::size_t i) {
     if (std::isfinite(static_cast<double>(paths[i].first.time)))
-      push(paths[i].first);
-    pushRenewal(i);
+      queue.file(static_cast<int>(i), paths[i].first);
+    fileRenewal(i);
   };
   for (std::size_t i = 0; i < n; ++i)
     if (state.balls[i].moving())
-      pushOwn(i);
+      fileOwn(i);
   // Pairs need a translating ball: each is found from it (from the lower index if both are).
   for (std::size_t i = 0; i < n; ++i)
     if (state.balls[i].translating())
       visitNear(static_cast<int>(i), [&](int o) {
         if (!(state.balls[o].translating() && o < static_cast<int>(i)) &&
             pairCandidate(static_cast<int>(i), o, paths, pair))
-          push(pair);
+          queue.file(static_cast<int>(i), pair);
       });
 
   // During an event, the balls near a point are those whose boxes reach it: looked for in the
@@ -519,35 +488,29 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
   long processed = 0;
   for (;;)
   {
-    while (!queue.empty() && stale(queue.front()))
-    {
-      std::pop_heap(queue.begin(), queue.end(), later);
-      queue.pop_back();
-    }
-    if (queue.empty() || queue.front().candidate.time > t_end)
+    const Candidate* top = queue.top();
+    if (!top || top->time > t_end)
       break;
-    if (queue.front().candidate.rank == Candidate::Renewal)
+    const Candidate next = *top;
+    queue.pop();
+    if (next.rank == Candidate::Renewal)
     {
       // Not an event: the ball's box is drawn over its next stretch, and the balls it now
       // reaches are looked at.
-      const int k = queue.front().candidate.ball;
-      std::pop_heap(queue.begin(), queue.end(), later);
-      queue.pop_back();
+      const int k = next.ball;
       // Only what is still ahead: the new box starts where the old window ends (nothing is
       // tested against a time before it any more).
       drawBox(state.balls[k], k, paths, paths[k].window, windowFrom(k, paths[k].window));
       list(k);
-      pushRenewal(k);
+      fileRenewal(k);
       visitNear(k, [&](int o) {
         if (pairCandidate(k, o, paths, pair))
-          push(pair);
+          queue.file(k, pair);
       });
       continue;
     }
-    const Event<S> event = eventOf(state, queue.front().candidate);
-    const int queue_top_ball = queue.front().candidate.ball, queue_top_other = queue.front().candidate.other;
-    std::pop_heap(queue.begin(), queue.end(), later);
-    queue.pop_back();
+    const Event<S> event = eventOf(state, next);
+    const int queue_top_ball = next.ball, queue_top_other = next.other;
     if (++processed > limits_.max_events)
     {
       std::ostringstream why;
@@ -576,18 +539,18 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
     changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
     for (int k : changed)
     {
-      ++version[k];
+      queue.changed(k);
       is_changed[k] = 1;
       computePath(state.balls[k], k, paths, windowFrom(k, event.time));
       list(k);
     }
     for (int k : changed)
     {
-      pushOwn(k);
+      fileOwn(k);
       if (state.balls[k].inPlay())
         visitNear(k, [&](int o) {
           if (!(is_changed[o] && o < k) && pairCandidate(k, o, paths, pair))
-            push(pair);
+            queue.file(k, pair);
         });
     }
     for (int k : changed)

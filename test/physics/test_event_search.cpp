@@ -1,0 +1,237 @@
+// The engine's event search structures on their own, against plain references: the queue of
+// candidate events (event_queue.hpp) against a list scanned in full, and the ball grid
+// (ball_grid.hpp) against box tests in double precision.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <set>
+#include <tuple>
+#include <vector>
+
+#include "physics/ball_grid.hpp"
+#include "physics/event_queue.hpp"
+
+namespace
+{
+using cue_sim::physics::BallGrid;
+using cue_sim::physics::EventQueue;
+using cue_sim::physics::Vec2;
+
+/// What the queue needs of a candidate; `tag` tells candidates of the same time and balls apart.
+struct TestCandidate
+{
+  double time = 0;
+  int ball = -1, other = -1, tag = 0;
+  bool before(const TestCandidate& c) const
+  {
+    return std::tie(time, ball, other, tag) < std::tie(c.time, c.ball, c.other, c.tag);
+  }
+  bool operator==(const TestCandidate& c) const
+  {
+    return std::tie(time, ball, other, tag) == std::tie(c.time, c.ball, c.other, c.tag);
+  }
+};
+
+/// Every candidate ever filed, with the versions of its balls: the earliest valid one is the
+/// answer the queue must give.
+struct ReferenceQueue
+{
+  struct Filed
+  {
+    TestCandidate candidate;
+    unsigned version, other_version;
+    bool removed = false;
+  };
+  std::vector<unsigned> version;
+  std::vector<Filed> filed;
+  explicit ReferenceQueue(int balls) : version(balls, 0) {}
+  void file(const TestCandidate& c) { filed.push_back({c, version[c.ball], c.other >= 0 ? version[c.other] : 0u}); }
+  bool valid(const Filed& f) const
+  {
+    return !f.removed && f.version == version[f.candidate.ball] &&
+           (f.candidate.other < 0 || f.other_version == version[f.candidate.other]);
+  }
+  Filed* top()
+  {
+    Filed* best = nullptr;
+    for (auto& f : filed)
+      if (valid(f) && (!best || f.candidate.before(best->candidate)))
+        best = &f;
+    return best;
+  }
+};
+
+/// Random filing, changing and popping, with many equal times so that ties are decided by the
+/// full order; for ball counts that fill the 4-way tree exactly, leave it ragged, or make it a
+/// single leaf.
+TEST(EventQueue, GivesTheEarliestValidCandidateAsAFullScanWould)
+{
+  for (int balls : {1, 2, 3, 4, 5, 16, 17, 63, 200})
+  {
+    std::mt19937 random(static_cast<unsigned>(balls));
+    EventQueue<TestCandidate> queue(static_cast<std::size_t>(balls));
+    ReferenceQueue reference(balls);
+    int tag = 0;
+    const auto randomBall = [&] { return static_cast<int>(random() % static_cast<unsigned>(balls)); };
+    for (int step = 0; step < 4000; ++step)
+    {
+      const unsigned action = random() % 10;
+      if (action < 6)
+      {
+        TestCandidate c;
+        c.time = static_cast<double>(random() % 50);  // few distinct times: many ties
+        c.ball = randomBall();
+        c.other = balls > 1 && random() % 2 ? randomBall() : -1;
+        if (c.other == c.ball)
+          c.other = -1;
+        c.tag = ++tag;
+        // Filed under either ball it involves, as the engine files a pair under its finder.
+        const int under = c.other >= 0 && random() % 2 ? c.other : c.ball;
+        queue.file(under, c);
+        reference.file(c);
+      }
+      else if (action < 8)
+      {
+        const int ball = randomBall();
+        queue.changed(ball);
+        ++reference.version[ball];
+      }
+      else
+      {
+        const TestCandidate* got = queue.top();
+        ReferenceQueue::Filed* expected = reference.top();
+        ASSERT_EQ(got == nullptr, expected == nullptr) << balls << " balls, step " << step;
+        if (got)
+        {
+          ASSERT_TRUE(*got == expected->candidate)
+              << balls << " balls, step " << step << ": got t=" << got->time << " tag " << got->tag
+              << ", expected t=" << expected->candidate.time << " tag " << expected->candidate.tag;
+          queue.pop();
+          expected->removed = true;
+        }
+      }
+    }
+    // Drained to the end, in order.
+    for (;;)
+    {
+      const TestCandidate* got = queue.top();
+      ReferenceQueue::Filed* expected = reference.top();
+      ASSERT_EQ(got == nullptr, expected == nullptr) << balls << " balls, draining";
+      if (!got)
+        break;
+      ASSERT_TRUE(*got == expected->candidate) << balls << " balls, draining";
+      queue.pop();
+      expected->removed = true;
+    }
+  }
+}
+
+TEST(EventQueue, KeepsEveryCandidateOfABallWithManyFiled)
+{
+  // More than the room first given to each ball: its shelf grows, and nothing is lost.
+  EventQueue<TestCandidate> queue(5);
+  for (int k = 0; k < 40; ++k)
+    queue.file(3, TestCandidate{static_cast<double>(40 - k), 3, k % 5 == 3 ? -1 : k % 5, k});
+  queue.file(1, TestCandidate{20.5, 1, -1, 100});
+  std::vector<double> times;
+  while (const TestCandidate* c = queue.top())
+  {
+    times.push_back(c->time);
+    queue.pop();
+  }
+  ASSERT_EQ(times.size(), 41u);
+  EXPECT_TRUE(std::is_sorted(times.begin(), times.end()));
+}
+
+TEST(EventQueue, DropsWhatAChangedBallWasPartOf)
+{
+  EventQueue<TestCandidate> queue(4);
+  queue.file(0, TestCandidate{1.0, 0, 2, 1});  // filed under ball 0, involves ball 2
+  queue.file(1, TestCandidate{2.0, 1, -1, 2});
+  queue.changed(2);
+  ASSERT_NE(queue.top(), nullptr);
+  EXPECT_EQ(queue.top()->tag, 2);
+  queue.pop();
+  EXPECT_EQ(queue.top(), nullptr);
+}
+
+/// The grid may give a ball whose box misses the query by a float's rounding, never miss one
+/// whose box meets it, and gives each once.
+TEST(BallGrid, FindsEveryBallWhoseBoxMeetsAndEachOnce)
+{
+  std::mt19937 random(11);
+  const auto unit = [&] { return static_cast<double>(random()) / 4294967296.0; };
+  const Vec2<double> low(-4.0, -2.0), high(4.0, 2.0);
+  const int balls = 300;
+  BallGrid<double> grid(low, high, balls, 0.028575);
+  std::vector<Vec2<double>> box_low(balls), box_high(balls);
+  std::vector<bool> listed(balls, true);
+  const auto randomBox = [&](Vec2<double>& l, Vec2<double>& h) {
+    const Vec2<double> centre(-4.5 + 9.0 * unit(), -2.5 + 5.0 * unit());  // some beyond the cloth
+    const Vec2<double> half(0.03 + 0.6 * unit() * unit(), 0.03 + 0.6 * unit() * unit());
+    l = centre - half;
+    h = centre + half;
+  };
+  for (int b = 0; b < balls; ++b)
+  {
+    randomBox(box_low[b], box_high[b]);
+    grid.place(b, box_low[b], box_high[b]);
+  }
+  const auto meets = [](const Vec2<double>& l0, const Vec2<double>& h0, const Vec2<double>& l1,
+                        const Vec2<double>& h1) {
+    return !(l0.x() > h1.x() || l1.x() > h0.x() || l0.y() > h1.y() || l1.y() > h0.y());
+  };
+  std::vector<int> found;
+  long exact = 0, extra = 0;
+  for (int round = 0; round < 2000; ++round)
+  {
+    // Move a ball, then ask around another, or around a free box.
+    const int moved = static_cast<int>(random() % balls);
+    randomBox(box_low[moved], box_high[moved]);
+    listed[moved] = round % 7 != 0;
+    if (listed[moved])
+      grid.place(moved, box_low[moved], box_high[moved]);
+    else
+      grid.remove(moved);
+    const bool free_box = round % 2 == 0;
+    const int asking = static_cast<int>(random() % balls);
+    Vec2<double> ql, qh;
+    if (free_box)
+    {
+      randomBox(ql, qh);
+      grid.collectInBox(ql, qh, found);
+    }
+    else
+    {
+      if (!listed[asking])
+        continue;
+      ql = box_low[asking];
+      qh = box_high[asking];
+      grid.collectNear(asking, ql, qh, found);
+    }
+    std::set<int> unique(found.begin(), found.end());
+    ASSERT_EQ(unique.size(), found.size()) << "round " << round << ": a ball given twice";
+    for (int b = 0; b < balls; ++b)
+    {
+      const bool wanted = listed[b] && (free_box || b != asking) && meets(ql, qh, box_low[b], box_high[b]);
+      if (wanted)
+      {
+        ++exact;
+        ASSERT_TRUE(unique.count(b)) << "round " << round << ": ball " << b << " missed";
+      }
+      else if (unique.count(b))
+      {
+        ASSERT_TRUE(listed[b] && (free_box || b != asking)) << "round " << round << ": ball " << b;
+        // Only a rounding away: widened by ten micrometres, the boxes meet.
+        const Vec2<double> slack = Vec2<double>::Constant(1e-5);
+        ASSERT_TRUE(meets(ql - slack, qh + slack, box_low[b], box_high[b])) << "round " << round << ": ball " << b;
+        ++extra;
+      }
+    }
+  }
+  EXPECT_GT(exact, 1000);  // the test did look at balls that meet
+  EXPECT_LE(extra, exact / 100);
+}
+
+}  // namespace
