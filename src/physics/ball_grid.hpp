@@ -67,17 +67,21 @@ public:
     listed_[ball] = Rect{0, -1, 0, -1};
   }
 
-  /// Sets `out` to the balls listed in a cell the box covers whose listed boxes may meet it
-  /// (compared in floats rounded outwards: every ball whose box meets it, and rarely one whose
-  /// box only comes within a float's rounding of it), each once, in no particular order.
-  void collectInBox(const Vec2<S>& low, const Vec2<S>& high, std::vector<int>& out) const
+  /// Balls found by a look in the grid, in the grid's own scratch: valid until its next look.
+  struct Found
   {
-    collect(rectOf(low, high), low, high, -1, out);
-  }
+    const int *first, *last;
+    const int* begin() const { return first; }
+    const int* end() const { return last; }
+  };
+  /// The balls listed in a cell the box covers whose listed boxes may meet it (compared in
+  /// floats rounded outwards: every ball whose box meets it, and rarely one whose box only comes
+  /// within a float's rounding of it), each once, in no particular order.
+  Found inBox(const Vec2<S>& low, const Vec2<S>& high) const { return collect(rectOf(low, high), low, high, -1); }
   /// The same for the other balls whose boxes may meet this ball's.
-  void collectNear(int ball, const Vec2<S>& low, const Vec2<S>& high, std::vector<int>& out) const
+  Found near(int ball, const Vec2<S>& low, const Vec2<S>& high) const
   {
-    collect(listed_[ball], low, high, ball, out);
+    return collect(listed_[ball], low, high, ball);
   }
 
 private:
@@ -149,7 +153,7 @@ private:
         clampCell((low.x() - origin_.x()) / cell_, nx_, false), clampCell((high.x() - origin_.x()) / cell_, nx_, true),
         clampCell((low.y() - origin_.y()) / cell_, ny_, false), clampCell((high.y() - origin_.y()) / cell_, ny_, true)};
   }
-  void collect(const Rect& r, const Vec2<S>& low, const Vec2<S>& high, int skip, std::vector<int>& out) const
+  Found collect(const Rect& r, const Vec2<S>& low, const Vec2<S>& high, int skip) const
   {
     // Every listing in the cells may be taken: room for all of them, without initialising it.
     std::size_t room = 0;
@@ -180,7 +184,7 @@ private:
         }
       }
     }
-    out.assign(taken, taken + count);
+    return {taken, taken + count};
   }
 
   Vec2<S> origin_;

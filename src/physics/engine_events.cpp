@@ -386,13 +386,12 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
     else
       grid->remove(static_cast<int>(i));
   };
-  /// Calls visit(o) for every other ball whose box meets ball k's: the balls it may meet.
-  std::vector<int> near_k;
+  /// Calls visit(o) for every other ball whose box meets ball k's (through the grid, may meet it):
+  /// the balls it may meet.
   const auto visitNear = [&](int k, const auto& visit) {
     if (grid)
     {
-      grid->collectNear(k, paths[k].low, paths[k].high, near_k);
-      for (int o : near_k)
+      for (int o : grid->near(k, paths[k].low, paths[k].high))
         visit(o);
       return;
     }
@@ -464,8 +463,9 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
       const Vec2<S> low = point - reach, high = point + reach;
       if (grid_)
       {
-        grid_->collectInBox(low, high, out);
-        out.erase(std::remove_if(out.begin(), out.end(), [&](int o) { return !state_.balls[o].inPlay(); }), out.end());
+        for (int o : grid_->inBox(low, high))
+          if (state_.balls[o].inPlay())
+            out.push_back(o);
         std::sort(out.begin(), out.end());
         return;
       }

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -25,34 +26,25 @@ template <typename Candidate>
 class EventQueue
 {
 public:
-  explicit EventQueue(std::size_t balls) : filed_(balls), version_(balls, 0), waiting_(balls, 0)
-  {
-    std::size_t leaves = 1;
-    while (leaves < balls)
-    {
-      first_leaf_ += leaves;
-      leaves *= 4;
-    }
-    earliest_slot_.assign(leaves, -1);
-    groups_.assign((first_leaf_ + leaves + 2) / 4, Group{});
-    for (std::size_t i = 0; i < leaves; ++i)
-      node(first_leaf_ + i).ball = static_cast<int>(i);
-    for (std::size_t k = first_leaf_; k-- > 0;)
-      node(k) = groups_[k].node[0];  // all empty: the first child stands for them
-  }
+  explicit EventQueue(std::size_t balls) : balls_(balls) { layTree(1); }
+  EventQueue(const EventQueue&) = delete;
+  EventQueue& operator=(const EventQueue&) = delete;
 
   /// Files a candidate under `ball`, which it must involve (as its ball or its other).
   void file(int ball, const Candidate& candidate)
   {
-    filed_.push(ball, {candidate, version_[candidate.ball], candidate.other >= 0 ? version_[candidate.other] : 0u});
+    if (balls_[ball].leaf < 0)
+      balls_[ball].leaf = static_cast<int>(entrants_++);  // in the tree from its next settling
+    filed_.push(balls_[ball], {candidate, balls_[candidate.ball].version,
+                               candidate.other >= 0 ? balls_[candidate.other].version : 0u});
     markWaiting(ball);
   }
 
   /// The ball has changed: every candidate involving it is void.
   void changed(int ball)
   {
-    ++version_[ball];
-    filed_.clear(ball);
+    ++balls_[ball].version;
+    balls_[ball].filed = 0;
     markWaiting(ball);
   }
 
@@ -62,23 +54,22 @@ public:
     for (;;)
     {
       settleWaiting();
-      const int ball = root_.ball;
-      const int slot = earliest_slot_[ball];
-      if (slot < 0)
+      if (tree_[0].time == std::numeric_limits<double>::infinity())
         return nullptr;
-      const Entry& entry = filed_.at(ball, slot);
+      const Ball& ball = balls_[tree_[0].ball];
+      const Entry& entry = filed_.at(ball, ball.earliest);
       if (!stale(entry))
         return &entry.candidate;
-      markWaiting(ball);  // its earliest is stale: look again among the rest
+      markWaiting(tree_[0].ball);  // its earliest is stale: look again among the rest
     }
   }
 
   /// Removes the candidate top() returned.
   void pop()
   {
-    const int ball = root_.ball;
-    filed_.erase(ball, earliest_slot_[ball]);
-    markWaiting(ball);
+    Ball& ball = balls_[tree_[0].ball];
+    filed_.erase(ball, ball.earliest);
+    markWaiting(tree_[0].ball);
   }
 
 private:
@@ -94,22 +85,16 @@ private:
     double time = std::numeric_limits<double>::infinity();
     int ball = 0;
   };
-  /// The four matches under one node, in one cache line.
-  struct alignas(64) Group
-  {
-    Node node[4];
-  };
-
   bool stale(const Entry& e) const
   {
-    return e.version != version_[e.candidate.ball] ||
-           (e.candidate.other >= 0 && e.other_version != version_[e.candidate.other]);
+    return e.version != balls_[e.candidate.ball].version ||
+           (e.candidate.other >= 0 && e.other_version != balls_[e.candidate.other].version);
   }
   void markWaiting(int ball)
   {
-    if (!waiting_[ball])
+    if (!balls_[ball].waiting)
     {
-      waiting_[ball] = 1;
+      balls_[ball].waiting = true;
       waiting_list_.push_back(ball);
     }
   }
@@ -118,11 +103,12 @@ private:
   /// has moved.
   void settleWaiting()
   {
-    for (int ball : waiting_list_)
+    for (int index : waiting_list_)
     {
-      waiting_[ball] = 0;
+      Ball& ball = balls_[index];
+      ball.waiting = false;
       int slot = -1;
-      for (int i = 0; i < filed_.size(ball);)
+      for (int i = 0; i < ball.filed;)
       {
         if (stale(filed_.at(ball, i)))
         {
@@ -133,28 +119,67 @@ private:
           slot = i;
         ++i;
       }
-      earliest_slot_[ball] = slot;
-      node(first_leaf_ + static_cast<std::size_t>(ball)).time =
-          slot < 0 ? std::numeric_limits<double>::infinity()
-                   : static_cast<double>(filed_.at(ball, slot).candidate.time);
+      ball.earliest = slot;
     }
-    for (int ball : waiting_list_)
-      replay(ball);
+    if (entrants_ > leaves_)
+    {
+      // More balls have filed than the tree has leaves: a wider tree, every match played afresh.
+      std::vector<Node> old_leaves(tree_ + first_leaf_, tree_ + first_leaf_ + leaves_);
+      layTree(entrants_);
+      std::copy(old_leaves.begin(), old_leaves.end(), tree_ + first_leaf_);
+      for (int index : waiting_list_)
+        setLeaf(index);
+      for (std::size_t k = first_leaf_; k-- > 0;)
+        tree_[k] = winner(&tree_[4 * k + 1]);
+    }
+    else
+    {
+      for (int index : waiting_list_)
+        setLeaf(index);
+      for (int index : waiting_list_)
+        if (balls_[index].leaf >= 0)
+          replay(balls_[index].leaf);
+    }
     waiting_list_.clear();
   }
-  /// Node k of the tree: 0 is the final, and node k's four matches are group k, nodes 4k+1 to
-  /// 4k+4.
-  Node& node(std::size_t k) { return k == 0 ? root_ : groups_[(k - 1) / 4].node[(k - 1) % 4]; }
+  /// Puts the ball's earliest time on its leaf, if it has one.
+  void setLeaf(int index)
+  {
+    const Ball& ball = balls_[index];
+    if (ball.leaf < 0)
+      return;
+    Node& leaf = tree_[first_leaf_ + static_cast<std::size_t>(ball.leaf)];
+    leaf.ball = index;
+    leaf.time = ball.earliest < 0 ? std::numeric_limits<double>::infinity()
+                                  : static_cast<double>(filed_.at(ball, ball.earliest).candidate.time);
+  }
+  /// An empty tree of at least `leaves` leaves (a power of four).
+  void layTree(std::size_t leaves)
+  {
+    first_leaf_ = 0;
+    leaves_ = 1;
+    while (leaves_ < leaves)
+    {
+      first_leaf_ += leaves_;
+      leaves_ *= 4;
+    }
+    // Matches are 16 bytes: with node 1 on a 64-byte boundary, every four that share a node
+    // (4k+1 to 4k+4) share a cache line.
+    nodes_.assign(first_leaf_ + leaves_ + 3, Node{});
+    const std::size_t past = (reinterpret_cast<std::uintptr_t>(&nodes_[1]) / sizeof(Node)) % 4;
+    tree_ = nodes_.data() + (4 - past) % 4;
+  }
   /// Replays the matches above the ball's leaf, up to the first whose result stands (another
   /// ball's, unchanged: nothing above it can change either).
-  void replay(int ball)
+  void replay(int leaf)
   {
-    std::size_t k = first_leaf_ + static_cast<std::size_t>(ball);
+    std::size_t k = first_leaf_ + static_cast<std::size_t>(leaf);
+    const int ball = tree_[k].ball;
     while (k > 0)
     {
       k = (k - 1) / 4;
-      const Node& won = winner(groups_[k]);
-      Node& result = node(k);
+      const Node& won = winner(&tree_[4 * k + 1]);
+      Node& result = tree_[k];
       if (won.ball != ball && won.ball == result.ball && won.time == result.time)
         return;
       result = won;
@@ -162,9 +187,8 @@ private:
   }
   /// The earliest of four matches: by time without branches, and by the full order only when
   /// two share the earliest time.
-  const Node& winner(const Group& g) const
+  const Node& winner(const Node* c) const
   {
-    const Node* c = g.node;
     const int first_pair = c[1].time < c[0].time ? 1 : 0;
     const int second_pair = c[3].time < c[2].time ? 3 : 2;
     const int w = c[second_pair].time < c[first_pair].time ? second_pair : first_pair;
@@ -181,57 +205,75 @@ private:
   /// Whether match x's candidate comes before match y's.
   bool earlier(const Node& x, const Node& y) const
   {
-    if (x.time != y.time)
+    if (x.time != y.time || x.time == std::numeric_limits<double>::infinity())
       return x.time < y.time;
-    const int sx = earliest_slot_[x.ball], sy = earliest_slot_[y.ball];
-    if (sx < 0 || sy < 0)
-      return sy < 0 && sx >= 0;
     // The same time: the full order decides, as one queue of all candidates would.
-    return filed_.at(x.ball, sx).candidate.before(filed_.at(y.ball, sy).candidate);
+    const Ball& a = balls_[x.ball];
+    const Ball& b = balls_[y.ball];
+    return filed_.at(a, a.earliest).candidate.before(filed_.at(b, b.earliest).candidate);
   }
 
-  /// Each ball's filed candidates, in one array: the same room for every ball, doubled for all
-  /// when one needs more (rarely: a ball seldom has more than four).
+  /// What the queue keeps of each ball.
+  struct Ball
+  {
+    unsigned version = 0;  ///< how many times the ball has changed
+    int shelf = -1;        ///< where its filed candidates are (-1 until it files one)
+    int filed = 0;         ///< how many
+    int earliest = -1;     ///< which of them is earliest (-1 if none)
+    int leaf = -1;         ///< its leaf in the tree (-1 until it files a candidate)
+    bool waiting = false;  ///< its earliest must be found again
+  };
+  /// The balls' filed candidates, in one array: a shelf for each ball that has filed one, all
+  /// shelves of the same room, doubled for all when one needs more (rarely: a ball seldom has
+  /// more than four). A ball that never files costs nothing here.
   class Shelves
   {
   public:
-    explicit Shelves(std::size_t balls) : count_(balls, 0), entries_(balls * room_) {}
-    int size(int ball) const { return count_[ball]; }
-    Entry& at(int ball, int i) { return entries_[static_cast<std::size_t>(ball) * room_ + i]; }
-    const Entry& at(int ball, int i) const { return entries_[static_cast<std::size_t>(ball) * room_ + i]; }
-    void push(int ball, const Entry& entry)
+    Entry& at(const Ball& ball, int i) { return entries_[static_cast<std::size_t>(ball.shelf) * room_ + i]; }
+    const Entry& at(const Ball& ball, int i) const
     {
-      if (static_cast<std::size_t>(count_[ball]) == room_)
-        grow();
-      at(ball, count_[ball]++) = entry;
+      return entries_[static_cast<std::size_t>(ball.shelf) * room_ + i];
+    }
+    void push(Ball& ball, const Entry& entry)
+    {
+      if (ball.shelf < 0)
+      {
+        ball.shelf = static_cast<int>(entries_.size() / room_);
+        entries_.resize(entries_.size() + room_);
+      }
+      else if (static_cast<std::size_t>(ball.filed) == room_)
+        widen();
+      at(ball, ball.filed++) = entry;
     }
     /// Removes entry i; the last takes its place.
-    void erase(int ball, int i) { at(ball, i) = at(ball, --count_[ball]); }
-    void clear(int ball) { count_[ball] = 0; }
+    void erase(Ball& ball, int i) { at(ball, i) = at(ball, --ball.filed); }
 
   private:
-    void grow()
+    void widen()
     {
+      // Every shelf keeps its number: only the room of each changes.
       std::vector<Entry> wider(entries_.size() * 2);
-      for (std::size_t ball = 0; ball < count_.size(); ++ball)
-        std::copy_n(&entries_[ball * room_], count_[ball], &wider[ball * 2 * room_]);
+      for (std::size_t shelf = 0; shelf * room_ < entries_.size(); ++shelf)
+        std::copy_n(&entries_[shelf * room_], room_, &wider[shelf * 2 * room_]);
       entries_.swap(wider);
       room_ *= 2;
     }
     std::size_t room_ = 4;
-    std::vector<int> count_;
     std::vector<Entry> entries_;
   };
+  std::vector<Ball> balls_;
   Shelves filed_;
-  std::vector<int> earliest_slot_;  ///< per leaf: where its ball's earliest filed candidate is, or -1
-  std::vector<unsigned> version_;
-  /// The tournament: each ball's leaf holds its earliest candidate's time, each node the
-  /// earliest of its four matches. A 4-way tree is half as deep as a 2-way one, and each level
-  /// of a replay reads one cache line.
-  std::size_t first_leaf_ = 0;  ///< node of ball 0's leaf (leaves past the last ball stay empty)
-  Node root_;
-  std::vector<Group> groups_;
-  std::vector<char> waiting_;
+  /// The tournament: tree_[0] is the final, node k's four matches are nodes 4k+1 to 4k+4, each
+  /// ball's leaf holds its earliest candidate's time, and each node the earliest of its four
+  /// matches. A 4-way tree is half as deep as a 2-way one, and each level of a replay reads one
+  /// cache line.
+  std::size_t first_leaf_ = 0;  ///< node of the first leaf
+  std::size_t leaves_ = 1;      ///< a power of four
+  /// Balls that have filed a candidate: only they have leaves, so that balls that never move
+  /// cost the tree nothing (and a lone ball among resting ones walks no tree at all).
+  std::size_t entrants_ = 0;
+  std::vector<Node> nodes_;
+  Node* tree_ = nullptr;           ///< node 0, placed in nodes_ so that node 1 starts a cache line
   std::vector<int> waiting_list_;  ///< balls whose earliest must be found again
 };
 

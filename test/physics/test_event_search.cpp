@@ -200,7 +200,8 @@ TEST(BallGrid, FindsEveryBallWhoseBoxMeetsAndEachOnce)
     if (free_box)
     {
       randomBox(ql, qh);
-      grid.collectInBox(ql, qh, found);
+      const auto in_box = grid.inBox(ql, qh);
+      found.assign(in_box.begin(), in_box.end());
     }
     else
     {
@@ -208,7 +209,8 @@ TEST(BallGrid, FindsEveryBallWhoseBoxMeetsAndEachOnce)
         continue;
       ql = box_low[asking];
       qh = box_high[asking];
-      grid.collectNear(asking, ql, qh, found);
+      const auto near = grid.near(asking, ql, qh);
+      found.assign(near.begin(), near.end());
     }
     std::set<int> unique(found.begin(), found.end());
     ASSERT_EQ(unique.size(), found.size()) << "round " << round << ": a ball given twice";
