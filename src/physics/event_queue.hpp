@@ -6,9 +6,10 @@
 //
 // A candidate is filed under a ball it involves. When a ball changes, everything filed under it
 // is dropped at once; what is filed under other balls and involves it is stale from then on (each
-// entry carries the versions of its balls) and is dropped when it comes up. This is the classic
-// arrangement of event-driven molecular dynamics (Marin, Risso and Cordero 1993, "Efficient
-// algorithms for many-body hard particle molecular dynamics", J. Comput. Phys. 109, 306).
+// entry carries the versions of its balls) and is dropped when it comes up. This is the per-
+// particle event tree of event-driven molecular dynamics (Marin, Risso and Cordero 1993, "Efficient
+// algorithms for many-body hard particle molecular dynamics", J. Comput. Phys. 109, 306), there a
+// binary tree.
 #pragma once
 
 #include <algorithm>
