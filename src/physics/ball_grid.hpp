@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <vector>
 #ifdef __SSE__
 #include <xmmintrin.h>
@@ -37,7 +38,8 @@ public:
     cell_ = std::max({cell_, size.x() / S(kMaxCells), size.y() / S(kMaxCells)});
     nx_ = std::max(1, static_cast<int>(std::ceil(size.x() / cell_)));
     ny_ = std::max(1, static_cast<int>(std::ceil(size.y() / cell_)));
-    cells_.resize(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_));
+    sizes_.assign(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_), 0);
+    slots_.reset(new Listing[sizes_.size() * room_]);  // left unset: only listed slots are read
   }
 
   S cell() const { return cell_; }
@@ -50,7 +52,12 @@ public:
     const Listing listing = listingOf(ball, low, high, r);
     for (int y = r.y0; y <= r.y1; ++y)
       for (int x = r.x0; x <= r.x1; ++x)
-        cells_[index(x, y)].push_back(listing);
+      {
+        const std::size_t c = index(x, y);
+        if (sizes_[c] == room_)
+          widen();
+        slots_[c * room_ + sizes_[c]++] = listing;
+      }
   }
 
   void remove(int ball)
@@ -59,10 +66,12 @@ public:
     for (int y = r.y0; y <= r.y1; ++y)
       for (int x = r.x0; x <= r.x1; ++x)
       {
-        std::vector<Listing>& cell = cells_[index(x, y)];
-        auto it = std::find_if(cell.begin(), cell.end(), [ball](const Listing& l) { return l.ball == ball; });
-        *it = cell.back();
-        cell.pop_back();
+        const std::size_t c = index(x, y);
+        Listing* const cell = &slots_[c * room_];
+        Listing* it = cell;
+        while (it->ball != ball)
+          ++it;
+        *it = cell[--sizes_[c]];
       }
     listed_[ball] = Rect{0, -1, 0, -1};
   }
@@ -159,7 +168,7 @@ private:
     std::size_t room = 0;
     for (int y = r.y0; y <= r.y1; ++y)
       for (int x = r.x0; x <= r.x1; ++x)
-        room += cells_[index(x, y)].size();
+        room += sizes_[index(x, y)];
     if (taken_.size() < room)
       taken_.resize(2 * room);
     int* const taken = taken_.data();
@@ -177,8 +186,10 @@ private:
         const int x_from = x == r.x0 ? std::numeric_limits<int>::min() : x;
         // Written without branches: whether a listing is taken is as good as random, and a
         // mispredicted branch per listing would cost more than the test.
-        for (const Listing& l : cells_[index(x, y)])
+        const std::size_t c = index(x, y);
+        for (const Listing *l_it = &slots_[c * room_], *l_end = l_it + sizes_[c]; l_it != l_end; ++l_it)
         {
+          const Listing& l = *l_it;
           taken[count] = l.ball;
           count += static_cast<std::size_t>((l.x0 >= x_from) & (l.y0 >= y_from) & !apart(l, query) & (l.ball != skip));
         }
@@ -187,10 +198,24 @@ private:
     return {taken, taken + count};
   }
 
+  /// Every cell's listings in one array, `room_` slots for each: no allocation per cell, and a
+  /// cell is read where it lies. When a cell is full, every cell's room is doubled (rarely: a
+  /// cell holds about seven listings).
+  void widen()
+  {
+    std::unique_ptr<Listing[]> wider(new Listing[sizes_.size() * room_ * 2]);
+    for (std::size_t c = 0; c < sizes_.size(); ++c)
+      std::copy_n(&slots_[c * room_], sizes_[c], &wider[c * room_ * 2]);
+    slots_ = std::move(wider);
+    room_ *= 2;
+  }
+
   Vec2<S> origin_;
   S cell_ = S(1);
   int nx_ = 1, ny_ = 1;
-  std::vector<std::vector<Listing>> cells_;
+  std::size_t room_ = 16;
+  std::vector<std::uint32_t> sizes_;  ///< listings in each cell
+  std::unique_ptr<Listing[]> slots_;
   std::vector<Rect> listed_;        ///< the cells each ball is listed in (none: x1 < x0)
   mutable std::vector<int> taken_;  ///< scratch for collect()
 };

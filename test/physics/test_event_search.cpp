@@ -236,4 +236,55 @@ TEST(BallGrid, FindsEveryBallWhoseBoxMeetsAndEachOnce)
   EXPECT_LE(extra, exact / 100);
 }
 
+/// A cluster far denser than the grid was sized for (a rack on a large table): the cells' room
+/// grows, and no listing made before is lost or given twice.
+TEST(BallGrid, KeepsEveryListingWhenCellsOverflow)
+{
+  const Vec2<double> low(-4.0, -2.0), high(4.0, 2.0);
+  const int balls = 200, cluster = 150;
+  BallGrid<double> grid(low, high, balls, 0.028575);
+  std::vector<Vec2<double>> box_low(balls), box_high(balls);
+  std::mt19937 random(5);
+  const auto unit = [&] { return static_cast<double>(random()) / 4294967296.0; };
+  for (int b = 0; b < balls; ++b)
+  {
+    // The cluster within a millimetre of (1, 0.5); the rest anywhere, some boxes long.
+    const Vec2<double> centre = b < cluster ? Vec2<double>(1.0 + 1e-3 * unit(), 0.5 + 1e-3 * unit())
+                                            : Vec2<double>(-4.0 + 8.0 * unit(), -2.0 + 4.0 * unit());
+    const Vec2<double> half = b < cluster ? Vec2<double>::Constant(0.03) : Vec2<double>(1.5 * unit(), 0.03);
+    box_low[b] = centre - half;
+    box_high[b] = centre + half;
+    grid.place(b, box_low[b], box_high[b]);
+  }
+  std::vector<bool> listed(balls, true);
+  const auto check = [&](int asking) {
+    const auto near = grid.near(asking, box_low[asking], box_high[asking]);
+    const std::vector<int> found(near.begin(), near.end());
+    const std::set<int> unique(found.begin(), found.end());
+    ASSERT_EQ(unique.size(), found.size()) << "a ball given twice";
+    for (int b = 0; b < balls; ++b)
+    {
+      const bool meets = listed[b] && b != asking &&
+                         !(box_low[asking].x() > box_high[b].x() || box_low[b].x() > box_high[asking].x() ||
+                           box_low[asking].y() > box_high[b].y() || box_low[b].y() > box_high[asking].y());
+      EXPECT_EQ(unique.count(b) == 1, meets) << "asking " << asking << ", ball " << b;
+    }
+  };
+  check(0);
+  check(cluster);
+  // Half the cluster leaves, and its place is taken again.
+  for (int b = 0; b < cluster; b += 2)
+  {
+    grid.remove(b);
+    listed[b] = false;
+  }
+  check(1);
+  for (int b = 0; b < cluster; b += 4)
+  {
+    grid.place(b, box_low[b], box_high[b]);
+    listed[b] = true;
+  }
+  check(0);
+  check(cluster + 1);
+}
 }  // namespace
