@@ -2,6 +2,7 @@
 // wall time) and `bench_scene` (one shot, for callgrind instruction counts).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -9,6 +10,7 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "cue_sim/physics/engine.hpp"
 #include "cue_sim/physics/motion.hpp"
@@ -74,18 +76,18 @@ inline BenchScene sent(std::shared_ptr<const Engine<double>> engine, TableState<
   return {std::move(engine), std::move(state)};
 }
 
-/// Balls at rest, placed at random (fixed seed) and clear of each other, `count` per 7-ft
-/// table area on a pool table scaled so that the density stays that of 16 balls on a 7-ft
-/// table; every ball is then sent off at 0.5 to 2 m/s in a random direction with random
-/// English, as after a break, and the scene runs to rest.
-inline BenchScene scaling(int count)
+/// `count` balls placed at random (from `seed`) and clear of each other, on a pool table scaled
+/// so that the density stays that of 16 balls on a 7-ft table; every ball is then sent off at
+/// 0.5 to 2 m/s in a random direction with random English, as after a break, and the scene runs
+/// to rest. The fixed scenes `scaling_N` use seed N.
+inline BenchScene scaling(int count, unsigned seed)
 {
   const double scale = std::sqrt(count / 16.0);
   const auto table =
       std::make_shared<const TableModel>(TableModel::pool("scaled", 1.9812 * scale, 0.9906 * scale, 0.118, 0.137));
   auto engine = defaultEngine(table, 10'000'000);
   const double R = engine->params().ball_radius;
-  std::mt19937 random(static_cast<unsigned>(count));
+  std::mt19937 random(seed);
   const auto unit = [&] { return static_cast<double>(random()) / 4294967296.0; };
   TableState<double> state;
   const double hx = table->clothLength() / 2 - 2 * R, hy = table->clothWidth() / 2 - 2 * R;
@@ -108,6 +110,18 @@ inline BenchScene scaling(int count)
     settleMotion(b, R);
   }
   return {engine, state};
+}
+
+/// Scaling scenes of `count` balls from other seeds, as many as it takes for one pass over them
+/// to hold several thousand events (at least 4): a shot replayed again and again teaches the
+/// CPU's branch predictor its path, and a planner's shots are all different.
+inline std::vector<BenchScene> distinctScalingScenes(int count)
+{
+  std::vector<BenchScene> scenes;
+  const int n = std::max(4, 1024 / count);
+  for (int k = 0; k < n; ++k)
+    scenes.push_back(scaling(count, static_cast<unsigned>(1000 * count + k)));
+  return scenes;
 }
 
 /// Every scene by name, built on demand.
@@ -175,10 +189,10 @@ inline const std::map<std::string, std::function<BenchScene()>>& benchScenes()
          }
          return struck(engine, state, 4.0, 0.15, 0.2, 0.2);
        }},
-      {"scaling_16", [] { return scaling(16); }},
-      {"scaling_64", [] { return scaling(64); }},
-      {"scaling_256", [] { return scaling(256); }},
-      {"scaling_1024", [] { return scaling(1024); }},
+      {"scaling_16", [] { return scaling(16, 16); }},
+      {"scaling_64", [] { return scaling(64, 64); }},
+      {"scaling_256", [] { return scaling(256, 256); }},
+      {"scaling_1024", [] { return scaling(1024, 1024); }},
   };
   return scenes;
 }

@@ -29,8 +29,9 @@ void runScene(benchmark::State& bench, const std::string& name)
       benchmark::Counter(static_cast<double>(events) * bench.iterations(), benchmark::Counter::kIsRate);
 }
 
-/// 8-ball breaks from one rack, each with a slightly different cue (fixed seed), run on every
-/// core by simulateBatch: breaks per second of wall time.
+/// 8-ball breaks from one rack, each with a slightly different cue (fixed seed), run by
+/// simulateBatch on one thread (argument 1) or on every core (argument 0): breaks per second of
+/// wall time. Unlike the fixed break replayed, no two of these shots are alike.
 void BatchOfEightBallBreaks(benchmark::State& bench)
 {
   const BenchScene scene = benchScene("eight_ball_break");
@@ -44,14 +45,52 @@ void BatchOfEightBallBreaks(benchmark::State& bench)
     shot.cue.speed = 5.0 + 0.5 * unit();  // the cue ball leaves at about 8 m/s
     shot.cue.phi = 0.01 * (unit() - 0.5);
   }
-  ThreadPool pool;
+  ThreadPool pool(static_cast<unsigned>(bench.range(0)));
+  std::size_t events = 0;
   for (auto _ : bench)
-    benchmark::DoNotOptimize(simulateBatch(*scene.engine, rack, shots, pool).data());
+  {
+    const auto outcomes = simulateBatch(*scene.engine, rack, shots, pool);
+    events = 0;
+    for (const auto& outcome : outcomes)
+      events += outcome.result.events.size();
+  }
+  const double breaks = static_cast<double>(shots.size()) * bench.iterations();
   bench.counters["threads"] = pool.size();
-  bench.counters["breaks_per_second"] =
-      benchmark::Counter(static_cast<double>(shots.size()) * bench.iterations(), benchmark::Counter::kIsRate);
+  bench.counters["events_per_shot"] = static_cast<double>(events) / shots.size();
+  bench.counters["breaks_per_second"] = benchmark::Counter(breaks, benchmark::Counter::kIsRate);
+  bench.counters["time_per_shot_per_thread"] =
+      benchmark::Counter(breaks / pool.size(), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
-BENCHMARK(BatchOfEightBallBreaks)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BatchOfEightBallBreaks)->ArgName("threads")->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+/// The scaling series over distinct scenes in turn (distinctScalingScenes): the time per event
+/// that a planner's different shots see, with no path learnt by the branch predictor.
+void ScalingDistinctScenes(benchmark::State& bench)
+{
+  const std::vector<BenchScene> scenes = distinctScalingScenes(static_cast<int>(bench.range(0)));
+  std::vector<TableState<double>> states(scenes.size());
+  std::size_t events = 0, shots = 0;
+  for (auto _ : bench)
+    for (std::size_t k = 0; k < scenes.size(); ++k)
+    {
+      states[k] = scenes[k].state;
+      events += scenes[k].engine->simulateToRest(states[k]).events.size();
+      ++shots;
+    }
+  bench.counters["balls"] = static_cast<double>(bench.range(0));
+  bench.counters["scenes"] = static_cast<double>(scenes.size());
+  bench.counters["events_per_shot"] = static_cast<double>(events) / static_cast<double>(shots);
+  bench.counters["time_per_event"] =
+      benchmark::Counter(static_cast<double>(events), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  bench.counters["events_per_second"] = benchmark::Counter(static_cast<double>(events), benchmark::Counter::kIsRate);
+}
+BENCHMARK(ScalingDistinctScenes)
+    ->ArgName("balls")
+    ->Arg(16)
+    ->Arg(64)
+    ->Arg(256)
+    ->Arg(1024)
+    ->Unit(benchmark::kMillisecond);
 
 const int registered = [] {
   for (const auto& [name, build] : benchScenes())
