@@ -164,7 +164,9 @@ std::vector<Vec3<S>> Engine<S>::touchingWalls(const Ball<S>& ball) const
   std::vector<Vec3<S>> normals;
   const Vec2<S> c = ball.r.template head<2>();
   // Only a wall whose box holds the centre can touch the ball.
-  const auto outside = [&](const auto& wall) { return boxesApart(wall.low, wall.high, c, c); };
+  const auto outside = [&](const auto& wall) {
+    return (c.array() < wall.low.array()).any() || (c.array() > wall.high.array()).any();
+  };
   for (const auto& seg : obstacles_->segments)
   {
     if (outside(seg))

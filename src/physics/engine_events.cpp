@@ -210,7 +210,9 @@ void Engine<S>::computeOwnEvent(const Ball<S>& ball, std::size_t index, Paths& p
     for (int axis = 0; axis < 2; ++axis)
       quadraticRange(p.c0[axis], p.c1[axis], p.c2[axis], S(0), T, low[axis], high[axis]);
   };
-  const auto outOfReach = [&](const auto& obstacle) { return boxesApart(low, high, obstacle.low, obstacle.high); };
+  const auto outOfReach = [&](const auto& obstacle) {
+    return (low.array() > obstacle.high.array()).any() || (obstacle.low.array() > high.array()).any();
+  };
   sweep();
   const auto keep = [&](S tau, typename Candidate::Rank rank, std::size_t k) {
     Candidate c;
@@ -267,7 +269,8 @@ bool Engine<S>::pairCandidate(int a, int b, const Paths& paths, Candidate& out) 
 {
   const auto& ra = paths[a];
   const auto& rb = paths[b];
-  if (!ra.in_play | !rb.in_play | (!ra.translating & !rb.translating) | boxesApart(ra.low, ra.high, rb.low, rb.high))
+  if (!ra.in_play || !rb.in_play || (!ra.translating && !rb.translating) || (ra.low.array() > rb.high.array()).any() ||
+      (rb.low.array() > ra.high.array()).any())
     return false;
   // The pair belongs to the scan of its translating ball, the lower index if both translate.
   int i = a, j = b;
@@ -392,17 +395,14 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
         visit(o);
       return;
     }
-    // At most kGridFrom balls: gathered with no branch per ball (whether two boxes meet is as good
-    // as random), then visited.
-    int meeting[kGridFrom];
-    int count = 0;
+    const S x0 = paths[k].low.x(), y0 = paths[k].low.y(), x1 = paths[k].high.x(), y1 = paths[k].high.y();
     for (int o = 0; o < static_cast<int>(n); ++o)
     {
-      meeting[count] = o;
-      count += (o != k) & !boxesApart(paths[k].low, paths[k].high, paths[o].low, paths[o].high);
+      const Vec2<S>& low = paths[o].low;
+      const Vec2<S>& high = paths[o].high;
+      if (o != k && !(low.x() > x1 || x0 > high.x() || low.y() > y1 || y0 > high.y()))  // NaN never culls
+        visit(o);
     }
-    for (int i = 0; i < count; ++i)
-      visit(meeting[i]);
   };
   // A ball's box covers about two cells of its travel; then it is drawn further.
   const auto windowFrom = [&](std::size_t i, S from) {
@@ -470,7 +470,8 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
         return;
       }
       for (int o = 0; o < static_cast<int>(state_.balls.size()); ++o)
-        if (state_.balls[o].inPlay() & !boxesApart(low, high, paths_[o].low, paths_[o].high))
+        if (state_.balls[o].inPlay() && !(paths_[o].low.array() > high.array()).any() &&
+            !(low.array() > paths_[o].high.array()).any())
           out.push_back(o);
     }
 

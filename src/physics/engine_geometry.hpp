@@ -123,15 +123,6 @@ bool cannotMeet(const Vec2<S>& c0, const Vec2<S>& c1, const Vec2<S>& c2, S reach
   return cannotMeetWithin<S>(c0, c1, c2, c2.norm(), reach + S(1e-9), limit, 3);
 }
 
-/// True if the boxes [low_a, high_a] and [low_b, high_b] are apart along either axis (a NaN
-/// bound never parts them). All four comparisons are made, with no branch between them: whether
-/// two boxes are apart is as good as random, and a short-circuit test mispredicts on most boxes.
-template <typename S>
-bool boxesApart(const Vec2<S>& low_a, const Vec2<S>& high_a, const Vec2<S>& low_b, const Vec2<S>& high_b)
-{
-  return (low_a.x() > high_b.x()) | (low_a.y() > high_b.y()) | (low_b.x() > high_a.x()) | (low_b.y() > high_a.y());
-}
-
 /// Speed [m/s] at which a is closing on b along their line of centres (negative: parting).
 template <typename S>
 S closingSpeed(const Ball<S>& a, const Ball<S>& b)
