@@ -63,11 +63,9 @@ void BatchOfEightBallBreaks(benchmark::State& bench)
 }
 BENCHMARK(BatchOfEightBallBreaks)->ArgName("threads")->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-/// The scaling series over distinct scenes in turn (distinctScalingScenes): the time per event
-/// that a planner's different shots see, with no path learnt by the branch predictor.
-void ScalingDistinctScenes(benchmark::State& bench)
+/// Runs the scenes in turn, each from its own copy of its start; reports the time per event.
+void runInTurn(benchmark::State& bench, const std::vector<BenchScene>& scenes)
 {
-  const std::vector<BenchScene> scenes = distinctScalingScenes(static_cast<int>(bench.range(0)));
   std::vector<TableState<double>> states(scenes.size());
   std::size_t events = 0, shots = 0;
   for (auto _ : bench)
@@ -77,12 +75,19 @@ void ScalingDistinctScenes(benchmark::State& bench)
       events += scenes[k].engine->simulateToRest(states[k]).events.size();
       ++shots;
     }
-  bench.counters["balls"] = static_cast<double>(bench.range(0));
+  bench.counters["balls"] = static_cast<double>(scenes.front().state.balls.size());
   bench.counters["scenes"] = static_cast<double>(scenes.size());
   bench.counters["events_per_shot"] = static_cast<double>(events) / static_cast<double>(shots);
   bench.counters["time_per_event"] =
       benchmark::Counter(static_cast<double>(events), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
   bench.counters["events_per_second"] = benchmark::Counter(static_cast<double>(events), benchmark::Counter::kIsRate);
+}
+
+/// The scaling series over distinct scenes in turn (distinctScalingScenes): the time per event
+/// that a planner's different shots see, with no path learnt by the branch predictor.
+void ScalingDistinctScenes(benchmark::State& bench)
+{
+  runInTurn(bench, distinctScalingScenes(static_cast<int>(bench.range(0))));
 }
 BENCHMARK(ScalingDistinctScenes)
     ->ArgName("balls")
@@ -91,6 +96,19 @@ BENCHMARK(ScalingDistinctScenes)
     ->Arg(256)
     ->Arg(1024)
     ->Unit(benchmark::kMillisecond);
+
+/// The control: as many copies of the fixed scene as there are distinct scenes, each with its own
+/// engine and memory, in turn. It costs what the fixed scene replayed costs, so what makes the
+/// distinct scenes dearer is their differing paths, not the switching between scenes.
+void ScalingCopiesOfOneScene(benchmark::State& bench)
+{
+  const int count = static_cast<int>(bench.range(0));
+  std::vector<BenchScene> copies;
+  for (std::size_t k = distinctScalingScenes(count).size(); k-- > 0;)
+    copies.push_back(scaling(count, static_cast<unsigned>(count)));
+  runInTurn(bench, copies);
+}
+BENCHMARK(ScalingCopiesOfOneScene)->ArgName("balls")->Arg(16)->Unit(benchmark::kMillisecond);
 
 const int registered = [] {
   for (const auto& [name, build] : benchScenes())
