@@ -115,11 +115,14 @@ inline BenchScene scaling(int count, unsigned seed)
 /// Scaling scenes of `count` balls from other seeds, as many as it takes for one pass over them
 /// to hold several thousand events (at least 4): a shot replayed again and again teaches the
 /// CPU's branch predictor its path, and a planner's shots are all different.
+inline int distinctSceneCount(int count)
+{
+  return std::max(4, 1024 / count);
+}
 inline std::vector<BenchScene> distinctScalingScenes(int count)
 {
   std::vector<BenchScene> scenes;
-  const int n = std::max(4, 1024 / count);
-  for (int k = 0; k < n; ++k)
+  for (int k = 0; k < distinctSceneCount(count); ++k)
     scenes.push_back(scaling(count, static_cast<unsigned>(1000 * count + k)));
   return scenes;
 }

@@ -98,13 +98,13 @@ BENCHMARK(ScalingDistinctScenes)
     ->Unit(benchmark::kMillisecond);
 
 /// The control: as many copies of the fixed scene as there are distinct scenes, each with its own
-/// engine and memory, in turn. It costs what the fixed scene replayed costs, so what makes the
-/// distinct scenes dearer is their differing paths, not the switching between scenes.
+/// engine and memory, in turn. It costs about what the fixed scene replayed costs, so what makes
+/// the distinct scenes dearer is their differing paths, not the switching between scenes.
 void ScalingCopiesOfOneScene(benchmark::State& bench)
 {
   const int count = static_cast<int>(bench.range(0));
   std::vector<BenchScene> copies;
-  for (std::size_t k = distinctScalingScenes(count).size(); k-- > 0;)
+  for (int k = 0; k < distinctSceneCount(count); ++k)
     copies.push_back(scaling(count, static_cast<unsigned>(count)));
   runInTurn(bench, copies);
 }
