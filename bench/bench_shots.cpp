@@ -9,26 +9,6 @@ namespace
 {
 using namespace cue_sim::bench;
 
-void runScene(benchmark::State& bench, const std::string& name)
-{
-  const BenchScene scene = benchScene(name);
-  std::size_t events = 0;
-  TableState<double> state = scene.state;
-  for (auto _ : bench)
-  {
-    state = scene.state;  // a copy into the same storage, as a planner would reuse it
-    const ShotResult<double> result = scene.engine->simulateToRest(state);
-    events = result.events.size();
-    benchmark::DoNotOptimize(state.balls.data());
-  }
-  bench.counters["balls"] = static_cast<double>(scene.state.balls.size());
-  bench.counters["events_per_shot"] = static_cast<double>(events);
-  bench.counters["time_per_event"] = benchmark::Counter(static_cast<double>(events) * bench.iterations(),
-                                                        benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-  bench.counters["events_per_second"] =
-      benchmark::Counter(static_cast<double>(events) * bench.iterations(), benchmark::Counter::kIsRate);
-}
-
 /// 8-ball breaks from one rack, each with a slightly different cue (fixed seed), run by
 /// simulateBatch on one thread (argument 1) or on every core (argument 0): breaks per second of
 /// wall time. Unlike the fixed break replayed, no two of these shots are alike.
@@ -63,7 +43,8 @@ void BatchOfEightBallBreaks(benchmark::State& bench)
 }
 BENCHMARK(BatchOfEightBallBreaks)->ArgName("threads")->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-/// Runs the scenes in turn, each from its own copy of its start; reports the time per event.
+/// Runs the scenes in turn (or one scene, replayed), each from its own copy of its start, copied
+/// into the same storage every time as a planner would reuse it; reports the time per event.
 void runInTurn(benchmark::State& bench, const std::vector<BenchScene>& scenes)
 {
   std::vector<TableState<double>> states(scenes.size());
@@ -113,7 +94,7 @@ BENCHMARK(ScalingCopiesOfOneScene)->ArgName("balls")->Arg(16)->Unit(benchmark::k
 const int registered = [] {
   for (const auto& [name, build] : benchScenes())
     benchmark::RegisterBenchmark(name.c_str(), [name = name](benchmark::State& s) {
-      runScene(s, name);
+      runInTurn(s, {benchScene(name)});  // one scene, replayed
     })->Unit(benchmark::kMicrosecond);
   return 0;
 }();
