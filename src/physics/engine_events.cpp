@@ -26,7 +26,8 @@ struct Engine<S>::Candidate
 {
   enum Rank : int
   {
-    Renewal = -1,  ///< not an event: the ball's box has run out and is drawn further
+    Unsolved = -2,  ///< not yet an event: a pair that cannot meet before `time`, solved when that comes up
+    Renewal = -1,   ///< not an event: the ball's box has run out and is drawn further
     Transition = 0,
     Segment = 1,
     Circle = 2,
@@ -43,9 +44,10 @@ struct Engine<S>::Candidate
   {
     if (time != c.time)
       return time < c.time;
-    // Renewals come first, so that what they find is queued before anything at their time.
-    const int group = rank == Renewal ? 0 : rank == Transition ? 1 : 2;
-    const int c_group = c.rank == Renewal ? 0 : c.rank == Transition ? 1 : 2;
+    // Renewals and unsolved pairs come first, so that what they find is queued before anything
+    // at their time; neither is an event, so their order among themselves changes nothing.
+    const int group = rank < Transition ? 0 : rank == Transition ? 1 : 2;
+    const int c_group = c.rank < Transition ? 0 : c.rank == Transition ? 1 : 2;
     if (group != c_group)
       return group < c_group;
     if (ball != c.ball)
@@ -104,6 +106,33 @@ Trajectory<S> shifted(const Trajectory<S>& path, S delta)
   return out;
 }
 }  // namespace
+
+/// Where ball j is seen from ball i: both paths about the later of their reference times (a
+/// function of the pair alone), and the horizon of the pair's search from then.
+template <typename S>
+struct Engine<S>::PairMotion
+{
+  S base;
+  Vec2<S> c0, c1, c2;  ///< relative position c0 + c1 tau + c2 tau^2, tau from base
+  /// Nothing later than either ball's own next event needs finding: that event changes it.
+  S limit;
+};
+
+template <typename S>
+typename Engine<S>::PairMotion Engine<S>::pairMotion(const Paths& paths, int i, int j)
+{
+  const auto& ri = paths[i];
+  const auto& rj = paths[j];
+  PairMotion m;
+  m.base = std::max(ri.time, rj.time);
+  const Trajectory<S> pi = shifted(ri.path, m.base - ri.time);
+  const Trajectory<S> pj = shifted(rj.path, m.base - rj.time);
+  m.c0 = pi.c0 - pj.c0;
+  m.c1 = pi.c1 - pj.c1;
+  m.c2 = pi.c2 - pj.c2;
+  m.limit = horizon(std::min(ri.first.time, rj.first.time), m.base);
+  return m;
+}
 
 namespace
 {
@@ -265,7 +294,7 @@ void Engine<S>::computeOwnEvent(const Ball<S>& ball, std::size_t index, Paths& p
 }
 
 template <typename S>
-bool Engine<S>::pairCandidate(int a, int b, const Paths& paths, Candidate& out) const
+bool Engine<S>::pairMayMeet(int a, int b, const Paths& paths, Candidate& pair, PairMotion& motion) const
 {
   const auto& ra = paths[a];
   const auto& rb = paths[b];
@@ -276,31 +305,38 @@ bool Engine<S>::pairCandidate(int a, int b, const Paths& paths, Candidate& out) 
   int i = a, j = b;
   if (!ra.translating || (rb.translating && b < a))
     std::swap(i, j);
-  const auto& ri = paths[i];
-  const auto& rj = paths[j];
-  // Both paths about the later of the two reference times: a function of the pair alone.
-  const S base = std::max(ri.time, rj.time);
-  const Trajectory<S> pi = shifted(ri.path, base - ri.time);
-  const Trajectory<S> pj = shifted(rj.path, base - rj.time);
-  // Nothing later than either ball's own next event needs finding: that event changes it.
-  const S limit = horizon(std::min(ri.first.time, rj.first.time), base);
-  const S R = params_.ball_radius;
-  const Vec2<S> c0 = pi.c0 - pj.c0, c1 = pi.c1 - pj.c1, c2 = pi.c2 - pj.c2;
+  motion = pairMotion(paths, i, j);
   // Dismissed if they cannot meet before a window ends (a contact after that is looked for
-  // again when the window is drawn further); otherwise solved over the whole horizon, so the
-  // result never depends on the windows.
-  if (cannotMeet<S>(c0, c1, c2, S(2) * R, horizon(std::min(ri.window, rj.window), base)))
+  // again when the window is drawn further).
+  if (cannotMeet<S>(motion.c0, motion.c1, motion.c2, S(2) * params_.ball_radius,
+                    horizon(std::min(paths[i].window, paths[j].window), motion.base)))
     return false;
-  const S tau = contactTime(distanceGap<S>(c0, c1, c2, S(2) * R), limit, -S(4) * R * zeroSpeed<S>(),
-                            touchTolerance(S(4) * R * R), true);
-  if (!(tau <= limit))
-    return false;
-  out.time = base + tau;
-  out.rank = Candidate::Pair;
-  out.ball = i;
-  out.other = j;
-  out.obstacle = -1;
+  pair.rank = Candidate::Unsolved;
+  pair.ball = i;
+  pair.other = j;
+  pair.obstacle = -1;
   return true;
+}
+
+template <typename S>
+bool Engine<S>::solvePair(const PairMotion& motion, Candidate& pair) const
+{
+  // Solved over the whole horizon, so the result never depends on the windows.
+  const S R = params_.ball_radius;
+  const S tau = contactTime(distanceGap<S>(motion.c0, motion.c1, motion.c2, S(2) * R), motion.limit,
+                            -S(4) * R * zeroSpeed<S>(), touchTolerance(S(4) * R * R), true);
+  if (!(tau <= motion.limit))
+    return false;
+  pair.time = motion.base + tau;
+  pair.rank = Candidate::Pair;
+  return true;
+}
+
+template <typename S>
+bool Engine<S>::pairCandidate(int a, int b, const Paths& paths, Candidate& out) const
+{
+  PairMotion motion;
+  return pairMayMeet(a, b, paths, out, motion) && solvePair(motion, out);
 }
 
 template <typename S>
@@ -311,6 +347,7 @@ Event<S> Engine<S>::eventOf(const TableState<S>& state, const Candidate& c) cons
   e.ball = state.balls[c.ball].id;
   switch (c.rank)
   {
+    case Candidate::Unsolved:
     case Candidate::Renewal:
       break;
     case Candidate::Transition: {
@@ -435,17 +472,46 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
       queue.file(static_cast<int>(i), paths[i].first);
     fileRenewal(i);
   };
+  /// Files the pair that pairMayMeet found from ball k. It is left unsolved, at a time before
+  /// which they cannot meet, if that is later than a contact of k's already found (`soonest`,
+  /// kept over one look at k's neighbours): that contact will most likely change k first, and the
+  /// pair is then never solved. Else it is solved now, since a pair left unsolved that does come
+  /// up costs a round of the queue, more than most solves.
+  PairMotion motion;
+  const auto filePair = [&](int k, S& soonest) {
+    if (soonest < infinity<S>())
+    {
+      const S tau = earliestMeeting<S>(motion.c0, motion.c1, motion.c2, S(2) * params_.ball_radius);
+      if (tau > motion.limit)
+        return;  // they cannot meet before either ball's next event
+      pair.time = motion.base + tau;
+      if (pair.time > soonest)
+      {
+        queue.file(k, pair);
+        return;
+      }
+    }
+    if (solvePair(motion, pair))
+    {
+      queue.file(k, pair);
+      soonest = std::min(soonest, pair.time);
+    }
+  };
   for (std::size_t i = 0; i < n; ++i)
     if (state.balls[i].moving())
       fileOwn(i);
   // Pairs need a translating ball: each is found from it (from the lower index if both are).
   for (std::size_t i = 0; i < n; ++i)
-    if (state.balls[i].translating())
-      visitNear(static_cast<int>(i), [&](int o) {
-        if (!(state.balls[o].translating() && o < static_cast<int>(i)) &&
-            pairCandidate(static_cast<int>(i), o, paths, pair))
-          queue.file(static_cast<int>(i), pair);
-      });
+  {
+    if (!state.balls[i].translating())
+      continue;
+    S soonest = infinity<S>();
+    visitNear(static_cast<int>(i), [&](int o) {
+      if (!(state.balls[o].translating() && o < static_cast<int>(i)) &&
+          pairMayMeet(static_cast<int>(i), o, paths, pair, motion))
+        filePair(static_cast<int>(i), soonest);
+    });
+  }
 
   // During an event, the balls near a point are those whose boxes reach it: looked for in the
   // cells around it if there is a grid, else among all balls, by comparisons alone.
@@ -493,6 +559,15 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
       break;
     const Candidate next = *top;
     queue.pop();
+    if (next.rank == Candidate::Unsolved)
+    {
+      // Neither ball has changed since the pair was found, so solving it now gives what solving
+      // it then would have: it is filed at its contact, if they meet before either's next event.
+      Candidate solved = next;
+      if (solvePair(pairMotion(paths, next.ball, next.other), solved))
+        queue.file(solved.ball, solved);
+      continue;
+    }
     if (next.rank == Candidate::Renewal)
     {
       // Not an event: the ball's box is drawn over its next stretch, and the balls it now
@@ -503,9 +578,10 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
       drawBox(state.balls[k], k, paths, paths[k].window, windowFrom(k, paths[k].window));
       list(k);
       fileRenewal(k);
+      S soonest = infinity<S>();
       visitNear(k, [&](int o) {
-        if (pairCandidate(k, o, paths, pair))
-          queue.file(k, pair);
+        if (pairMayMeet(k, o, paths, pair, motion))
+          filePair(k, soonest);
       });
       continue;
     }
@@ -547,10 +623,11 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
     for (int k : changed)
     {
       fileOwn(k);
+      S soonest = infinity<S>();
       if (state.balls[k].inPlay())
         visitNear(k, [&](int o) {
-          if (!(is_changed[o] && o < k) && pairCandidate(k, o, paths, pair))
-            queue.file(k, pair);
+          if (!(is_changed[o] && o < k) && pairMayMeet(k, o, paths, pair, motion))
+            filePair(k, soonest);
         });
     }
     for (int k : changed)

@@ -123,6 +123,25 @@ bool cannotMeet(const Vec2<S>& c0, const Vec2<S>& c1, const Vec2<S>& c2, S reach
   return cannotMeetWithin<S>(c0, c1, c2, c2.norm(), reach + S(1e-9), limit, 3);
 }
 
+/// A time no later than the first at which bodies whose relative position is
+/// d(tau) = c0 + c1 tau + c2 tau^2 come within `reach`: |d| >= |c0| - |c1| tau - |c2| tau^2, so
+/// they stay apart at least until that bound falls to reach. The bound is taken down to a
+/// nanometre beyond reach, plus 1e-11 |c0|^2 for the rounding of the gap quartic's coefficients
+/// (some 200 ulps of |c0|^2, which is under 1e-12 |c0|^2 m once divided by 2 reach): the contact
+/// the quartic's solver finds is never earlier. 0 if they are that close now; +inf if they never
+/// move relative to each other.
+template <typename S>
+S earliestMeeting(const Vec2<S>& c0, const Vec2<S>& c1, const Vec2<S>& c2, S reach)
+{
+  const S distance = c0.norm();
+  const S apart = distance - reach - S(1e-9) - S(1e-11) * distance * distance;
+  if (!(apart > S(0)))
+    return S(0);
+  // The positive root of |c2| tau^2 + |c1| tau - apart, in the form without cancellation.
+  const S speed = c1.norm();
+  return S(2) * apart / (speed + std::sqrt(speed * speed + S(4) * c2.norm() * apart));
+}
+
 /// Speed [m/s] at which a is closing on b along their line of centres (negative: parting).
 template <typename S>
 S closingSpeed(const Ball<S>& a, const Ball<S>& b)

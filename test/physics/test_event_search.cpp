@@ -1,6 +1,7 @@
 // The engine's event search structures on their own, against plain references: the queue of
-// candidate events (event_queue.hpp) against a list scanned in full, and the ball grid
-// (ball_grid.hpp) against box tests in double precision.
+// candidate events (event_queue.hpp) against a list scanned in full, the ball grid
+// (ball_grid.hpp) against box tests in double precision, and the bound that defers a pair's
+// solving (engine_geometry.hpp) against the solved contact.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,12 +11,14 @@
 #include <vector>
 
 #include "physics/ball_grid.hpp"
+#include "physics/engine_geometry.hpp"
 #include "physics/event_queue.hpp"
 
 namespace
 {
 using cue_sim::physics::BallGrid;
 using cue_sim::physics::EventQueue;
+using cue_sim::physics::Poly4;
 using cue_sim::physics::Vec2;
 
 /// What the queue needs of a candidate; `tag` tells candidates of the same time and balls apart.
@@ -286,5 +289,56 @@ TEST(BallGrid, KeepsEveryListingWhenCellsOverflow)
   }
   check(0);
   check(cluster + 1);
+}
+
+/// A pair is solved only when its bound comes up, so the bound must never be later than the
+/// contact the engine solves for, whatever the scale: balls touching, a hair apart, grazing,
+/// head-on, and far apart on a large table with slow, long paths where the gap quartic's
+/// coefficients are largest.
+TEST(PairBound, IsNeverLaterThanTheSolvedContact)
+{
+  using namespace cue_sim::physics::engine_detail;
+  const double R = 0.028575, reach = 2 * R;
+  std::mt19937 random(11);
+  const auto unit = [&] { return static_cast<double>(random()) / 4294967296.0; };
+  const auto direction = [&] {
+    const double angle = 2 * M_PI * unit();
+    return Vec2<double>(std::cos(angle), std::sin(angle));
+  };
+  int solved = 0, tight = 0;
+  for (int k = 0; k < 200000; ++k)
+  {
+    // The distance between centres: touching to 1e-12 m, a rack's gaps, the table, a large one.
+    const int scale = k % 4;
+    const double apart = scale == 0   ? 1e-12 * unit()
+                         : scale == 1 ? 1e-3 * unit()
+                         : scale == 2 ? 3.0 * unit()
+                                      : 25.0 * unit();
+    const Vec2<double> c0 = (reach + apart) * direction();
+    // Aimed at the other ball within an offset of up to 1.2 reach (grazing near 1), or anywhere.
+    const Vec2<double> towards = -c0.normalized();
+    const Vec2<double> across(-towards.y(), towards.x());
+    const double speed = std::pow(10.0, -4.0 + 5.0 * unit());
+    const Vec2<double> c1 =
+        k % 3 == 0 ? speed * direction()
+                   : speed * (towards * (reach + apart) + across * (1.2 * reach * (2 * unit() - 1))).normalized();
+    const Vec2<double> c2 = 2.5 * unit() * direction();
+    const double limit = k % 5 == 0 ? kEndlessHorizon<double> : 40.0 * unit();
+    const double tau =
+        contactTime(distanceGap<double>(c0, c1, c2, reach), limit, -2 * reach * cue_sim::physics::zeroSpeed<double>(),
+                    touchTolerance(reach * reach), true);
+    if (!(tau <= limit))
+      continue;
+    ++solved;
+    const double bound = earliestMeeting<double>(c0, c1, c2, reach);
+    ASSERT_LE(bound, tau) << "case " << k << ": c0 " << c0.transpose() << ", c1 " << c1.transpose() << ", c2 "
+                          << c2.transpose();
+    if (bound > 0.5 * tau)
+      ++tight;
+  }
+  // Enough contacts were solved, and the bound is no mere zero: most head-on ones it holds off
+  // until past half their time.
+  EXPECT_GT(solved, 40000);
+  EXPECT_GT(tight, solved / 4);
 }
 }  // namespace

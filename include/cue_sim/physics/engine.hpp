@@ -107,6 +107,15 @@ private:
   /// The box the ball's centre stays in from `from` until `window` (absolute times).
   void drawBox(const Ball<S>& ball, std::size_t index, Paths& paths, S from, S window) const;
   void computeOwnEvent(const Ball<S>& ball, std::size_t index, Paths& paths) const;
+  /// A pair's contact is found in two steps, so that a pair whose balls change before they
+  /// could meet need not be solved: whether they may meet before either's box window ends, and
+  /// their relative motion if so; then the contact itself (false if not before either ball's
+  /// next event).
+  struct PairMotion;
+  static PairMotion pairMotion(const Paths& paths, int i, int j);
+  bool pairMayMeet(int a, int b, const Paths& paths, Candidate& pair, PairMotion& motion) const;
+  bool solvePair(const PairMotion& motion, Candidate& pair) const;
+  /// Both steps at once.
   bool pairCandidate(int a, int b, const Paths& paths, Candidate& out) const;
   Event<S> eventOf(const TableState<S>& state, const Candidate& candidate) const;
 
