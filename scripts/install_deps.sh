@@ -17,8 +17,9 @@ PACKAGES=(
   rviz xvfb xauth imagemagick
   # plots of the work-precision report
   gnuplot-nox
-  # instruction counts of the benchmark shots (scripts/callgrind_shots.sh)
-  valgrind
+  # instruction counts of the benchmark shots (scripts/callgrind_shots.sh), and the node's CPU
+  # (scripts/node_load.sh finds it with pgrep, which minimal images lack)
+  valgrind procps
 )
 
 missing=()
