@@ -445,7 +445,6 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
   const auto windowFrom = [&](std::size_t i, S from) {
     return grid ? from + S(2) * grid->cell() / (state.balls[i].v.norm() + S(0.1)) : infinity<S>();
   };
-  Candidate pair;
   for (std::size_t i = 0; i < n; ++i)
   {
     const Ball<S>& b = state.balls[i];
@@ -472,46 +471,45 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
       queue.file(static_cast<int>(i), paths[i].first);
     fileRenewal(i);
   };
-  /// Files the pair that pairMayMeet found from ball k. It is left unsolved, at a time before
-  /// which they cannot meet, if that is later than a contact of k's already found (`soonest`,
-  /// kept over one look at k's neighbours): that contact will most likely change k first, and the
-  /// pair is then never solved. Else it is solved now, since a pair left unsolved that does come
-  /// up costs a round of the queue, more than most solves.
-  PairMotion motion;
-  const auto filePair = [&](int k, S& soonest) {
-    if (soonest < infinity<S>())
-    {
-      const S tau = earliestMeeting<S>(motion.c0, motion.c1, motion.c2, S(2) * params_.ball_radius);
-      if (tau > motion.limit)
-        return;  // they cannot meet before either ball's next event
-      pair.time = motion.base + tau;
-      if (pair.time > soonest)
+  /// Files the pairs ball k may meet, among the balls near it that `skip` leaves (the pairs
+  /// already filed from the other ball). A pair is left unsolved, at a time before which they
+  /// cannot meet, if that is later than a contact of k's found earlier in this look (`soonest`):
+  /// that contact will most likely change k first, and the pair is then never solved. Else it is
+  /// solved now, since a pair left unsolved that does come up costs a round of the queue, more
+  /// than most solves.
+  const auto filePairsOf = [&](int k, const auto& skip) {
+    S soonest = infinity<S>();
+    Candidate pair;
+    PairMotion motion;
+    visitNear(k, [&](int o) {
+      if (skip(o) || !pairMayMeet(k, o, paths, pair, motion))
+        return;
+      if (soonest < infinity<S>())
+      {
+        const S tau = earliestMeeting<S>(motion.c0, motion.c1, motion.c2, S(2) * params_.ball_radius);
+        if (tau > motion.limit)
+          return;  // they cannot meet before either ball's next event
+        pair.time = motion.base + tau;
+        if (pair.time > soonest)
+        {
+          queue.file(k, pair);
+          return;
+        }
+      }
+      if (solvePair(motion, pair))
       {
         queue.file(k, pair);
-        return;
+        soonest = std::min(soonest, pair.time);
       }
-    }
-    if (solvePair(motion, pair))
-    {
-      queue.file(k, pair);
-      soonest = std::min(soonest, pair.time);
-    }
+    });
   };
   for (std::size_t i = 0; i < n; ++i)
     if (state.balls[i].moving())
       fileOwn(i);
   // Pairs need a translating ball: each is found from it (from the lower index if both are).
   for (std::size_t i = 0; i < n; ++i)
-  {
-    if (!state.balls[i].translating())
-      continue;
-    S soonest = infinity<S>();
-    visitNear(static_cast<int>(i), [&](int o) {
-      if (!(state.balls[o].translating() && o < static_cast<int>(i)) &&
-          pairMayMeet(static_cast<int>(i), o, paths, pair, motion))
-        filePair(static_cast<int>(i), soonest);
-    });
-  }
+    if (state.balls[i].translating())
+      filePairsOf(static_cast<int>(i), [&](int o) { return state.balls[o].translating() && o < static_cast<int>(i); });
 
   // During an event, the balls near a point are those whose boxes reach it: looked for in the
   // cells around it if there is a grid, else among all balls, by comparisons alone.
@@ -578,15 +576,10 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
       drawBox(state.balls[k], k, paths, paths[k].window, windowFrom(k, paths[k].window));
       list(k);
       fileRenewal(k);
-      S soonest = infinity<S>();
-      visitNear(k, [&](int o) {
-        if (pairMayMeet(k, o, paths, pair, motion))
-          filePair(k, soonest);
-      });
+      filePairsOf(k, [](int) { return false; });
       continue;
     }
     const Event<S> event = eventOf(state, next);
-    const int queue_top_ball = next.ball, queue_top_other = next.other;
     if (++processed > limits_.max_events)
     {
       std::ostringstream why;
@@ -596,8 +589,8 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
     }
     changed.clear();
     EventContext context;
-    context.index = queue_top_ball;
-    context.other_index = queue_top_other;
+    context.index = next.ball;
+    context.other_index = next.other;
     context.changed = &changed;
     context.neighbours = &neighbours;
     context.scratch = &scratch;
@@ -605,9 +598,9 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
     if (events)
     {
       Event<S> record = event;
-      record.speed = state.balls[queue_top_ball].v.norm();
-      if (queue_top_other >= 0)
-        record.other_speed = state.balls[queue_top_other].v.norm();
+      record.speed = state.balls[next.ball].v.norm();
+      if (next.other >= 0)
+        record.other_speed = state.balls[next.other].v.norm();
       events->push_back(record);
     }
     // Only the balls the event changed get new candidates; every other candidate stands.
@@ -623,12 +616,8 @@ void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* ev
     for (int k : changed)
     {
       fileOwn(k);
-      S soonest = infinity<S>();
       if (state.balls[k].inPlay())
-        visitNear(k, [&](int o) {
-          if (!(is_changed[o] && o < k) && pairMayMeet(k, o, paths, pair, motion))
-            filePair(k, soonest);
-        });
+        filePairsOf(k, [&](int o) { return is_changed[o] && o < k; });
     }
     for (int k : changed)
       is_changed[k] = 0;
