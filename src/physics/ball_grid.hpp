@@ -8,13 +8,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
-#include <memory>
 #include <vector>
 #ifdef __SSE__
 #include <xmmintrin.h>
 #endif
 
 #include "cue_sim/physics/types.hpp"
+#include "physics/shelves.hpp"
 
 namespace cue_sim
 {
@@ -38,8 +38,7 @@ public:
     cell_ = std::max({cell_, size.x() / S(kMaxCells), size.y() / S(kMaxCells)});
     nx_ = std::max(1, static_cast<int>(std::ceil(size.x() / cell_)));
     ny_ = std::max(1, static_cast<int>(std::ceil(size.y() / cell_)));
-    sizes_.assign(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_), 0);
-    slots_.reset(new Listing[sizes_.size() * room_]);  // left unset: only listed slots are read
+    cells_ = Shelves<Listing>(16, static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_));
   }
 
   S cell() const { return cell_; }
@@ -52,12 +51,7 @@ public:
     const Listing listing = listingOf(ball, low, high, r);
     for (int y = r.y0; y <= r.y1; ++y)
       for (int x = r.x0; x <= r.x1; ++x)
-      {
-        const std::size_t c = index(x, y);
-        if (sizes_[c] == room_)
-          widen();
-        slots_[c * room_ + sizes_[c]++] = listing;
-      }
+        cells_.push(index(x, y), listing);
   }
 
   void remove(int ball)
@@ -66,12 +60,11 @@ public:
     for (int y = r.y0; y <= r.y1; ++y)
       for (int x = r.x0; x <= r.x1; ++x)
       {
-        const std::size_t c = index(x, y);
-        Listing* const cell = &slots_[c * room_];
-        Listing* it = cell;
-        while (it->ball != ball)
-          ++it;
-        *it = cell[--sizes_[c]];
+        const int c = index(x, y);
+        std::size_t i = 0;
+        while (cells_.at(c, i).ball != ball)
+          ++i;
+        cells_.erase(c, i);
       }
     listed_[ball] = Rect{0, -1, 0, -1};
   }
@@ -141,9 +134,9 @@ private:
            (l.bounds[3] > q.bounds[3]);
 #endif
   }
-  std::size_t index(int x, int y) const
+  int index(int x, int y) const
   {
-    return static_cast<std::size_t>(y) * nx_ + static_cast<std::size_t>(x);
+    return y * nx_ + x;
   }
   /// The cell a coordinate falls in, clamped to the grid (infinite and NaN bounds included).
   static int clampCell(S q, int count, bool upper)
@@ -168,7 +161,7 @@ private:
     std::size_t room = 0;
     for (int y = r.y0; y <= r.y1; ++y)
       for (int x = r.x0; x <= r.x1; ++x)
-        room += sizes_[index(x, y)];
+        room += cells_.size(index(x, y));
     if (taken_.size() < room)
       taken_.resize(2 * room);
     int* const taken = taken_.data();
@@ -186,8 +179,8 @@ private:
         const int x_from = x == r.x0 ? std::numeric_limits<int>::min() : x;
         // Written without branches: whether a listing is taken is as good as random, and a
         // mispredicted branch per listing would cost more than the test.
-        const std::size_t c = index(x, y);
-        for (const Listing *l_it = &slots_[c * room_], *l_end = l_it + sizes_[c]; l_it != l_end; ++l_it)
+        const int c = index(x, y);
+        for (const Listing *l_it = cells_.begin(c), *l_end = cells_.end(c); l_it != l_end; ++l_it)
         {
           const Listing& l = *l_it;
           taken[count] = l.ball;
@@ -198,24 +191,11 @@ private:
     return {taken, taken + count};
   }
 
-  /// Every cell's listings in one array, `room_` slots for each: no allocation per cell, and a
-  /// cell is read where it lies. When a cell is full, every cell's room is doubled (rarely: a
-  /// cell holds about seven listings).
-  void widen()
-  {
-    std::unique_ptr<Listing[]> wider(new Listing[sizes_.size() * room_ * 2]);
-    for (std::size_t c = 0; c < sizes_.size(); ++c)
-      std::copy_n(&slots_[c * room_], sizes_[c], &wider[c * room_ * 2]);
-    slots_ = std::move(wider);
-    room_ *= 2;
-  }
-
   Vec2<S> origin_;
   S cell_ = S(1);
   int nx_ = 1, ny_ = 1;
-  std::size_t room_ = 16;
-  std::vector<std::uint32_t> sizes_;  ///< listings in each cell
-  std::unique_ptr<Listing[]> slots_;
+  /// Each cell's listings, 16 to a cell at first (a cell holds about seven).
+  Shelves<Listing> cells_{16};
   std::vector<Rect> listed_;        ///< the cells each ball is listed in (none: x1 < x0)
   mutable std::vector<int> taken_;  ///< scratch for collect()
 };

@@ -18,6 +18,8 @@
 #include <limits>
 #include <vector>
 
+#include "physics/shelves.hpp"
+
 namespace cue_sim
 {
 namespace physics
@@ -35,9 +37,9 @@ public:
   void file(int ball, const Candidate& candidate)
   {
     if (balls_[ball].leaf < 0)
-      balls_[ball].leaf = static_cast<int>(entrants_++);  // in the tree from its next settling
-    filed_.push(balls_[ball], {candidate, balls_[candidate.ball].version,
-                               candidate.other >= 0 ? balls_[candidate.other].version : 0u});
+      balls_[ball].leaf = filed_.add();  // in the tree from its next settling
+    filed_.push(balls_[ball].leaf, {candidate, balls_[candidate.ball].version,
+                                    candidate.other >= 0 ? balls_[candidate.other].version : 0u});
     markWaiting(ball);
   }
 
@@ -45,7 +47,8 @@ public:
   void changed(int ball)
   {
     ++balls_[ball].version;
-    balls_[ball].filed = 0;
+    if (balls_[ball].leaf >= 0)
+      filed_.clear(balls_[ball].leaf);
     markWaiting(ball);
   }
 
@@ -58,7 +61,7 @@ public:
       if (tree_[0].time == std::numeric_limits<double>::infinity())
         return nullptr;
       const Ball& ball = balls_[tree_[0].ball];
-      const Entry& entry = filed_.at(ball, ball.earliest);
+      const Entry& entry = filed_.at(ball.leaf, ball.earliest);
       if (!stale(entry))
         return &entry.candidate;
       markWaiting(tree_[0].ball);  // its earliest is stale: look again among the rest
@@ -69,7 +72,7 @@ public:
   void pop()
   {
     Ball& ball = balls_[tree_[0].ball];
-    filed_.erase(ball, ball.earliest);
+    filed_.erase(ball.leaf, ball.earliest);
     markWaiting(tree_[0].ball);
   }
 
@@ -109,24 +112,25 @@ private:
       Ball& ball = balls_[index];
       ball.waiting = false;
       int slot = -1;
-      for (int i = 0; i < ball.filed;)
-      {
-        if (stale(filed_.at(ball, i)))
+      if (ball.leaf >= 0)
+        for (std::size_t i = 0; i < filed_.size(ball.leaf);)
         {
-          filed_.erase(ball, i);
-          continue;
+          if (stale(filed_.at(ball.leaf, i)))
+          {
+            filed_.erase(ball.leaf, i);
+            continue;
+          }
+          if (slot < 0 || filed_.at(ball.leaf, i).candidate.before(filed_.at(ball.leaf, slot).candidate))
+            slot = static_cast<int>(i);
+          ++i;
         }
-        if (slot < 0 || filed_.at(ball, i).candidate.before(filed_.at(ball, slot).candidate))
-          slot = i;
-        ++i;
-      }
       ball.earliest = slot;
     }
-    if (entrants_ > leaves_)
+    if (filed_.count() > leaves_)
     {
       // More balls have filed than the tree has leaves: a wider tree, every match played afresh.
       std::vector<Node> old_leaves(tree_ + first_leaf_, tree_ + first_leaf_ + leaves_);
-      layTree(entrants_);
+      layTree(filed_.count());
       std::copy(old_leaves.begin(), old_leaves.end(), tree_ + first_leaf_);
       for (int index : waiting_list_)
         setLeaf(index);
@@ -152,7 +156,7 @@ private:
     Node& leaf = tree_[first_leaf_ + static_cast<std::size_t>(ball.leaf)];
     leaf.ball = index;
     leaf.time = ball.earliest < 0 ? std::numeric_limits<double>::infinity()
-                                  : static_cast<double>(filed_.at(ball, ball.earliest).candidate.time);
+                                  : static_cast<double>(filed_.at(ball.leaf, ball.earliest).candidate.time);
   }
   /// An empty tree of at least `leaves` leaves (a power of four).
   void layTree(std::size_t leaves)
@@ -211,68 +215,30 @@ private:
     // The same time: the full order decides, as one queue of all candidates would.
     const Ball& a = balls_[x.ball];
     const Ball& b = balls_[y.ball];
-    return filed_.at(a, a.earliest).candidate.before(filed_.at(b, b.earliest).candidate);
+    return filed_.at(a.leaf, a.earliest).candidate.before(filed_.at(b.leaf, b.earliest).candidate);
   }
 
   /// What the queue keeps of each ball.
   struct Ball
   {
     unsigned version = 0;  ///< how many times the ball has changed
-    int shelf = -1;        ///< where its filed candidates are (-1 until it files one)
-    int filed = 0;         ///< how many
-    int earliest = -1;     ///< which of them is earliest (-1 if none)
-    int leaf = -1;         ///< its leaf in the tree (-1 until it files a candidate)
+    /// Its leaf in the tree and its shelf of filed candidates: -1 until it files a candidate,
+    /// so that balls that never move cost the tree nothing (and a lone ball among resting ones
+    /// walks no tree at all).
+    int leaf = -1;
+    int earliest = -1;     ///< which of its candidates is earliest (-1 if none)
     bool waiting = false;  ///< its earliest must be found again
   };
-  /// The balls' filed candidates, in one array: a shelf for each ball that has filed one, all
-  /// shelves of the same room, doubled for all when one needs more (rarely: a ball seldom has
-  /// more than four). A ball that never files costs nothing here.
-  class Shelves
-  {
-  public:
-    Entry& at(const Ball& ball, int i) { return entries_[static_cast<std::size_t>(ball.shelf) * room_ + i]; }
-    const Entry& at(const Ball& ball, int i) const
-    {
-      return entries_[static_cast<std::size_t>(ball.shelf) * room_ + i];
-    }
-    void push(Ball& ball, const Entry& entry)
-    {
-      if (ball.shelf < 0)
-      {
-        ball.shelf = static_cast<int>(entries_.size() / room_);
-        entries_.resize(entries_.size() + room_);
-      }
-      else if (static_cast<std::size_t>(ball.filed) == room_)
-        widen();
-      at(ball, ball.filed++) = entry;
-    }
-    /// Removes entry i; the last takes its place.
-    void erase(Ball& ball, int i) { at(ball, i) = at(ball, --ball.filed); }
-
-  private:
-    void widen()
-    {
-      // Every shelf keeps its number: only the room of each changes.
-      std::vector<Entry> wider(entries_.size() * 2);
-      for (std::size_t shelf = 0; shelf * room_ < entries_.size(); ++shelf)
-        std::copy_n(&entries_[shelf * room_], room_, &wider[shelf * 2 * room_]);
-      entries_.swap(wider);
-      room_ *= 2;
-    }
-    std::size_t room_ = 4;
-    std::vector<Entry> entries_;
-  };
   std::vector<Ball> balls_;
-  Shelves filed_;
+  /// The balls' filed candidates, a shelf for each ball that has filed one (a ball seldom has
+  /// more than four).
+  Shelves<Entry> filed_{4};
   /// The tournament: tree_[0] is the final, node k's four matches are nodes 4k+1 to 4k+4, each
   /// ball's leaf holds its earliest candidate's time, and each node the earliest of its four
   /// matches. A 4-way tree is half as deep as a 2-way one, and each level of a replay reads one
   /// cache line.
   std::size_t first_leaf_ = 0;  ///< node of the first leaf
   std::size_t leaves_ = 1;      ///< a power of four
-  /// Balls that have filed a candidate: only they have leaves, so that balls that never move
-  /// cost the tree nothing (and a lone ball among resting ones walks no tree at all).
-  std::size_t entrants_ = 0;
   std::vector<Node> nodes_;
   Node* tree_ = nullptr;           ///< node 0, placed in nodes_ so that node 1 starts a cache line
   std::vector<int> waiting_list_;  ///< balls whose earliest must be found again
