@@ -33,24 +33,24 @@ target_compile_definitions(scene_tests PRIVATE
   CUE_SIM_SIMULATE="$<TARGET_FILE:simulate>")
 add_dependencies(scene_tests simulate)
 
-add_rostest_gtest(node_tests test/node/table_node.test test/node/test_table_node.cpp)
+add_rostest_gtest(node_tests test/node/table_node.test test/node/test_table_node.cpp test/node/rostest_main.cpp)
 target_include_directories(node_tests PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(node_tests ${catkin_LIBRARIES})
 add_dependencies(node_tests table_node ${PROJECT_NAME}_generate_messages_cpp)
 target_compile_definitions(node_tests PRIVATE CUE_SIM_TEST_DIR="${CMAKE_CURRENT_BINARY_DIR}")
 
-add_rostest_gtest(research_tests test/node/research_interface.test test/node/test_research_interface.cpp)
+add_rostest_gtest(research_tests test/node/research_interface.test test/node/test_research_interface.cpp test/node/rostest_main.cpp)
 target_include_directories(research_tests PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(research_tests cue_sim_physics ${catkin_LIBRARIES})
 add_dependencies(research_tests table_node ${PROJECT_NAME}_generate_messages_cpp)
 
-add_rostest_gtest(sim_control_tests test/node/sim_control.test test/node/test_sim_control.cpp)
+add_rostest_gtest(sim_control_tests test/node/sim_control.test test/node/test_sim_control.cpp test/node/rostest_main.cpp)
 target_include_directories(sim_control_tests PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(sim_control_tests cue_sim_table_description ${catkin_LIBRARIES})
 add_dependencies(sim_control_tests table_node ${PROJECT_NAME}_generate_messages_cpp)
 target_compile_definitions(sim_control_tests PRIVATE CUE_SIM_TEST_DIR="${CMAKE_CURRENT_BINARY_DIR}")
 
-add_rostest_gtest(examples_tests test/node/examples.test test/node/test_examples.cpp)
+add_rostest_gtest(examples_tests test/node/examples.test test/node/test_examples.cpp test/node/rostest_main.cpp)
 target_include_directories(examples_tests PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(examples_tests ${catkin_LIBRARIES})
 add_dependencies(examples_tests table_node plan_shots ${PROJECT_NAME}_generate_messages_cpp)

@@ -1,5 +1,5 @@
 // A test client of one table_node (by its name): service calls and the latest ~state, through
-// a real master. Needs a running spinner (the tests' main starts an AsyncSpinner).
+// a real master. Needs a running spinner (test/node/rostest_main.cpp starts one).
 #pragma once
 
 #include <cue_sim/Predict.h>

@@ -85,14 +85,3 @@ TEST(Examples, TheCppAndPythonPlannersStrikeTheirBestShot)
   runExample(table, "rosrun cue_sim plan_shots.py");
 }
 }  // namespace
-
-int main(int argc, char** argv)
-{
-  testing::InitGoogleTest(&argc, argv);
-  ros::init(argc, argv, "examples_test");
-  ros::AsyncSpinner spinner(2);
-  spinner.start();
-  const int result = RUN_ALL_TESTS();
-  ros::shutdown();
-  return result;
-}

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "cue_sim/physics/cue_aim.hpp"
+#include "physics_of_msgs.hpp"
 #include "table_client.hpp"
 
 namespace
@@ -282,15 +283,9 @@ TEST_F(ResearchInterfaceTest, BadPredictionsAreRefusedByFieldAndChangeNothing)
 geometry_msgs::PoseStamped cuePose(const cue_sim::BallState& ball, const cue_sim::Shot& shot, double gap)
 {
   cue_sim::physics::Ball<double> b;
-  b.r = cue_sim::physics::Vec3<double>(ball.position.x, ball.position.y, ball.position.z);
-  cue_sim::physics::CueStrike<double> strike;
-  strike.speed = shot.speed;
-  strike.phi = shot.phi;
-  strike.theta = shot.theta;
-  strike.a = shot.a;
-  strike.b = shot.b;
+  b.r = centreOf(ball);
   const cue_sim::physics::CueStick cue =
-      cue_sim::physics::cueStickFor(b, strike, cue_sim::physics::PhysicsParams<double>(), gap);
+      cue_sim::physics::cueStickFor(b, strikeOfShot(shot), cue_sim::physics::PhysicsParams<double>(), gap);
   const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitX(), cue.axis);
   geometry_msgs::PoseStamped pose;
   pose.header.frame_id = "table";
@@ -553,14 +548,3 @@ TEST_F(ResearchInterfaceTest, TheAimMarkerFiresTheShotItShows)
   expectSameEvents(eventsSince(clicked), planned.events, "the shot fired from the aim marker");
 }
 }  // namespace
-
-int main(int argc, char** argv)
-{
-  testing::InitGoogleTest(&argc, argv);
-  ros::init(argc, argv, "research_interface_test");
-  ros::AsyncSpinner spinner(2);
-  spinner.start();
-  const int result = RUN_ALL_TESTS();
-  ros::shutdown();
-  return result;
-}

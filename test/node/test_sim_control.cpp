@@ -18,6 +18,7 @@
 
 #include "cue_sim/physics/engine.hpp"
 #include "cue_sim/table_description/urdf_table_loader.hpp"
+#include "physics_of_msgs.hpp"
 #include "table_client.hpp"
 
 namespace
@@ -219,16 +220,10 @@ TEST_F(SimControlTest, EveryBallTransformInTheBagIsTheExactTrajectoryAtItsStamp)
   {
     cue_sim::physics::Ball<double> ball;
     ball.id = b.id;
-    ball.r = cue_sim::physics::Vec3<double>(b.position.x, b.position.y, b.position.z);
+    ball.r = centreOf(b);
     state.balls.push_back(ball);
   }
-  cue_sim::physics::CueStrike<double> cue;
-  cue.speed = shot.speed;
-  cue.phi = shot.phi;
-  cue.theta = shot.theta;
-  cue.a = shot.a;
-  cue.b = shot.b;
-  engine.strike(state, 0, cue);
+  engine.strike(state, 0, strikeOfShot(shot));
 
   rosbag::Bag bag(bag_path, rosbag::bagmode::Read);
   std::size_t compared = 0;
@@ -260,14 +255,3 @@ TEST_F(SimControlTest, EveryBallTransformInTheBagIsTheExactTrajectoryAtItsStamp)
   EXPECT_LE(largest, 1e-9) << "largest distance of a recorded pose from the exact trajectory [m]";
 }
 }  // namespace
-
-int main(int argc, char** argv)
-{
-  testing::InitGoogleTest(&argc, argv);
-  ros::init(argc, argv, "sim_control_test");
-  ros::AsyncSpinner spinner(2);
-  spinner.start();
-  const int result = RUN_ALL_TESTS();
-  ros::shutdown();
-  return result;
-}

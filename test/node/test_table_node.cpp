@@ -310,14 +310,3 @@ TEST_F(TableNodeTest, BrokenTableDescriptionStopsTheNodeWithAReason)
   EXPECT_NE(missing_cloth.second.find("no link named 'cloth'"), std::string::npos) << missing_cloth.second;
 }
 }  // namespace
-
-int main(int argc, char** argv)
-{
-  testing::InitGoogleTest(&argc, argv);
-  ros::init(argc, argv, "table_node_test");
-  ros::AsyncSpinner spinner(2);
-  spinner.start();
-  const int result = RUN_ALL_TESTS();
-  ros::shutdown();
-  return result;
-}
