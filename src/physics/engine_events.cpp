@@ -194,7 +194,8 @@ template <typename S>
 void Engine<S>::drawBox(const Ball<S>& ball, std::size_t index, Paths& paths, S from, S window) const
 {
   auto& record = paths[index];
-  record.window = std::min(window, record.first.time);
+  // A ball that does not translate stays in its box until it changes: drawn once, never renewed.
+  record.window = ball.translating() ? std::min(window, record.first.time) : record.first.time;
   // A nanometre more than R, so that rounding never parts boxes of balls that touch.
   const S margin = params_.ball_radius + S(1e-9);
   const Trajectory<S>& p = record.path;
@@ -262,7 +263,13 @@ void Engine<S>::computeOwnEvent(const Ball<S>& ball, std::size_t index, Paths& p
       continue;
     const S limit = horizon(first.time, base);
     const Poly4<S> gap = {seg.normal.dot(p.c0 - seg.start) - R, seg.normal.dot(p.c1), seg.normal.dot(p.c2), S(0), S(0)};
-    const S tau = contactTime(gap, limit, -zeroSpeed<S>(), touchTolerance(R), true);
+    // Only a ball beside the segment can be touching it now. One beyond its ends may be within R
+    // of its line (in a pocket's mouth); it meets the segment only by crossing that line again
+    // beside it.
+    const S along_now = seg.direction.dot(p.c0 - seg.start);
+    const bool beside = along_now >= S(0) && along_now <= seg.length;
+    const S tau = beside ? contactTime(gap, limit, -zeroSpeed<S>(), touchTolerance(R), true)
+                         : firstDownCrossing(gap, S(0), limit);
     if (tau <= limit)
     {
       const S along = seg.direction.dot(p.at(tau) - seg.start);
