@@ -244,7 +244,7 @@ TEST(Engine, InvalidStatesAreNamed)
   // As near the pocket, but behind the long cushion that leads to it.
   s.balls[1].r.x() = 0.88;
   s.balls[1].r.y() = 0.53;
-  EXPECT_NE(engine.whyInvalid(s).find("overlaps cushion"), std::string::npos) << engine.whyInvalid(s);
+  EXPECT_NE(engine.whyInvalid(s).find("behind cushion_ypos_foot"), std::string::npos) << engine.whyInvalid(s);
   s.balls[1].r.x() = NAN;
   EXPECT_NE(engine.whyInvalid(s).find("finite"), std::string::npos);
   s.balls[1].r.x() = 0.5;

@@ -10,9 +10,9 @@
 #include <tuple>
 #include <vector>
 
-#include "physics/ball_grid.hpp"
-#include "physics/engine_geometry.hpp"
-#include "physics/event_queue.hpp"
+#include "physics/search/ball_grid.hpp"
+#include "physics/search/contact_times.hpp"
+#include "physics/search/event_queue.hpp"
 
 namespace
 {
@@ -297,7 +297,7 @@ TEST(BallGrid, KeepsEveryListingWhenCellsOverflow)
 /// coefficients are largest.
 TEST(PairBound, IsNeverLaterThanTheSolvedContact)
 {
-  using namespace cue_sim::physics::engine_detail;
+  using namespace cue_sim::physics;
   const double R = 0.028575, reach = 2 * R;
   std::mt19937 random(11);
   const auto unit = [&] { return static_cast<double>(random()) / 4294967296.0; };

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "cue_sim/physics/engine.hpp"
-#include "cue_sim/physics/time_stepping.hpp"
+#include "cue_sim/evaluation/time_stepping.hpp"
 
 namespace cue_sim
 {

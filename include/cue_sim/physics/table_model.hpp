@@ -67,9 +67,12 @@ public:
   const std::vector<CircularCushion>& circles() const { return circles_; }
   const std::vector<Pocket>& pockets() const { return pockets_; }
 
-  /// Empty if a ball of radius R can rest with its centre at p: on the cloth, clear of every
-  /// cushion, outside every pocket; otherwise why not.
-  std::string whyNotPlaceable(const Eigen::Vector2d& p, double ball_radius) const;
+  /// Empty if a ball of radius R can stand with its centre at p: at least R from every cushion's
+  /// face and every jaw, outside every pocket's capture circle, and on the playing area they
+  /// close, which is the cloth within R of its edges and the pockets' mouths (not the space
+  /// behind a cushion, a jaw or a pocket); otherwise why not. Distances within `tolerance` [m]
+  /// count as touching.
+  std::string whyNotPlaceable(const Eigen::Vector2d& p, double ball_radius, double tolerance = 1e-9) const;
 
 private:
   std::string name_;

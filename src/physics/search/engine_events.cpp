@@ -9,9 +9,9 @@
 
 #include "cue_sim/physics/engine.hpp"
 #include "cue_sim/physics/motion.hpp"
-#include "physics/ball_grid.hpp"
-#include "physics/engine_geometry.hpp"
-#include "physics/event_queue.hpp"
+#include "physics/search/ball_grid.hpp"
+#include "physics/search/engine_geometry.hpp"
+#include "physics/search/event_queue.hpp"
 
 namespace cue_sim
 {

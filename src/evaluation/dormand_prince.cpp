@@ -5,7 +5,7 @@
 // resolved with the engine's own models.
 #include <array>
 
-#include "physics/stepper_model.hpp"
+#include "evaluation/stepper_model.hpp"
 
 namespace cue_sim
 {

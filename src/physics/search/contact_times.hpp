@@ -1,41 +1,19 @@
-// The engine's geometry in its scalar type, and the gap helpers that event finding and contact
-// resolution share (internal to the engine's translation units).
+// When bodies on closed-form paths meet: the gap polynomials of a ball against a ball, a line or
+// a circle, the moment a gap closes, and cheap bounds that spare solving pairs that cannot meet
+// (internal to the event search).
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <vector>
 
-#include "cue_sim/physics/engine.hpp"
 #include "cue_sim/physics/polynomial.hpp"
+#include "cue_sim/physics/types.hpp"
+#include "physics/engine/table_geometry.hpp"
 
 namespace cue_sim
 {
 namespace physics
-{
-/// The table's geometry converted once to the engine's scalar type.
-template <typename S>
-struct Engine<S>::Obstacles
-{
-  struct Segment
-  {
-    Vec2<S> start, direction, normal;
-    S length;
-    Vec2<S> low, high;  ///< where a ball's centre can be while it touches the segment
-  };
-  struct Circle
-  {
-    Vec2<S> centre;
-    S radius;
-    Vec2<S> low, high;  ///< where a ball's centre can be while it touches the circle
-  };
-  std::vector<Segment> segments;
-  std::vector<Circle> circles;  // jaws and cushion end caps
-  std::vector<Circle> pockets;
-};
-
-namespace engine_detail
 {
 /// Horizon for balls whose motion never ends (no friction): far beyond any shot, and fixed,
 /// so that predictions never depend on how far a caller asks to advance.
@@ -72,14 +50,6 @@ template <typename S>
 S touchTolerance(S scale)
 {
   return S(64) * std::numeric_limits<S>::epsilon() * scale;
-}
-
-/// A speed [m/s] a few ulps above the rounding of speeds of this size: the least change that
-/// an event's tests are sure to see.
-template <typename S>
-S roundingSpeed(S speed)
-{
-  return S(2) * zeroSpeed<S>() * (S(1) + speed);
 }
 
 /// |d(tau)|^2 - reach^2 for the relative position d(tau) = c0 + c1 tau + c2 tau^2.
@@ -120,7 +90,7 @@ bool cannotMeetWithin(const Vec2<S>& c0, const Vec2<S>& c1, const Vec2<S>& c2, S
 template <typename S>
 bool cannotMeet(const Vec2<S>& c0, const Vec2<S>& c1, const Vec2<S>& c2, S reach, S limit)
 {
-  return cannotMeetWithin<S>(c0, c1, c2, c2.norm(), reach + S(1e-9), limit, 3);
+  return cannotMeetWithin<S>(c0, c1, c2, c2.norm(), reach + S(kBoxMargin), limit, 3);
 }
 
 /// A time no later than the first at which bodies whose relative position is
@@ -134,22 +104,13 @@ template <typename S>
 S earliestMeeting(const Vec2<S>& c0, const Vec2<S>& c1, const Vec2<S>& c2, S reach)
 {
   const S distance = c0.norm();
-  const S apart = distance - reach - S(1e-9) - S(1e-11) * distance * distance;
+  const S apart = distance - reach - S(kBoxMargin) - S(1e-11) * distance * distance;
   if (!(apart > S(0)))
     return S(0);
   // The positive root of |c2| tau^2 + |c1| tau - apart, in the form without cancellation.
   const S speed = c1.norm();
   return S(2) * apart / (speed + std::sqrt(speed * speed + S(4) * c2.norm() * apart));
 }
-
-/// Speed [m/s] at which a is closing on b along their line of centres (negative: parting).
-template <typename S>
-S closingSpeed(const Ball<S>& a, const Ball<S>& b)
-{
-  const Vec2<S> n = (b.r - a.r).template head<2>().normalized();
-  return (a.v - b.v).template head<2>().dot(n);
-}
-}  // namespace engine_detail
 
 }  // namespace physics
 }  // namespace cue_sim

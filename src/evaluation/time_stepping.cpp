@@ -1,10 +1,10 @@
-#include "cue_sim/physics/time_stepping.hpp"
+#include "cue_sim/evaluation/time_stepping.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "cue_sim/physics/motion.hpp"
-#include "physics/stepper_model.hpp"
+#include "evaluation/stepper_model.hpp"
 
 namespace cue_sim
 {

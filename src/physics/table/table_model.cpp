@@ -138,42 +138,84 @@ TableModel TableModel::carom(const std::string& name, double cloth_length, doubl
   return TableModel(name, V::Zero(), cloth_length, cloth_width, std::move(segments), {}, {});
 }
 
-std::string TableModel::whyNotPlaceable(const Eigen::Vector2d& p, double R) const
+namespace
 {
-  const double tolerance = 1e-9;
-  std::ostringstream why;
-  const Eigen::Vector2d offset = p - cloth_centre_;
-  // The slate goes on past the cushion line into each pocket's mouth, where a ball can hang in
-  // the jaws without dropping: there, beyond the rectangle but near a pocket, the cushion,
-  // jaw and pocket tests below are what bound the cloth.
-  const auto inPocketMouth = [&] {
-    for (const auto& k : pockets_)
-      if ((p - k.centre).norm() < k.radius + 2 * R)
-        return true;
-    return false;
+/// Where the straight way from p to q first meets a cushion's face, a jaw or a pocket, as a ball's
+/// centre sees them (faces moved R into play, circles grown by R, capture circles as they are):
+/// the name of what it meets, or empty if nothing. p is clear of everything, within `tolerance`.
+std::string firstCrossed(const TableModel& table, const Eigen::Vector2d& p, const Eigen::Vector2d& q, double R,
+                         double tolerance)
+{
+  const Eigen::Vector2d d = q - p;
+  for (const auto& s : table.segments())
+  {
+    // The face's line, R into play: p beside the segment behind it would not be clear.
+    const double from = (p - s.start).dot(s.normal) - R, to = (q - s.start).dot(s.normal) - R;
+    if (!(from < -tolerance && to > 0))
+      continue;
+    const Eigen::Vector2d crossing = p + (from / (from - to)) * d;
+    const double along = (crossing - s.start).dot(s.direction);
+    if (along >= 0 && along <= s.length)
+      return s.name;
+  }
+  // A circle of radius `reach` meets the way if its centre comes within reach of it.
+  const auto meets = [&](const Eigen::Vector2d& centre, double reach) {
+    const double t = d.squaredNorm() > 0 ? std::clamp((centre - p).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+    return (p + t * d - centre).norm() < reach - tolerance;
   };
+  for (const auto& c : table.circles())
+    if (meets(c.centre, R + c.radius))
+      return c.name;
+  for (const auto& k : table.pockets())
+    if (meets(k.centre, k.radius))
+      return k.name;
+  return {};
+}
+}  // namespace
+
+std::string TableModel::whyNotPlaceable(const Eigen::Vector2d& p, double R, double tolerance) const
+{
+  std::ostringstream why;
+  why << "position (" << p.x() << ", " << p.y() << ") ";
   if (!std::isfinite(p.x()) || !std::isfinite(p.y()))
-    why << "position is not finite";
-  else if ((std::abs(offset.x()) > cloth_length_ / 2 - R + tolerance ||
-            std::abs(offset.y()) > cloth_width_ / 2 - R + tolerance) &&
-           !inPocketMouth())
-    why << "position (" << p.x() << ", " << p.y()
-        << ") is off the cloth: the centre must be within |x| <= " << cloth_length_ / 2 - R
-        << ", |y| <= " << cloth_width_ / 2 - R << " m of the cloth centre, or in a pocket's mouth";
+    return "position is not finite";
   for (const auto& s : segments_)
   {
     const double along = (p - s.start).dot(s.direction);
-    const bool behind = along >= 0 && along <= s.length && (p - s.start).dot(s.normal) < R - tolerance;
-    if (why.str().empty() && (behind || distanceToSegment(p, s) < R - tolerance))
-      why << "position (" << p.x() << ", " << p.y() << ") overlaps " << s.name;
+    if (along >= 0 && along <= s.length && (p - s.start).dot(s.normal) < -tolerance)
+      return why.str() + "is off the cloth, behind " + s.name +
+             ": the centre must be on its playing side, at least R = " + std::to_string(R) + " m from its face";
+    if (distanceToSegment(p, s) < R - tolerance)
+      return why.str() + "overlaps " + s.name + ": the centre must be at least R = " + std::to_string(R) +
+             " m from its face";
   }
   for (const auto& c : circles_)
-    if (why.str().empty() && (p - c.centre).norm() < R + c.radius - tolerance)
-      why << "position (" << p.x() << ", " << p.y() << ") overlaps " << c.name;
+    if ((p - c.centre).norm() < R + c.radius - tolerance)
+      return why.str() + "overlaps " + c.name +
+             ": the centre must be at least R + its radius = " + std::to_string(R + c.radius) + " m from its centre";
   for (const auto& k : pockets_)
-    if (why.str().empty() && (p - k.centre).norm() < k.radius)
-      why << "position (" << p.x() << ", " << p.y() << ") is over " << k.name;
-  return why.str();
+    if ((p - k.centre).norm() < k.radius - tolerance)
+      return why.str() + "is over " + k.name + ": the centre must be outside its capture circle (radius " +
+             std::to_string(k.radius) + " m)";
+  // Within the rails' reach (R from the cloth's edges) the ball is on the cloth. Beyond it, only in
+  // a pocket's mouth: between its jaws, in front of its capture circle. A centre there reaches
+  // the cloth in a straight line without meeting a cushion, a jaw or a pocket; behind a cushion,
+  // a jaw or a pocket that way meets one of them (the cushions, jaws and capture circles close
+  // the playing area).
+  const Eigen::Vector2d half_reach(cloth_length_ / 2 - R, cloth_width_ / 2 - R);
+  const Eigen::Vector2d offset = p - cloth_centre_;
+  if (std::abs(offset.x()) <= half_reach.x() + tolerance && std::abs(offset.y()) <= half_reach.y() + tolerance)
+    return {};
+  // A point just inside the rails' reach, which nothing but a rail can be near.
+  const Eigen::Vector2d inside = half_reach - Eigen::Vector2d::Constant(std::min(1e-6, half_reach.minCoeff() / 2));
+  const Eigen::Vector2d q = cloth_centre_ + offset.cwiseMax(-inside).cwiseMin(inside);
+  const std::string crossed = firstCrossed(*this, p, q, R, tolerance);
+  if (crossed.empty())
+    return {};
+  return why.str() + "is off the cloth: beyond the cushion lines (|x| <= " + std::to_string(half_reach.x()) +
+         ", |y| <= " + std::to_string(half_reach.y()) +
+         " m of the cloth centre) a ball can only stand in a pocket's mouth, and " + crossed +
+         " lies between it and the cloth";
 }
 
 }  // namespace physics

@@ -2,7 +2,7 @@
 #include <cmath>
 
 #include "cue_sim/physics/collision_models.hpp"
-#include "physics/friction_impulse.hpp"
+#include "physics/models/friction_impulse.hpp"
 
 namespace cue_sim
 {

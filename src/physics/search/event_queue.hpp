@@ -1,4 +1,4 @@
-// The queue of candidate events of Engine::advance (internal to engine_events.cpp): each ball
+// The queue of candidate events of the event search (internal to event_search.cpp): each ball
 // keeps the candidates found for it, and a tournament tree over the balls keeps each ball's
 // earliest. An event walks a few levels of the tree, each one cache line: their number follows
 // the number of balls, not of candidates waiting (5 levels at 1024 balls, where one binary heap of
@@ -18,7 +18,7 @@
 #include <limits>
 #include <vector>
 
-#include "physics/shelves.hpp"
+#include "physics/search/shelves.hpp"
 
 namespace cue_sim
 {
@@ -32,6 +32,14 @@ public:
   explicit EventQueue(std::size_t balls) : balls_(balls) { layTree(1); }
   EventQueue(const EventQueue&) = delete;
   EventQueue& operator=(const EventQueue&) = delete;
+
+  /// Room for balls 0 to balls - 1 (a ball placed on the table); never shrinks, so a ball that
+  /// left keeps its place and its versions for the next to take it.
+  void reserveBalls(std::size_t balls)
+  {
+    if (balls > balls_.size())
+      balls_.resize(balls);
+  }
 
   /// Files a candidate under `ball`, which it must involve (as its ball or its other).
   void file(int ball, const Candidate& candidate)

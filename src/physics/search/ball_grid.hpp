@@ -1,5 +1,5 @@
 // A uniform grid over the table in which each ball is listed in every cell its path box covers
-// (internal to engine_events.cpp): balls whose boxes share no cell cannot meet, so an event
+// (internal to event_search.cpp): balls whose boxes share no cell cannot meet, so an event
 // looks only at the few balls near the ones it changed, however many are on the table.
 #pragma once
 
@@ -14,7 +14,7 @@
 #endif
 
 #include "cue_sim/physics/types.hpp"
-#include "physics/shelves.hpp"
+#include "physics/search/shelves.hpp"
 
 namespace cue_sim
 {
@@ -42,6 +42,13 @@ public:
   }
 
   S cell() const { return cell_; }
+
+  /// Room for balls 0 to balls - 1 (a ball placed on the table).
+  void reserveBalls(std::size_t balls)
+  {
+    if (balls > listed_.size())
+      listed_.resize(balls, Rect{0, -1, 0, -1});
+  }
 
   void place(int ball, const Vec2<S>& low, const Vec2<S>& high)
   {

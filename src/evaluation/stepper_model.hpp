@@ -9,7 +9,7 @@
 #include "cue_sim/physics/collision_models.hpp"
 #include "cue_sim/physics/motion.hpp"
 #include "cue_sim/physics/table_model.hpp"
-#include "cue_sim/physics/time_stepping.hpp"
+#include "cue_sim/evaluation/time_stepping.hpp"
 
 namespace cue_sim
 {

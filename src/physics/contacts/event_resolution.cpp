@@ -1,0 +1,119 @@
+#include "physics/contacts/event_resolution.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "cue_sim/physics/motion.hpp"
+#include "physics/contacts/event_resolver.hpp"
+
+namespace cue_sim
+{
+namespace physics
+{
+template <typename S>
+void resolveEvent(const Engine<S>& engine, TableState<S>& state, const Event<S>& event, const EventContext<S>& context)
+{
+  EventResolver<S>(engine, state, context).resolve(event);
+}
+
+template <typename S>
+void EventResolver<S>::resolve(const Event<S>& event)
+{
+  state_.event_time = std::max(state_.event_time, event.time);
+  Ball<S>& ball = state_.balls[context_.index];
+  ball = evolve(ball, event.time, params_);
+  changed(context_.index);
+  switch (event.kind)
+  {
+    case EventKind::BallBall:
+      resolveBallBall(event);
+      break;
+    case EventKind::BallCushion:
+    case EventKind::BallCircle:
+      resolveWall(ball, event);
+      break;
+    case EventKind::Pocketed:
+      pocketBall(ball, event.obstacle);
+      break;
+    default:
+      applyTransition(ball, params_);
+      break;
+  }
+}
+
+template <typename S>
+void EventResolver<S>::resolveBallBall(const Event<S>& event)
+{
+  Ball<S>& ball = state_.balls[context_.index];
+  Ball<S>& other = state_.balls[context_.other_index];
+  other = evolve(other, event.time, params_);
+  changed(context_.other_index);
+  // A pressed pair is joined (with its cluster, held by any wall it touches); any other contact
+  // is an impact of the touching group. An event must change something, or it is found again
+  // at the same instant forever.
+  const Vec3<S> ball_before = ball.v, other_before = other.v;
+  if (inSustainedContact(ball, other))
+    joinPressedCluster(event.time, context_.index, context_.other_index);
+  else if (!resolveImpactGroup(event.time, context_.index, context_.other_index))
+  {
+    // Found closing by the gap polynomial but not by the impact's own arithmetic: a closing
+    // speed within rounding of zero. The model resolves it alone, or, if even it sees no
+    // approach, the pair is parted by a few ulps of their speed.
+    engine_.ballBallModel().resolve(ball, other, params_);
+    if (ball.v == ball_before && other.v == other_before)
+    {
+      const Vec3<S> n = Vec3<S>(other.r.x() - ball.r.x(), other.r.y() - ball.r.y(), S(0)).normalized();
+      const S part = roundingSpeed((ball.v - other.v).norm());
+      ball.v -= S(0.5) * part * n;
+      other.v += S(0.5) * part * n;
+    }
+  }
+  settleMotion(ball, params_.ball_radius);
+  settleMotion(other, params_.ball_radius);
+}
+
+template <typename S>
+void EventResolver<S>::resolveWall(Ball<S>& ball, const Event<S>& event)
+{
+  const Vec2<S> n = event.kind == EventKind::BallCushion
+                        ? geometry_.segments[event.obstacle].normal
+                        : (ball.r.template head<2>() - geometry_.circles[event.obstacle].centre).normalized();
+  const Vec3<S> normal(n.x(), n.y(), S(0));
+  const Vec3<S> v_before = ball.v, w_before = ball.w;
+  engine_.cushionModel().resolve(ball, normal, params_);
+  settleMotion(ball, params_.ball_radius);
+  holdAgainstWall(ball, normal);
+  if (ball.v == v_before && ball.w == w_before)
+  {
+    // Found approaching or pressing by the gap polynomial but by neither the model nor the
+    // hold: within rounding of zero. Moved off by a few ulps of its speed, the ball is not
+    // found at this wall again at this instant.
+    ball.v += roundingSpeed(ball.v.norm()) * normal;
+    settleMotion(ball, params_.ball_radius);
+  }
+}
+
+template <typename S>
+void EventResolver<S>::pocketBall(Ball<S>& ball, int pocket)
+{
+  // Pocketed balls rest below the cloth at their pocket's centre, stacked in arrival order.
+  int already = 0;
+  for (const auto& b : state_.balls)
+    if (b.motion == Motion::Pocketed && b.pocket == pocket)
+      ++already;
+  const auto& p = geometry_.pockets[pocket];
+  const S R = params_.ball_radius;
+  ball.motion = Motion::Pocketed;
+  ball.pocket = pocket;
+  ball.r = Vec3<S>(p.centre.x(), p.centre.y(), -R - S(2) * R * S(already));
+  ball.v.setZero();
+  ball.w.setZero();
+}
+
+template void resolveEvent(const Engine<double>&, TableState<double>&, const Event<double>&,
+                           const EventContext<double>&);
+template void resolveEvent(const Engine<long double>&, TableState<long double>&, const Event<long double>&,
+                           const EventContext<long double>&);
+
+}  // namespace physics
+}  // namespace cue_sim

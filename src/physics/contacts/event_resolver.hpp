@@ -1,0 +1,119 @@
+// The parts of resolving one event (internal to src/physics/contacts/): an impact of a touching
+// group (impact_group.cpp), sustained contact of balls and walls (sustained_contact.cpp), and the
+// event itself, pocketing and neighbours (event_resolution.cpp).
+#pragma once
+
+#include <vector>
+
+#include "cue_sim/physics/engine.hpp"
+#include "physics/contacts/event_resolution.hpp"
+#include "physics/engine/table_geometry.hpp"
+
+namespace cue_sim
+{
+namespace physics
+{
+/// A speed [m/s] a few ulps above the rounding of speeds of this size: the least change that
+/// an event's tests are sure to see.
+template <typename S>
+S roundingSpeed(S speed)
+{
+  return S(2) * zeroSpeed<S>() * (S(1) + speed);
+}
+
+/// Speed [m/s] at which a is closing on b along their line of centres (negative: parting).
+template <typename S>
+S closingSpeed(const Ball<S>& a, const Ball<S>& b)
+{
+  const Vec2<S> n = (b.r - a.r).template head<2>().normalized();
+  return (a.v - b.v).template head<2>().dot(n);
+}
+
+/// Two balls (or a ball and a wall) whose centres are this much further apart than touching
+/// [m] still touch: a contact resolved at an event leaves them at the contact distance within
+/// rounding.
+constexpr double kTouchingSlack = 1e-12;
+
+template <typename S>
+class EventResolver
+{
+public:
+  EventResolver(const Engine<S>& engine, TableState<S>& state, const EventContext<S>& context)
+    : engine_(engine), params_(engine.params()), geometry_(engine.geometry()), state_(state), context_(context)
+  {
+  }
+
+  void resolve(const Event<S>& event);
+
+private:
+  void resolveBallBall(const Event<S>& event);
+  void resolveWall(Ball<S>& ball, const Event<S>& event);
+  void pocketBall(Ball<S>& ball, int pocket);
+  void changed(int index)
+  {
+    if (context_.changed)
+      context_.changed->push_back(index);
+  }
+  /// The balls in play that may be within `distance` of `point`, ascending.
+  void nearBalls(const Vec2<S>& point, S distance, std::vector<int>& out) const;
+  /// True if the ball cannot be within `distance` of `point` (xy) at `time`: a cheap bound.
+  bool cannotReach(const Ball<S>& ball, const Vec3<S>& point, S distance, S time) const;
+
+  // impact_group.cpp
+  /// Resolves a ball-ball impact together with every ball touching the pair, and the cushions
+  /// those balls touch: one impact. Returns whether the pair's velocities changed.
+  bool resolveImpactGroup(S time, int first, int second);
+  /// The balls touching the pair, transitively, at `time` (brought to it), the pair first.
+  std::vector<int> touchingGroup(S time, int first, int second);
+  bool resolveLonePair(int first, int second);
+
+  // sustained_contact.cpp
+  bool inSustainedContact(const Ball<S>& a, const Ball<S>& b) const;
+  /// Gives the pair, and every ball pressed against them in sustained contact, the mean of
+  /// their velocities and spins (EngineLimits::sustained_contact_speed).
+  void joinPressedCluster(S time, int first, int second);
+  /// Grows the cluster by one ball that touches it and that the joined velocity `v` leaves
+  /// closing on it slower than the sustained-contact speed; false if there is none.
+  bool growCluster(S time, const Vec3<S>& v, std::vector<int>& cluster);
+  /// Unit normals (into play) of the cushions and jaws the ball touches.
+  std::vector<Vec3<S>> touchingWalls(const Ball<S>& ball) const;
+  /// A sliding ball left on a wall with (almost) no normal speed while its slip drives it back
+  /// in stays on the wall: the normal speed is removed and the slip's part into the wall is
+  /// turned into spin by the cloth friction the wall balances.
+  void holdAgainstWall(Ball<S>& ball, const Vec3<S>& normal) const;
+
+private:
+  const Engine<S>& engine_;
+  const PhysicsParams<S>& params_;
+  const TableGeometry<S>& geometry_;
+  TableState<S>& state_;
+  const EventContext<S>& context_;
+};
+
+template <typename S>
+inline void EventResolver<S>::nearBalls(const Vec2<S>& point, S distance, std::vector<int>& out) const
+{
+  if (context_.neighbours)
+  {
+    context_.neighbours->near(point, distance, out);
+    return;
+  }
+  out.clear();
+  for (std::size_t j = 0; j < state_.balls.size(); ++j)
+    if (state_.balls[j].inPlay())
+      out.push_back(static_cast<int>(j));
+}
+
+template <typename S>
+inline bool EventResolver<S>::cannotReach(const Ball<S>& ball, const Vec3<S>& point, S distance, S time) const
+{
+  // No ball speeds up by more than the sliding deceleration, so by `time` it has moved at most
+  // |v| dt + a dt^2 / 2 (with a nanometre for rounding): a bound that spares evolving it.
+  const S dt = time - ball.time;
+  const S travel = ball.moving() ? dt * (ball.v.norm() + S(0.5) * params_.slideDecel() * dt) : S(0);
+  const S reach = distance + travel + S(kBoxMargin);
+  return (ball.r - point).template head<2>().squaredNorm() > reach * reach;
+}
+
+}  // namespace physics
+}  // namespace cue_sim

@@ -1,0 +1,40 @@
+// The table's geometry converted once to the engine's scalar type, each cushion, jaw and pocket
+// with the box a ball's centre can be in while it touches it (internal to the physics core).
+#pragma once
+
+#include <vector>
+
+#include "cue_sim/physics/engine.hpp"
+
+namespace cue_sim
+{
+namespace physics
+{
+/// Boxes are widened by a nanometre, so that rounding never dismisses a touching ball.
+constexpr double kBoxMargin = 1e-9;
+
+template <typename S>
+struct TableGeometry
+{
+  struct Segment
+  {
+    Vec2<S> start, direction, normal;
+    S length;
+    Vec2<S> low, high;  ///< where a ball's centre can be while it touches the segment
+  };
+  struct Circle
+  {
+    Vec2<S> centre;
+    S radius;
+    Vec2<S> low, high;  ///< where a ball's centre can be while it touches the circle
+  };
+  std::vector<Segment> segments;
+  std::vector<Circle> circles;    ///< jaws and cushion end caps
+  std::vector<Circle> pockets;    ///< capture circles: `low`, `high` bound where a centre enters
+  Vec2<S> cloth_low, cloth_high;  ///< the cloth's rectangle
+
+  TableGeometry(const TableModel& table, S ball_radius);
+};
+
+}  // namespace physics
+}  // namespace cue_sim

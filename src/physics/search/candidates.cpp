@@ -1,0 +1,320 @@
+#include "physics/search/candidates.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "physics/search/contact_times.hpp"
+
+namespace cue_sim
+{
+namespace physics
+{
+namespace
+{
+/// The search horizon from `base` for a motion that ends at `end` (absolute).
+template <typename S>
+S horizon(S end, S base)
+{
+  return std::isfinite(static_cast<double>(end)) ? end - base : kEndlessHorizon<S>;
+}
+
+/// The path re-expanded about a time `delta` after its own base.
+template <typename S>
+Trajectory<S> shifted(const Trajectory<S>& path, S delta)
+{
+  if (delta == S(0))
+    return path;
+  Trajectory<S> out;
+  out.c0 = path.at(delta);
+  out.c1 = path.velocityAt(delta);
+  out.c2 = path.c2;
+  return out;
+}
+
+/// Smallest and largest value of c0 + c1 tau + c2 tau^2 over tau in [T0, T] (T may be +inf).
+template <typename S>
+void quadraticRange(S c0, S c1, S c2, S T0, S T, S& low, S& high)
+{
+  low = high = T0 == S(0) ? c0 : c0 + T0 * (c1 + T0 * c2);
+  const auto include = [&](S x) {
+    low = std::min(low, x);
+    high = std::max(high, x);
+  };
+  if (std::isfinite(static_cast<double>(T)))
+    include(c0 + T * (c1 + T * c2));
+  else if (c2 != S(0) || c1 != S(0))
+    include((c2 > S(0) || (c2 == S(0) && c1 > S(0))) ? infinity<S>() : -infinity<S>());
+  if (c2 != S(0))
+  {
+    const S vertex = -c1 / (S(2) * c2);
+    if (vertex > T0 && vertex < T)
+      include(c0 + vertex * (c1 + vertex * c2));
+  }
+}
+
+/// The search for one translating ball's own next event: each contact is searched only up to
+/// the earliest found so far, so the horizon shrinks, and cushions, jaws and pockets out of
+/// reach are dismissed by a box, not solved.
+template <typename S>
+class OwnEventSearch
+{
+public:
+  OwnEventSearch(const Trajectory<S>& path, S base, Candidate<S>& first) : path_(path), base_(base), first_(first)
+  {
+    sweep();
+  }
+
+  void segment(const typename TableGeometry<S>::Segment& seg, std::size_t k, S R)
+  {
+    if (outOfReach(seg))
+      return;
+    const S limit = horizon(first_.time, base_);
+    const Trajectory<S>& p = path_;
+    const Poly4<S> gap = {seg.normal.dot(p.c0 - seg.start) - R, seg.normal.dot(p.c1), seg.normal.dot(p.c2), S(0), S(0)};
+    // Only a ball beside the segment can be touching it now. One beyond its ends may be within R
+    // of its line (in a pocket's mouth); it meets the segment only by crossing that line again
+    // beside it.
+    const S along_now = seg.direction.dot(p.c0 - seg.start);
+    const bool beside = along_now >= S(0) && along_now <= seg.length;
+    const S tau = beside ? contactTime(gap, limit, -zeroSpeed<S>(), touchTolerance(R), true)
+                         : firstDownCrossing(gap, S(0), limit);
+    if (!(tau <= limit))
+      return;
+    const S along = seg.direction.dot(p.at(tau) - seg.start);
+    if (along >= S(0) && along <= seg.length)
+      keep(tau, Candidate<S>::Segment, k);
+  }
+
+  /// A jaw or cushion end (a contact when pressed into it, as for a straight cushion) or a
+  /// pocket (the centre crossing the capture circle): both circles around a centre.
+  void circle(const typename TableGeometry<S>::Circle& obstacle, S reach, S approach_slope, bool pressing,
+              typename Candidate<S>::Rank rank, std::size_t k)
+  {
+    if (outOfReach(obstacle))
+      return;
+    const S limit = horizon(first_.time, base_);
+    const Trajectory<S>& p = path_;
+    if (cannotMeet<S>(p.c0 - obstacle.centre, p.c1, p.c2, reach, limit))
+      return;
+    const S tau = contactTime(distanceGap<S>(p.c0 - obstacle.centre, p.c1, p.c2, reach), limit, approach_slope,
+                              touchTolerance(reach * reach), pressing);
+    if (tau <= limit)
+      keep(tau, rank, k);
+  }
+
+private:
+  /// The box the centre sweeps until the earliest contact found so far.
+  void sweep()
+  {
+    const S T = first_.time - base_;
+    for (int axis = 0; axis < 2; ++axis)
+      quadraticRange(path_.c0[axis], path_.c1[axis], path_.c2[axis], S(0), T, low_[axis], high_[axis]);
+  }
+  /// An obstacle whose own box the swept box misses is out of reach.
+  template <typename Obstacle>
+  bool outOfReach(const Obstacle& obstacle) const
+  {
+    return (low_.array() > obstacle.high.array()).any() || (obstacle.low.array() > high_.array()).any();
+  }
+  void keep(S tau, typename Candidate<S>::Rank rank, std::size_t k)
+  {
+    Candidate<S> c;
+    c.time = base_ + tau;
+    c.rank = rank;
+    c.ball = first_.ball;
+    c.obstacle = static_cast<int>(k);
+    if (c.before(first_))
+    {
+      first_ = c;
+      sweep();
+    }
+  }
+
+  const Trajectory<S>& path_;
+  const S base_;
+  Candidate<S>& first_;
+  Vec2<S> low_, high_;
+};
+}  // namespace
+
+template <typename S>
+PairMotion<S> PairMotion<S>::of(const BallRecords<S>& records, int i, int j)
+{
+  const auto& ri = records[i];
+  const auto& rj = records[j];
+  PairMotion m;
+  m.base = std::max(ri.time, rj.time);
+  const Trajectory<S> pi = shifted(ri.path, m.base - ri.time);
+  const Trajectory<S> pj = shifted(rj.path, m.base - rj.time);
+  m.c0 = pi.c0 - pj.c0;
+  m.c1 = pi.c1 - pj.c1;
+  m.c2 = pi.c2 - pj.c2;
+  m.limit = horizon(std::min(ri.first.time, rj.first.time), m.base);
+  return m;
+}
+
+template <typename S>
+void CandidateFinder<S>::restingPath(const Ball<S>& ball, int index, BallRecord<S>& record) const
+{
+  // A ball at rest costs almost nothing until something reaches it.
+  record.path.c0 = ball.r.template head<2>();
+  record.path.c1.setZero();
+  record.path.c2.setZero();
+  record.time = ball.time;
+  record.first = Candidate<S>();
+  record.first.ball = index;
+  record.window = infinity<S>();
+  record.in_play = true;
+  record.translating = false;
+  record.low = record.path.c0 - Vec2<S>::Constant(margin_);
+  record.high = record.path.c0 + Vec2<S>::Constant(margin_);
+}
+
+template <typename S>
+void CandidateFinder<S>::computePath(const Ball<S>& ball, int index, BallRecord<S>& record, S window) const
+{
+  if (ball.motion == Motion::Stationary)
+  {
+    restingPath(ball, index, record);
+    return;
+  }
+  computeOwnEvent(ball, index, record);
+  drawBox(ball, record, ball.time, window);
+}
+
+template <typename S>
+void CandidateFinder<S>::drawBox(const Ball<S>& ball, BallRecord<S>& record, S from, S window) const
+{
+  // A ball that does not translate stays in its box until it changes: drawn once, never renewed.
+  record.window = ball.translating() ? std::min(window, record.first.time) : record.first.time;
+  const Trajectory<S>& p = record.path;
+  const S T = ball.translating() ? record.window - ball.time : S(0);
+  const S T0 = ball.translating() ? std::min(from - ball.time, T) : S(0);
+  for (int axis = 0; axis < 2; ++axis)
+  {
+    S low, high;
+    quadraticRange(p.c0[axis], p.c1[axis], p.c2[axis], T0, T, low, high);
+    record.low[axis] = low - margin_;
+    record.high[axis] = high + margin_;
+  }
+}
+
+template <typename S>
+void CandidateFinder<S>::computeOwnEvent(const Ball<S>& ball, int index, BallRecord<S>& record) const
+{
+  record.path = trajectoryFrom(ball, ball.time, params_);
+  record.time = ball.time;
+  record.in_play = ball.inPlay();
+  record.translating = ball.translating();
+  Candidate<S>& first = record.first;
+  first = Candidate<S>();
+  first.ball = index;
+  if (!ball.inPlay())
+    return;
+  first.time = ball.moving() ? ball.time + timeToTransition(ball, params_) : infinity<S>();  // or never
+  if (!ball.translating())
+    return;
+  const S R = params_.ball_radius;
+  OwnEventSearch<S> search(record.path, ball.time, first);
+  for (std::size_t k = 0; k < geometry_.segments.size(); ++k)
+    search.segment(geometry_.segments[k], k, R);
+  for (std::size_t k = 0; k < geometry_.circles.size(); ++k)
+  {
+    const S reach = R + geometry_.circles[k].radius;
+    search.circle(geometry_.circles[k], reach, -S(2) * reach * zeroSpeed<S>(), true, Candidate<S>::Circle, k);
+  }
+  for (std::size_t k = 0; k < geometry_.pockets.size(); ++k)
+    search.circle(geometry_.pockets[k], geometry_.pockets[k].radius, S(0), false, Candidate<S>::Pocket, k);
+}
+
+template <typename S>
+bool CandidateFinder<S>::pairMayMeet(int a, int b, const BallRecords<S>& records, Candidate<S>& pair,
+                                     PairMotion<S>& motion) const
+{
+  const auto& ra = records[a];
+  const auto& rb = records[b];
+  if (!ra.in_play || !rb.in_play || (!ra.translating && !rb.translating) || (ra.low.array() > rb.high.array()).any() ||
+      (rb.low.array() > ra.high.array()).any())
+    return false;
+  // The pair belongs to the scan of its translating ball, the lower index if both translate.
+  int i = a, j = b;
+  if (!ra.translating || (rb.translating && b < a))
+    std::swap(i, j);
+  motion = PairMotion<S>::of(records, i, j);
+  // Dismissed if they cannot meet before a window ends (a contact after that is looked for
+  // again when the window is drawn further).
+  if (cannotMeet<S>(motion.c0, motion.c1, motion.c2, S(2) * params_.ball_radius,
+                    horizon(std::min(records[i].window, records[j].window), motion.base)))
+    return false;
+  pair.rank = Candidate<S>::Unsolved;
+  pair.ball = i;
+  pair.other = j;
+  pair.obstacle = -1;
+  return true;
+}
+
+template <typename S>
+bool CandidateFinder<S>::solvePair(const PairMotion<S>& motion, Candidate<S>& pair) const
+{
+  // Solved over the whole horizon, so the result never depends on the windows.
+  const S R = params_.ball_radius;
+  const S tau = contactTime(distanceGap<S>(motion.c0, motion.c1, motion.c2, S(2) * R), motion.limit,
+                            -S(4) * R * zeroSpeed<S>(), touchTolerance(S(4) * R * R), true);
+  if (!(tau <= motion.limit))
+    return false;
+  pair.time = motion.base + tau;
+  pair.rank = Candidate<S>::Pair;
+  return true;
+}
+
+template <typename S>
+bool CandidateFinder<S>::pairCandidate(int a, int b, const BallRecords<S>& records, Candidate<S>& out) const
+{
+  PairMotion<S> motion;
+  return pairMayMeet(a, b, records, out, motion) && solvePair(motion, out);
+}
+
+template <typename S>
+Event<S> CandidateFinder<S>::eventOf(const TableState<S>& state, const Candidate<S>& c) const
+{
+  Event<S> e;
+  e.time = c.time;
+  e.ball = state.balls[c.ball].id;
+  switch (c.rank)
+  {
+    case Candidate<S>::Unsolved:
+    case Candidate<S>::Renewal:
+      break;
+    case Candidate<S>::Transition: {
+      // Which transition it is follows from applying it to a copy.
+      Ball<S> copy = evolve(state.balls[c.ball], c.time, params_);
+      e.kind = applyTransition(copy, params_);
+      break;
+    }
+    case Candidate<S>::Segment:
+      e.kind = EventKind::BallCushion;
+      e.obstacle = c.obstacle;
+      break;
+    case Candidate<S>::Circle:
+      e.kind = EventKind::BallCircle;
+      e.obstacle = c.obstacle;
+      break;
+    case Candidate<S>::Pocket:
+      e.kind = EventKind::Pocketed;
+      e.obstacle = c.obstacle;
+      break;
+    case Candidate<S>::Pair:
+      e.kind = EventKind::BallBall;
+      e.other = state.balls[c.other].id;
+      break;
+  }
+  return e;
+}
+
+template struct PairMotion<double>;
+template struct PairMotion<long double>;
+template class CandidateFinder<double>;
+template class CandidateFinder<long double>;
+
+}  // namespace physics
+}  // namespace cue_sim
