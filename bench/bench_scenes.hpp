@@ -15,6 +15,7 @@
 #include "cue_sim/physics/engine.hpp"
 #include "cue_sim/physics/motion.hpp"
 #include "cue_sim/physics/rack.hpp"
+#include "cue_sim/physics/simulation.hpp"
 
 namespace cue_sim
 {
@@ -198,6 +199,41 @@ inline const std::map<std::string, std::function<BenchScene()>>& benchScenes()
       {"scaling_1024", [] { return scaling(1024, 1024); }},
   };
   return scenes;
+}
+
+/// The stepped runs: a scene advanced in steps of 1/rate s until it rests, as the node's tick
+/// advances the live table (`<scene>_stepped_<rate>Hz`).
+inline const std::map<std::string, std::pair<std::string, double>>& steppedRuns()
+{
+  static const std::map<std::string, std::pair<std::string, double>> runs = {
+      {"eight_ball_break_stepped_100Hz", {"eight_ball_break", 100.0}},
+      {"eight_ball_break_stepped_1000Hz", {"eight_ball_break", 1000.0}},
+  };
+  return runs;
+}
+
+/// Runs the scene's state to rest: in one call (rate 0), or advanced in steps of 1/rate s.
+/// Returns whether it came to rest; its events are appended to `events`.
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+inline bool
+runScene(const BenchScene& scene, TableState<double>& state, double rate, std::vector<Event<double>>& events)
+{
+  if (rate == 0)
+  {
+    ShotResult<double> result = scene.engine->simulateToRest(state);
+    events.insert(events.end(), result.events.begin(), result.events.end());
+    return result.at_rest;
+  }
+  Simulation<double> simulation(*scene.engine, std::move(state));
+  const double start = simulation.time(), period = 1.0 / rate;
+  const double end = start + scene.engine->limits().max_shot_time;
+  for (long k = 1; !simulation.atRest() && simulation.time() < end; ++k)
+    simulation.advance(start + static_cast<double>(k) * period, &events);
+  const bool at_rest = simulation.atRest();
+  state = std::move(simulation).release();
+  return at_rest;
 }
 
 inline BenchScene benchScene(const std::string& name)

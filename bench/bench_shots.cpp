@@ -44,24 +44,29 @@ void BatchOfEightBallBreaks(benchmark::State& bench)
 BENCHMARK(BatchOfEightBallBreaks)->ArgName("threads")->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 /// Runs the scenes in turn (or one scene, replayed), each from its own copy of its start, copied
-/// into the same storage every time as a planner would reuse it; reports the time per event.
-void runInTurn(benchmark::State& bench, const std::vector<BenchScene>& scenes)
+/// into the same storage every time as a planner would reuse it, to rest in one call or advanced
+/// in steps of 1/rate s (runScene); reports the time per event.
+void runInTurn(benchmark::State& bench, const std::vector<BenchScene>& scenes, double rate = 0)
 {
   std::vector<TableState<double>> states(scenes.size());
-  std::size_t events = 0, shots = 0;
+  std::vector<Event<double>> events;
+  std::size_t event_count = 0, shots = 0;
   for (auto _ : bench)
     for (std::size_t k = 0; k < scenes.size(); ++k)
     {
       states[k] = scenes[k].state;
-      events += scenes[k].engine->simulateToRest(states[k]).events.size();
+      events.clear();
+      runScene(scenes[k], states[k], rate, events);
+      event_count += events.size();
       ++shots;
     }
   bench.counters["balls"] = static_cast<double>(scenes.front().state.balls.size());
   bench.counters["scenes"] = static_cast<double>(scenes.size());
-  bench.counters["events_per_shot"] = static_cast<double>(events) / static_cast<double>(shots);
+  bench.counters["events_per_shot"] = static_cast<double>(event_count) / static_cast<double>(shots);
   bench.counters["time_per_event"] =
-      benchmark::Counter(static_cast<double>(events), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-  bench.counters["events_per_second"] = benchmark::Counter(static_cast<double>(events), benchmark::Counter::kIsRate);
+      benchmark::Counter(static_cast<double>(event_count), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  bench.counters["events_per_second"] =
+      benchmark::Counter(static_cast<double>(event_count), benchmark::Counter::kIsRate);
 }
 
 /// The scaling series over distinct scenes in turn (distinctScalingScenes): the time per event
@@ -95,6 +100,12 @@ const int registered = [] {
   for (const auto& [name, build] : benchScenes())
     benchmark::RegisterBenchmark(name.c_str(), [name = name](benchmark::State& s) {
       runInTurn(s, {benchScene(name)});  // one scene, replayed
+    })->Unit(benchmark::kMicrosecond);
+  // Beside the 8-ball break run to rest: the same break advanced as the node's tick advances the
+  // live table, at 100 Hz and 1 kHz.
+  for (const auto& [name, run] : steppedRuns())
+    benchmark::RegisterBenchmark(name.c_str(), [run = run](benchmark::State& s) {
+      runInTurn(s, {benchScene(run.first)}, run.second);
     })->Unit(benchmark::kMicrosecond);
   return 0;
 }();

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Instruction counts per shot of every bench scene, under callgrind: unlike wall time, they do
-# not change with the machine's load. Only Engine::simulateToRest is counted (not set-up).
+# not change with the machine's load. Only the run is counted (runScene: not the set-up).
 #   scripts/callgrind_shots.sh [SCENE...]      (all scenes if none given)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/env.sh"
@@ -19,7 +19,7 @@ printf '| scene | balls | events | instructions per shot | instructions per even
 for scene in "${scenes[@]}"; do
   # LD_BIND_NOW: symbols are bound at start-up, not counted in the first shot.
   summary=$(LD_BIND_NOW=1 valgrind --tool=callgrind --callgrind-out-file="$out/$scene.out" \
-    --toggle-collect='cue_sim::physics::Engine<double>::simulateToRest*' "$program" "$scene" 2>"$out/$scene.log")
+    --toggle-collect='cue_sim::bench::runScene*' "$program" "$scene" 2>"$out/$scene.log")
   refs=$(sed -n 's/.*refs: *\([0-9,]*\).*/\1/p' "$out/$scene.log" | tr -d ,)
   balls=$(sed -n 's/.*: \([0-9]*\) balls, .*/\1/p' <<<"$summary")
   events=$(sed -n 's/.* balls, \([0-9]*\) events.*/\1/p' <<<"$summary")

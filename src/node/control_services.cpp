@@ -99,7 +99,7 @@ bool TableNode::onSetState(SetState::Request& request, SetState::Response& respo
   const ros::Time stamp = ros::Time::now();
   catchUp(stamp);
   clock_.restart(stamp);
-  state_ = state;  // every ball at time 0: now
+  live_->reset(state);  // every ball at time 0: now
   snapshot_at_rest_ = false;
   response.stamp = stamp;
   publishMarkers();

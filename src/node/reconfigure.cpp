@@ -8,7 +8,8 @@
 
 namespace cue_sim
 {
-std::string TableNode::engineFor(const TableNodeConfig& config, std::unique_ptr<physics::Engine<double>>& engine) const
+std::string TableNode::engineFor(const TableNodeConfig& config,
+                                 std::shared_ptr<const physics::Engine<double>>& engine) const
 {
   dynamic_reconfigure::Config message;
   config.__toMessage__(message);
@@ -25,14 +26,14 @@ std::string TableNode::engineFor(const TableNodeConfig& config, std::unique_ptr<
   models.cushion = config.cushion_model;
   try
   {
-    engine = std::make_unique<physics::Engine<double>>(table_, params, models, engine_->limits());
+    engine = std::make_shared<const physics::Engine<double>>(table_, params, models, engine_->limits());
   }
   catch (const std::exception& e)
   {
     return e.what();
   }
   // A larger ball must still fit where the balls are.
-  why = engine->whyInvalid(state_);
+  why = engine->whyInvalid(live_->state());
   if (!why.empty())
     return "the balls on the table would not fit: " + why;
   return "";
@@ -52,7 +53,7 @@ void TableNode::onReconfigure(TableNodeConfig& config, uint32_t level)
     if (!sim_time_ && !paused_)
       clock_.setRate(ros::Time::now(), config_.real_time_factor);
   }
-  std::unique_ptr<physics::Engine<double>> engine;
+  std::shared_ptr<const physics::Engine<double>> engine;
   const std::string why = engineFor(config, engine);
   if (!why.empty())
   {
@@ -72,9 +73,10 @@ void TableNode::onReconfigure(TableNodeConfig& config, uint32_t level)
 
 void TableNode::applyPendingPhysics()
 {
-  if (!pending_engine_ || state_.anyMoving())
+  if (!pending_engine_ || !live_->atRest())
     return;
   engine_ = std::move(pending_engine_);
+  live_->setEngine(engine_);
   publishMarkers();  // the ball radius or cushion height may have changed
 }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cue_sim/physics/simulation.hpp"
 #include "node/ros_conversions.hpp"
 #include "node/table_markers.hpp"
 
@@ -73,10 +74,11 @@ visualization_msgs::MarkerArray previewMarkers(const physics::Engine<double>& en
     m.color = poolColour(state.balls[i].id);
     m.color.a = 0.9f;
   }
+  physics::Simulation<double> simulation(engine, state);
   for (double t : times)
   {
-    engine.advance(state, t);
-    const auto balls = engine.snapshot(state);
+    simulation.advance(t);
+    const auto balls = simulation.snapshot();
     for (std::size_t i = 0; i < balls.size(); ++i)
       if (balls[i].inPlay())
       {

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "cue_sim/physics/simulation.hpp"
 #include "node/ros_conversions.hpp"
 
 namespace cue_sim
@@ -67,12 +68,12 @@ Prediction predictShot(const physics::Engine<double>& engine, const physics::Tab
       return prediction;
     }
     // Advancing in steps processes the same events as one run: the samples lie on the
-    // prediction's own trajectories.
-    physics::TableState<double> sampled = struck;
+    // prediction's own trajectories, and the search is kept from sample to sample.
+    physics::Simulation<double> sampled(engine, struck);
     for (int k = 0; k < static_cast<int>(count); ++k)
     {
-      engine.advance(sampled, struck.time + k * options.sample_period);
-      prediction.samples.push_back(toTableStateMsg(engine.snapshot(sampled), table, ros::Time(), options.frame_id));
+      sampled.advance(struck.time + k * options.sample_period);
+      prediction.samples.push_back(toTableStateMsg(sampled.snapshot(), table, ros::Time(), options.frame_id));
     }
   }
   prediction.success = true;

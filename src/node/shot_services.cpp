@@ -18,9 +18,9 @@ std::string TableNode::predictionStart(const std::vector<BallState>& balls, phys
   if (balls.empty())
   {
     catchUp(ros::Time::now());
-    if (state_.anyMoving())
+    if (!live_->atRest())
       return "the live table is moving: predict from it once it rests, or pass the balls to start from";
-    start = atTimeZero(state_);
+    start = atTimeZero(live_->state());
     return "";
   }
   std::string why = fromBallStateMsgs(balls, *table_, engine_->params().ball_radius, start);
@@ -43,8 +43,8 @@ void TableNode::strikeLive(const Shot& shot, const ros::Time& stamp, Strike::Res
 {
   response.executed = shot;
   catchUp(stamp);
-  std::string why = engine_->whyNotStrikable(state_, shot.ball_id, toCueStrike(shot));
-  if (why.empty() && state_.anyMoving() && !config_.allow_strike_while_moving)
+  std::string why = live_->whyNotStrikable(shot.ball_id, toCueStrike(shot));
+  if (why.empty() && !live_->atRest() && !config_.allow_strike_while_moving)
     why = "balls are still moving (set ~allow_strike_while_moving to strike anyway)";
   if (!why.empty())
   {
@@ -53,25 +53,26 @@ void TableNode::strikeLive(const Shot& shot, const ros::Time& stamp, Strike::Res
     return;
   }
   // A strike from rest starts at physics time 0, like a prediction.
-  if (!state_.anyMoving())
+  if (live_->atRest())
     rebaseAtRest(stamp);
   const physics::CueStrike<double> executed = live_cue_.execute(toCueStrike(shot), engine_->params().ball_radius);
   response.executed = toShotMsg(shot.ball_id, executed);
   // Run the shot to rest on a copy first: it answers the request, and a shot the engine
   // cannot finish is refused before it touches the table.
-  Prediction prediction = predictShot(*engine_, state_, response.executed, {0, nullptr, 0, config_.table_frame});
+  Prediction prediction =
+      predictShot(*engine_, live_->state(), response.executed, {0, nullptr, 0, config_.table_frame});
   if (!prediction.success)
   {
     response.success = false;
     response.message = prediction.message;
     return;
   }
-  const physics::Ball<double> before = engine_->snapshot(state_)[state_.indexOf(shot.ball_id)];
+  const physics::Ball<double> before = live_->snapshot()[live_->state().indexOf(shot.ball_id)];
   cue_publisher_.publish(cueStickMarker(physics::cueStickFor(before, executed, engine_->params(), 0.005),
                                         config_.table_frame, stamp, 1.5));
-  engine_->strike(state_, shot.ball_id, executed);
+  live_->strike(shot.ball_id, executed);
   snapshot_at_rest_ = false;
-  const physics::Ball<double>& ball = state_.balls[state_.indexOf(shot.ball_id)];
+  const physics::Ball<double>& ball = live_->state().balls[live_->state().indexOf(shot.ball_id)];
   response.ball_velocity = toVector3(ball.v);
   response.ball_angular_velocity = toVector3(ball.w);
   response.success = true;
@@ -128,7 +129,7 @@ bool TableNode::onStrikeCue(StrikeCue::Request& request, StrikeCue::Response& re
     return true;
   catchUp(stamp);
   physics::CueAim aim;
-  response.message = physics::aimCue(engine_->snapshot(state_), engine_->params(), cue, request.speed, aim);
+  response.message = physics::aimCue(live_->snapshot(), engine_->params(), cue, request.speed, aim);
   if (!response.message.empty())
     return true;
   response.shot = toShotMsg(aim.ball_id, aim.strike);

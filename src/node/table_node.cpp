@@ -91,7 +91,7 @@ TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
   private_node.param("cushion_model", models.cushion, models.cushion);
 
   loadTable(node, private_node);
-  engine_ = std::make_unique<physics::Engine<double>>(table_, params, models);  // throws for unknown models
+  engine_ = std::make_shared<const physics::Engine<double>>(table_, params, models);  // throws for unknown models
 
   PhysicsState rack;
   try
@@ -122,6 +122,7 @@ TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
     ros::Time::setNow(sim_now_);
   }
   pool_ = std::make_unique<physics::ThreadPool>();
+  live_.emplace(engine_, physics::TableState<double>());
   if (!sim_time_)
     clock_.setRate(ros::Time::now(), paused_ ? 0 : config_.real_time_factor);
   setRack(rack, ros::Time::now());
@@ -226,23 +227,25 @@ void TableNode::publishStaticFrames(const std::string& urdf_xml)
 
 double TableNode::catchUp(const ros::Time& stamp)
 {
-  const double now = std::max(clock_.at(stamp), state_.time);
-  if (!state_.anyMoving())
+  const double now = std::max(clock_.at(stamp), live_->time());
+  if (live_->atRest())
   {
-    state_.time = now;  // nothing moves: no physics to do
+    live_->advance(now);  // nothing moves: no physics to do
     applyPendingPhysics();
     return now;
   }
   std::vector<physics::Event<double>> events;
   try
   {
-    engine_->advance(state_, now, &events);
+    live_->advance(now, &events);
   }
   catch (const physics::EventLimitError& e)
   {
     // Not reachable for strikes (they are simulated to rest first); kept so that the node
-    // never dies on a pathological state. The state is left at its last event.
+    // never dies on a pathological state. The state is left at its last event, and the shot
+    // goes on with a new allowance of events at the next tick.
     ROS_ERROR_THROTTLE(1.0, "cue_sim: %s", e.what());
+    live_->reset(live_->state());
   }
   for (const auto& e : events)
     event_publisher_.publish(toEventMsg(e, *table_, clock_.stampOf(e.time, stamp), e.time));
@@ -253,7 +256,7 @@ double TableNode::catchUp(const ros::Time& stamp)
 void TableNode::rebaseAtRest(const ros::Time& stamp)
 {
   clock_.restart(stamp);
-  state_ = atTimeZero(state_);
+  live_->reset(atTimeZero(live_->state()));
 }
 
 void TableNode::run()
@@ -306,12 +309,12 @@ void TableNode::tick(const ros::Time& stamp)
     return;  // tf must never see the same stamp twice (TF_REPEATED_DATA)
   catchUp(stamp);
   // Balls at rest are where they were: no physics at all until something moves them.
-  if (state_.anyMoving() || !snapshot_at_rest_)
+  if (!live_->atRest() || !snapshot_at_rest_)
   {
-    snapshot_ = engine_->snapshot(state_);
-    snapshot_at_rest_ = !state_.anyMoving();
+    snapshot_ = live_->snapshot();
+    snapshot_at_rest_ = live_->atRest();
     // The aim marker waits at the cue ball once everything rests.
-    const int cue = state_.indexOf(0);
+    const int cue = live_->state().indexOf(0);
     if (snapshot_at_rest_ && aim_marker_ && cue >= 0 && snapshot_[cue].inPlay())
       aim_marker_->place(snapshot_[cue].r.head<2>());
   }
@@ -329,7 +332,7 @@ void TableNode::tick(const ros::Time& stamp)
 void TableNode::setRack(PhysicsState rack, const ros::Time& stamp)
 {
   clock_.restart(stamp);
-  state_ = atTimeZero(rack);
+  live_->reset(atTimeZero(rack));
   snapshot_at_rest_ = false;
   last_rack_ = rack;
   publishMarkers();
@@ -337,7 +340,7 @@ void TableNode::setRack(PhysicsState rack, const ros::Time& stamp)
 
 void TableNode::publishMarkers()
 {
-  marker_publisher_.publish(tableMarkers(*table_, state_, engine_->params().ball_radius,
+  marker_publisher_.publish(tableMarkers(*table_, live_->state(), engine_->params().ball_radius,
                                          engine_->params().cushion_height,
                                          {config_.table_frame, config_.ball_frame_prefix}));
 }

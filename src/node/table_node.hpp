@@ -28,6 +28,7 @@
 #include "cue_sim/physics/cue_aim.hpp"
 #include "cue_sim/physics/engine.hpp"
 #include "cue_sim/physics/execution_noise.hpp"
+#include "cue_sim/physics/simulation.hpp"
 #include "cue_sim/physics/thread_pool.hpp"
 #include "node/aim_marker.hpp"
 #include "node/physics_clock.hpp"
@@ -99,7 +100,7 @@ private:
   void onReconfigure(TableNodeConfig& config, uint32_t level);
   /// Empty if the coefficients and models of `config` make a valid engine for the balls on the
   /// table, which it then builds into `engine`; else why not.
-  std::string engineFor(const TableNodeConfig& config, std::unique_ptr<physics::Engine<double>>& engine) const;
+  std::string engineFor(const TableNodeConfig& config, std::shared_ptr<const physics::Engine<double>>& engine) const;
   void applyPendingPhysics();
 
   // Simulation control (control_services.cpp).
@@ -111,8 +112,9 @@ private:
 
   Config config_;
   std::shared_ptr<const physics::TableModel> table_;
-  std::unique_ptr<physics::Engine<double>> engine_;
-  physics::TableState<double> state_;
+  std::shared_ptr<const physics::Engine<double>> engine_;
+  /// The live table: its state and the event search kept from tick to tick.
+  std::optional<physics::Simulation<double>> live_;
   physics::TableState<double> last_rack_;
   std::vector<physics::Ball<double>> snapshot_;  ///< the balls as last published
   bool snapshot_at_rest_ = false;                ///< and nothing has moved since
@@ -137,9 +139,9 @@ private:
   ros::Publisher clock_publisher_;
   std::vector<ros::ServiceServer> services_;
   std::unique_ptr<dynamic_reconfigure::Server<TableNodeConfig>> reconfigure_;
-  std::unique_ptr<AimMarker> aim_marker_;                    ///< rviz: aim and fire at the cue ball
-  TableNodeConfig applied_config_;                           ///< the last valid configuration
-  std::unique_ptr<physics::Engine<double>> pending_engine_;  ///< waiting for the balls to rest
+  std::unique_ptr<AimMarker> aim_marker_;                          ///< rviz: aim and fire at the cue ball
+  TableNodeConfig applied_config_;                                 ///< the last valid configuration
+  std::shared_ptr<const physics::Engine<double>> pending_engine_;  ///< waiting for the balls to rest
 };
 
 }  // namespace cue_sim

@@ -2,8 +2,9 @@
 //   rosrun cue_sim simulate scene.yaml      (or devel/lib/cue_sim/simulate scene.yaml)
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <optional>
 
-#include "cue_sim/physics/engine.hpp"
+#include "cue_sim/physics/simulation.hpp"
 #include "cue_sim/scene/scene_file.hpp"
 #include "cue_sim/scene/shot_report.hpp"
 
@@ -13,9 +14,13 @@ int main(int argc, char** argv)
   std::string scene_path;
   int indent = 2;
   long max_events = cue_sim::physics::EngineLimits().max_events;
+  std::optional<double> duration;
   app.add_option("scene", scene_path, "scene file (YAML; format in README.md, 'Scene files'); - for stdin")->required();
   app.add_option("--indent", indent, "JSON indentation, -1 for one line");
   app.add_option("--max-events", max_events, "give up after this many events")->check(CLI::PositiveNumber);
+  app.add_option("--duration", duration,
+                 "advance this many seconds [s] instead of running to rest (instead of the scene's duration)")
+      ->check(CLI::Range(0.0, 1e6));
   CLI11_PARSE(app, argc, argv);
 
   try
@@ -34,26 +39,21 @@ int main(int argc, char** argv)
     const std::string invalid = engine.whyInvalid(scene.state);
     if (!invalid.empty())
       throw cue_sim::SceneError("balls: " + invalid);
+    cue_sim::physics::Simulation<double> simulation(engine, scene.state);
     if (scene.shot)
     {
-      const std::string why = engine.whyNotStrikable(scene.state, scene.shot->ball, scene.shot->strike);
+      const std::string why = simulation.whyNotStrikable(scene.shot->ball, scene.shot->strike);
       if (!why.empty())
         throw cue_sim::SceneError("shot: " + why);
-      engine.strike(scene.state, scene.shot->ball, scene.shot->strike);
+      simulation.strike(scene.shot->ball, scene.shot->strike);
     }
     std::vector<cue_sim::physics::Event<double>> events;
-    bool at_rest;
-    if (scene.duration)
-    {
-      engine.advance(scene.state, *scene.duration, &events);
-      at_rest = !scene.state.anyMoving();
-    }
+    if (duration || scene.duration)
+      simulation.advance(simulation.time() + duration.value_or(scene.duration.value_or(0)), &events);
     else
-    {
-      auto result = engine.simulateToRest(scene.state);
-      events = std::move(result.events);
-      at_rest = result.at_rest;
-    }
+      events = simulation.runToRest().events;
+    scene.state = simulation.state();
+    const bool at_rest = simulation.atRest();
     std::cout << cue_sim::shotReport(engine, scene.state, events, at_rest).dump(indent) << std::endl;
     return 0;
   }
