@@ -223,7 +223,10 @@ runScene(const BenchScene& scene, TableState<double>& state, double rate, std::v
   if (rate == 0)
   {
     ShotResult<double> result = scene.engine->simulateToRest(state);
-    events.insert(events.end(), result.events.begin(), result.events.end());
+    if (events.empty())
+      events.swap(result.events);
+    else
+      events.insert(events.end(), result.events.begin(), result.events.end());
     return result.at_rest;
   }
   Simulation<double> simulation(*scene.engine, std::move(state));

@@ -32,9 +32,11 @@ public:
       std::sort(out.begin(), out.end());
       return;
     }
-    const BallRecords<S>& records = search_.records_;
-    for (int o = 0; o < static_cast<int>(state_.balls.size()); ++o)
-      if (state_.balls[o].inPlay() && !(records[o].low.array() > high.array()).any() &&
+    const BallRecord<S>* const records = search_.records_.data();
+    const Ball<S>* const balls = state_.balls.data();
+    const int n = static_cast<int>(state_.balls.size());
+    for (int o = 0; o < n; ++o)
+      if (balls[o].inPlay() && !(records[o].low.array() > high.array()).any() &&
           !(low.array() > records[o].high.array()).any())
         out.push_back(o);
   }
@@ -282,10 +284,13 @@ void EventSearch<S>::visitNear(int k, const Visit& visit)
     return;
   }
   const S x0 = record.low.x(), y0 = record.low.y(), x1 = record.high.x(), y1 = record.high.y();
-  for (int o = 0; o < static_cast<int>(records_.size()); ++o)
+  // Read once: visiting files candidates, which the compiler cannot tell from changing the records.
+  const BallRecord<S>* const records = records_.data();
+  const int n = static_cast<int>(records_.size());
+  for (int o = 0; o < n; ++o)
   {
-    const Vec2<S>& low = records_[o].low;
-    const Vec2<S>& high = records_[o].high;
+    const Vec2<S>& low = records[o].low;
+    const Vec2<S>& high = records[o].high;
     if (o != k && !(low.x() > x1 || x0 > high.x() || low.y() > y1 || y0 > high.y()))  // NaN never culls
       visit(o);
   }
