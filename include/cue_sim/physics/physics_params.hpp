@@ -73,14 +73,19 @@ namespace cue_sim
 {
 namespace physics
 {
-/// One coefficient by name, as scene files and ROS parameters spell it (config/physics.yaml).
+/// One coefficient, declared once: its name as scene files and ROS parameters spell it
+/// (config/physics.yaml), its unit, and the range PhysicsParams::validate accepts, with why.
 struct ParamField
 {
   const char* name;
   double PhysicsParams<double>::*member;
+  const char* unit;  ///< "-" for a pure number
+  double min, max;   ///< the accepted range, bounds included; NaN for a range that depends on others
+  const char* range_reason;
 };
 
-/// Every coefficient of PhysicsParams, in the order of config/physics.yaml.
+/// Every coefficient of PhysicsParams, in the order of config/physics.yaml. cushion_height has a
+/// range of its own besides: strictly between R and 2R (validate says why).
 const std::vector<ParamField>& physicsParamFields();
 
 }  // namespace physics

@@ -80,9 +80,22 @@ void EventResolver<S>::resolveWall(Ball<S>& ball, const Event<S>& event)
                         : (ball.r.template head<2>() - geometry_.circles[event.obstacle].centre).normalized();
   const Vec3<S> normal(n.x(), n.y(), S(0));
   const Vec3<S> v_before = ball.v, w_before = ball.w;
-  engine_.cushionModel().resolve(ball, normal, params_);
-  settleMotion(ball, params_.ball_radius);
-  holdAgainstWall(ball, normal);
+  // A ball the model's impulse leaves still closing on the wall meets it again at once: the
+  // impulses follow one another within the event (a nose near the ball's top, or little
+  // restitution, takes a few), and what a bounded number of them leaves the wall stops.
+  for (int impulse = 0; impulse == 0 || (impulse < kMaxWallImpulses && ball.v.dot(normal) < -zeroSpeed<S>());
+       ++impulse)
+  {
+    engine_.cushionModel().resolve(ball, normal, params_);
+    settleMotion(ball, params_.ball_radius);
+    holdAgainstWall(ball, normal);
+  }
+  if (ball.v.dot(normal) < -zeroSpeed<S>())
+  {
+    ball.v -= ball.v.dot(normal) * normal;
+    settleMotion(ball, params_.ball_radius);
+    holdAgainstWall(ball, normal);
+  }
   if (ball.v == v_before && ball.w == w_before)
   {
     // Found approaching or pressing by the gap polynomial but by neither the model nor the
