@@ -171,7 +171,15 @@ EventKind applyTransition(Ball<S>& ball, const PhysicsParams<S>& p)
   switch (ball.motion)
   {
     case Motion::Sliding: {
-      // The slip has just reached zero: the ball rolls with whatever velocity it has.
+      // The slip has reached zero, to within the rounding of the time it does so at: a slip of
+      // ulp(t) times its deceleration 7/2 mu_s g, which stiff friction late in a long shot makes
+      // far larger than the rounding of the speeds. That remainder is removed as the cloth's
+      // friction removes slip, by the impulse -(2/7) m u at the contact point (the slip changes by
+      // 7/2 of J/m on a solid sphere): it ends the slip, and it cannot add energy.
+      const Vec3<S> u = slipVelocity(ball.v, ball.w, R);
+      ball.v -= (S(2) / S(7)) * u;
+      ball.w += (S(5) / (S(7) * R)) * Vec3<S>::UnitZ().cross(u);
+      // The ball rolls with the velocity it has.
       const bool translating = ball.v.norm() > zeroSpeed<S>();
       if (translating)
       {
