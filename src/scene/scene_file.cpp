@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -90,16 +91,28 @@ physics::Ball<double> ballFrom(const YAML::Node& node, double radius)
   onlyKeys(node, "balls", {"id", "position", "velocity", "angular_velocity"});
   if (!node["id"] || !node["position"])
     throw SceneError("every ball needs 'id' and 'position' ([x, y] in metres)");
-  physics::Ball<double> b;
-  b.id = node["id"].as<int>();
-  const Eigen::Vector2d xy = vector<2>(node["position"], "position");
-  b.r = Eigen::Vector3d(xy.x(), xy.y(), radius);
-  if (node["velocity"])
-    b.v.head<2>() = vector<2>(node["velocity"], "velocity");
-  if (node["angular_velocity"])
-    b.w = vector<3>(node["angular_velocity"], "angular_velocity");
-  physics::settleMotion(b, radius);
-  return b;
+  return sceneBall(
+      node["id"].as<int>(), vector<2>(node["position"], "position"),
+      node["velocity"] ? vector<2>(node["velocity"], "velocity") : Eigen::Vector2d::Zero(),
+      node["angular_velocity"] ? vector<3>(node["angular_velocity"], "angular_velocity") : Eigen::Vector3d::Zero(),
+      radius);
+}
+
+/// A number written so that reading it back gives it exactly.
+std::string exact(double x)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", x);
+  return text;
+}
+
+template <typename Vector>
+std::string exactList(const Vector& v)
+{
+  std::string out = "[";
+  for (int i = 0; i < v.size(); ++i)
+    out += (i ? ", " : "") + exact(v[i]);
+  return out + "]";
 }
 }  // namespace
 
@@ -127,8 +140,9 @@ Scene loadScene(const std::string& yaml_text)
     Scene scene;
     if (root["physics"])
       applyPhysicsNode(root["physics"], scene.params, scene.models);
-    const std::string table = root["table"] ? root["table"].as<std::string>() : "7ft";
-    scene.table = std::make_shared<const physics::TableModel>(tableFromUrdfFile(tableUrdfPath(table)));
+    if (root["table"])
+      scene.table_name = root["table"].as<std::string>();
+    scene.table = std::make_shared<const physics::TableModel>(tableFromUrdfFile(tableUrdfPath(scene.table_name)));
     const double R = scene.params.ball_radius;
     if (root["rack"])
     {
@@ -190,6 +204,45 @@ Scene loadScene(const std::string& yaml_text)
   {
     throw SceneError(std::string("table: ") + e.what());
   }
+}
+
+physics::Ball<double> sceneBall(int id, const Eigen::Vector2d& position, const Eigen::Vector2d& velocity,
+                                const Eigen::Vector3d& angular_velocity, double radius)
+{
+  physics::Ball<double> b;
+  b.id = id;
+  b.r = Eigen::Vector3d(position.x(), position.y(), radius);
+  b.v.head<2>() = velocity;
+  b.w = angular_velocity;
+  physics::settleMotion(b, radius);
+  return b;
+}
+
+std::string sceneYaml(const Scene& scene, const std::string& comment)
+{
+  std::ostringstream out;
+  std::istringstream lines(comment);
+  for (std::string line; std::getline(lines, line);)
+    out << "# " << line << "\n";
+  out << "table: " << YAML::Node(scene.table_name) << "\n";
+  out << "physics:\n";
+  for (const auto& field : physics::physicsParamFields())
+    out << "  " << field.name << ": " << exact(scene.params.*field.member) << "\n";
+  out << "  ball_ball_model: " << scene.models.ball_ball << "\n";
+  out << "  cushion_model: " << scene.models.cushion << "\n";
+  out << "balls:\n";
+  for (const auto& b : scene.state.balls)
+    out << "  - {id: " << b.id << ", position: " << exactList(b.r.head<2>())
+        << ", velocity: " << exactList(b.v.head<2>()) << ", angular_velocity: " << exactList(b.w) << "}\n";
+  if (scene.shot)
+  {
+    const auto& s = scene.shot->strike;
+    out << "shot: {ball: " << scene.shot->ball << ", speed: " << exact(s.speed) << ", phi: " << exact(s.phi)
+        << ", theta: " << exact(s.theta) << ", a: " << exact(s.a) << ", b: " << exact(s.b) << "}\n";
+  }
+  if (scene.duration)
+    out << "duration: " << exact(*scene.duration) << "\n";
+  return out.str();
 }
 
 Scene loadSceneFile(const std::string& path)

@@ -30,6 +30,7 @@ struct Shot
 
 struct Scene
 {
+  std::string table_name = "7ft";  ///< as the scene names it: a bundled table or a URDF file
   std::shared_ptr<const physics::TableModel> table;
   physics::PhysicsParams<double> params;
   physics::ModelChoice models;
@@ -45,5 +46,15 @@ void applyPhysicsYaml(const std::string& yaml_text, physics::PhysicsParams<doubl
 
 Scene loadScene(const std::string& yaml_text);
 Scene loadSceneFile(const std::string& path);
+
+/// A ball as a scene file places it: its centre at `position` on the cloth, with a velocity
+/// along it and a spin; its motion state follows from them.
+physics::Ball<double> sceneBall(int id, const Eigen::Vector2d& position, const Eigen::Vector2d& velocity,
+                                const Eigen::Vector3d& angular_velocity, double radius);
+
+/// The scene as a scene file that loads back to exactly this scene: the table by its name, every
+/// coefficient and model, every ball and the shot, each number to 17 significant digits (the
+/// rack, if any, written out ball by ball). `comment` heads it, each line after '# '.
+std::string sceneYaml(const Scene& scene, const std::string& comment = "");
 
 }  // namespace cue_sim

@@ -80,22 +80,9 @@ void EventResolver<S>::resolveWall(Ball<S>& ball, const Event<S>& event)
                         : (ball.r.template head<2>() - geometry_.circles[event.obstacle].centre).normalized();
   const Vec3<S> normal(n.x(), n.y(), S(0));
   const Vec3<S> v_before = ball.v, w_before = ball.w;
-  // A ball the model's impulse leaves still closing on the wall meets it again at once: the
-  // impulses follow one another within the event (a nose near the ball's top, or little
-  // restitution, takes a few), and what a bounded number of them leaves the wall stops.
-  for (int impulse = 0; impulse == 0 || (impulse < kMaxWallImpulses && ball.v.dot(normal) < -zeroSpeed<S>());
-       ++impulse)
-  {
-    engine_.cushionModel().resolve(ball, normal, params_);
-    settleMotion(ball, params_.ball_radius);
-    holdAgainstWall(ball, normal);
-  }
-  if (ball.v.dot(normal) < -zeroSpeed<S>())
-  {
-    ball.v -= ball.v.dot(normal) * normal;
-    settleMotion(ball, params_.ball_radius);
-    holdAgainstWall(ball, normal);
-  }
+  wallImpact(ball, normal);
+  settleMotion(ball, params_.ball_radius);
+  holdAgainstWall(ball, normal);
   if (ball.v == v_before && ball.w == w_before)
   {
     // Found approaching or pressing by the gap polynomial but by neither the model nor the
@@ -104,6 +91,18 @@ void EventResolver<S>::resolveWall(Ball<S>& ball, const Event<S>& event)
     ball.v += roundingSpeed(ball.v.norm()) * normal;
     settleMotion(ball, params_.ball_radius);
   }
+}
+
+template <typename S>
+void EventResolver<S>::wallImpact(Ball<S>& ball, const Vec3<S>& normal) const
+{
+  // A ball the model's impulse leaves still closing on the wall meets it again at once: the
+  // impulses follow one another (a nose near the ball's top, or little restitution, takes a
+  // few), and what a bounded number of them leaves, the wall stops.
+  for (int impulse = 0; impulse == 0 || (impulse < kMaxWallImpulses && ball.v.dot(normal) < -zeroSpeed<S>()); ++impulse)
+    engine_.cushionModel().resolve(ball, normal, params_);
+  if (ball.v.dot(normal) < -zeroSpeed<S>())
+    ball.v -= ball.v.dot(normal) * normal;
 }
 
 template <typename S>
@@ -123,6 +122,9 @@ void EventResolver<S>::pocketBall(Ball<S>& ball, int pocket)
   ball.w.setZero();
 }
 
+// Used by the impact group's sweep too (impact_group.cpp).
+template void EventResolver<double>::wallImpact(Ball<double>&, const Vec3<double>&) const;
+template void EventResolver<long double>::wallImpact(Ball<long double>&, const Vec3<long double>&) const;
 template void resolveEvent(const Engine<double>&, TableState<double>&, const Event<double>&,
                            const EventContext<double>&);
 template void resolveEvent(const Engine<long double>&, TableState<long double>&, const Event<long double>&,

@@ -53,6 +53,10 @@ public:
 private:
   void resolveBallBall(const Event<S>& event);
   void resolveWall(Ball<S>& ball, const Event<S>& event);
+  /// The cushion model's impulses on a ball closing on a wall (`normal` into play), until it no
+  /// longer closes; what kMaxWallImpulses of them leave of its motion into the wall, the wall
+  /// stops.
+  void wallImpact(Ball<S>& ball, const Vec3<S>& normal) const;
   void pocketBall(Ball<S>& ball, int pocket);
   void changed(int index)
   {

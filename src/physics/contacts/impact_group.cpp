@@ -114,7 +114,7 @@ bool EventResolver<S>::resolveImpactGroup(S time, int first, int second)
       for (const GroupWall<S>& wall : walls)
         if (balls[wall.member].v.dot(wall.normal) < -zeroSpeed<S>())
         {
-          engine_.cushionModel().resolve(balls[wall.member], wall.normal, params_);
+          wallImpact(balls[wall.member], wall.normal);
           any = true;
         }
       if (!any)

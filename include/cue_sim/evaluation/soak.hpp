@@ -1,0 +1,84 @@
+// The soak campaign: random scenes on every bundled table, in every model, with every coefficient
+// across its whole accepted range and 1 to 200 balls, each run three ways and checked at every
+// event (README, "Soak campaign"). Scene k of a campaign depends on (seed, k) alone, so any shot
+// can be made again, and each violation is written as a scene file that reproduces it.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "cue_sim/scene/scene_file.hpp"
+
+namespace cue_sim
+{
+namespace evaluation
+{
+/// The limits a campaign's shots run under: long enough for any shot to play out, and an event
+/// allowance no real shot comes near (a break has a few hundred events; 200 balls at a tenth of
+/// the Earth's gravity a few thousand).
+struct SoakLimits
+{
+  static constexpr double max_shot_time = 20.0;  ///< [s]
+  static constexpr long max_events = 200000;
+};
+
+/// What a shot broke, and where.
+struct Violation
+{
+  /// nan, overlap, off_table (in a cushion, jaw or pocket, or off the playing area), energy_gain,
+  /// not_repeatable (advanced in steps, or copied mid-shot, it did not give the same events and
+  /// state bit for bit), scan_mismatch (the kept search and the full scan of every ball and pair
+  /// disagree), event_limit, invalid_start (the campaign made a scene validation refuses), error
+  /// (anything thrown).
+  std::string kind;
+  std::string detail;
+};
+
+/// Scene k of the campaign with this seed.
+Scene soakScene(std::uint64_t seed, long k);
+
+struct SceneCheck
+{
+  std::vector<Violation> violations;  ///< the first of each kind
+  long events = 0;
+  bool at_rest = false;
+  bool scanned = false;  ///< whether the full scan was compared
+};
+
+/// Runs the scene (struck, if it has a shot) event by event, checking after every event and at
+/// the end that no number is NaN, no ball overlaps another or a cushion, jaw or pocket by more
+/// than 1e-9 m or is off the playing area, and the kinetic energy has not grown (1e-12 of it);
+/// then again advanced in uneven steps and copied mid-shot, which must give the same events and
+/// final state bit for bit; then, if `full_scan`, by the full scan of every ball and pair, which
+/// must too.
+SceneCheck checkScene(const Scene& scene, bool full_scan);
+
+struct SoakOptions
+{
+  std::uint64_t seed = 1;
+  long first = 0;            ///< the first shot's number
+  long shots = 1000;         ///< how many
+  unsigned threads = 0;      ///< 0: every core
+  std::string out_dir;       ///< where violations are written as scene files (created if needed)
+  long full_scan_every = 4;  ///< the full scan on every this many shots of more than 40 balls (all smaller ones)
+};
+
+struct SoakSummary
+{
+  long shots = 0, events = 0, scanned = 0, at_rest = 0;
+  std::map<std::string, long> by_table, by_models, by_balls;  ///< shots of each kind
+  std::map<std::string, long> violations;                     ///< by kind
+  /// Each shot that broke something: its number, what, and the scene file that reproduces it.
+  std::vector<std::string> reports;
+  double seconds = 0;
+};
+
+/// Runs shots first to first + shots - 1 on a thread pool. `progress` is called now and then
+/// with the summary so far.
+SoakSummary runSoak(const SoakOptions& options, const std::function<void(const SoakSummary&)>& progress = {});
+
+}  // namespace evaluation
+}  // namespace cue_sim
