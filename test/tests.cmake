@@ -13,6 +13,7 @@ catkin_add_gtest(physics_tests
   test/physics/test_execution_noise.cpp
   test/physics/test_cue_aim.cpp
   test/physics/test_event_search.cpp
+  test/physics/test_simulation.cpp
 )
 target_link_libraries(physics_tests cue_sim_physics gtest_main)
 # The event search's internal structures are tested on their own too.

@@ -46,6 +46,14 @@ struct EngineLimits
   /// a cushion or jaw leaves with a normal speed below this while its slip drives it back in
   /// is held on the wall: the normal speed goes, and the slip into the wall becomes spin.
   double sustained_contact_speed = 1e-4;
+  /// Events at one instant before the touching balls there are taken to have collapsed: balls
+  /// wedged between others and the cushions can take impact after impact at the same instant,
+  /// each changing them by rounding (an inelastic collapse: McNamara and Young 1994). Beyond
+  /// this many, a ball-ball or wall event joins every ball touching its balls into one body (the
+  /// mean of their velocities and spins, held by the walls they touch); beyond twice as many,
+  /// that body stops. Both keep momentum but what the walls take and cannot add energy. A break
+  /// has at most a few dozen events at one instant.
+  long collapse_events = 256;
 };
 
 /// Thrown when a shot reaches EngineLimits::max_events; the state is left at the last event.

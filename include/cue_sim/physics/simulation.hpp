@@ -58,8 +58,9 @@ public:
   /// Advances until no ball moves, or for limits().max_shot_time.
   ShotResult<S> runToRest();
   /// Processes exactly the next event (moving the time on to it) and returns it; an invalid
-  /// event, and no change, if nothing moves.
-  Event<S> step();
+  /// event, and no change to the balls, if nothing moves (or nothing happens within 1e7 s, the
+  /// horizon of the search for motion that never ends), or if it comes after t_end.
+  Event<S> step(S t_end = infinity<S>());
 
   /// Every ball at time().
   std::vector<Ball<S>> snapshot() const { return engine_->snapshot(state_); }

@@ -19,10 +19,24 @@ void resolveEvent(const Engine<S>& engine, TableState<S>& state, const Event<S>&
 template <typename S>
 void EventResolver<S>::resolve(const Event<S>& event)
 {
-  state_.event_time = std::max(state_.event_time, event.time);
+  if (event.time > state_.event_time)
+  {
+    state_.event_time = event.time;
+    state_.events_at_event_time = 0;
+  }
+  const long at_this_instant = ++state_.events_at_event_time;
   Ball<S>& ball = state_.balls[context_.index];
   ball = evolve(ball, event.time, params_);
   changed(context_.index);
+  const long allowance = engine_.limits().collapse_events;
+  if (at_this_instant > allowance && (event.kind == EventKind::BallBall || event.kind == EventKind::BallCushion ||
+                                      event.kind == EventKind::BallCircle))
+  {
+    if (context_.other_index >= 0)
+      state_.balls[context_.other_index] = evolve(state_.balls[context_.other_index], event.time, params_);
+    collapse(event.time, context_.index, context_.other_index, at_this_instant > 2 * allowance);
+    return;
+  }
   switch (event.kind)
   {
     case EventKind::BallBall:

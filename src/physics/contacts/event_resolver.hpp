@@ -72,7 +72,8 @@ private:
   /// Resolves a ball-ball impact together with every ball touching the pair, and the cushions
   /// those balls touch: one impact. Returns whether the pair's velocities changed.
   bool resolveImpactGroup(S time, int first, int second);
-  /// The balls touching the pair, transitively, at `time` (brought to it), the pair first.
+  /// The balls touching the pair (or the ball alone, `second` -1), transitively, at `time`
+  /// (brought to it), the pair first.
   std::vector<int> touchingGroup(S time, int first, int second);
   bool resolveLonePair(int first, int second);
 
@@ -84,6 +85,11 @@ private:
   /// Grows the cluster by one ball that touches it and that the joined velocity `v` leaves
   /// closing on it slower than the sustained-contact speed; false if there is none.
   bool growCluster(S time, const Vec3<S>& v, std::vector<int>& cluster);
+  /// Gives every ball of the cluster the joined motion, held by the walls they touch.
+  void moveAsOne(Ball<S>& joined, const std::vector<int>& cluster);
+  /// Ends an inelastic collapse (EngineLimits::collapse_events): every ball touching the event's
+  /// balls (`second` -1 for a wall event) moves as one body, or stops.
+  void collapse(S time, int first, int second, bool stop);
   /// Unit normals (into play) of the cushions and jaws the ball touches.
   std::vector<Vec3<S>> touchingWalls(const Ball<S>& ball) const;
   /// A sliding ball left on a wall with (almost) no normal speed while its slip drives it back

@@ -17,7 +17,8 @@ std::vector<int> EventResolver<S>::touchingGroup(S time, int first, int second)
   std::vector<int> group;
   group.reserve(8);
   group.push_back(first);
-  group.push_back(second);
+  if (second >= 0)
+    group.push_back(second);
   std::vector<int> own_nearby;
   std::vector<int>& nearby = context_.scratch ? *context_.scratch : own_nearby;
   for (std::size_t k = 0; k < group.size(); ++k)

@@ -86,18 +86,27 @@ void EventResolver<S>::joinPressedCluster(S time, int first, int second)
     v /= S(cluster.size());
     w /= S(cluster.size());
   } while (growCluster(time, v, cluster));
-  // A wall a cluster ball touches holds the whole cluster as it would hold the ball alone: it
-  // stops the joined motion into it (the wall takes momentum), and the cloth friction it
-  // balances turns the slip into it into spin (holdAgainstWall). Done once for the joined
-  // motion, so the cluster's balls keep moving as one.
   Ball<S> joined = state_.balls[first];
   joined.v = v;
   joined.w = w;
+  moveAsOne(joined, cluster);
+}
+
+template <typename S>
+void EventResolver<S>::moveAsOne(Ball<S>& joined, const std::vector<int>& cluster)
+{
+  // A wall a cluster ball touches holds the whole cluster as it would hold the ball alone: it
+  // stops the joined motion into it (the wall takes momentum; a normal speed within rounding
+  // of zero is left, so that walls facing each other do not undo one another), and the cloth
+  // friction it balances turns the slip into it into spin (holdAgainstWall). Done once for the
+  // joined motion, so the cluster's balls keep moving as one.
   settleMotion(joined, params_.ball_radius);
   for (int c : cluster)
     for (const Vec3<S>& normal : touchingWalls(state_.balls[c]))
     {
-      joined.v -= std::min(joined.v.dot(normal), S(0)) * normal;
+      const S into = joined.v.dot(normal);
+      if (into < -zeroSpeed<S>())
+        joined.v -= into * normal;
       settleMotion(joined, params_.ball_radius);
       holdAgainstWall(joined, normal);
     }
@@ -108,6 +117,28 @@ void EventResolver<S>::joinPressedCluster(S time, int first, int second)
     state_.balls[c].motion = joined.motion;
     changed(c);
   }
+}
+
+template <typename S>
+void EventResolver<S>::collapse(S time, int first, int second, bool stop)
+{
+  // Every ball touching the event's balls, transitively, moves as one body from now on, or,
+  // past twice the collapse's allowance of events, stops (keeping its spin about z).
+  const std::vector<int> group = touchingGroup(time, first, second);
+  Ball<S> joined = state_.balls[first];
+  joined.v.setZero();
+  joined.w.setZero();
+  for (int g : group)
+  {
+    joined.v += state_.balls[g].v / S(group.size());
+    joined.w += state_.balls[g].w / S(group.size());
+  }
+  if (stop)
+  {
+    joined.v.setZero();
+    joined.w.x() = joined.w.y() = S(0);
+  }
+  moveAsOne(joined, group);
 }
 
 template <typename S>
@@ -171,6 +202,8 @@ void EventResolver<S>::holdAgainstWall(Ball<S>& ball, const Vec3<S>& normal) con
   template bool EventResolver<S>::inSustainedContact(const Ball<S>&, const Ball<S>&) const;                            \
   template bool EventResolver<S>::growCluster(S, const Vec3<S>&, std::vector<int>&);                                   \
   template void EventResolver<S>::joinPressedCluster(S, int, int);                                                     \
+  template void EventResolver<S>::moveAsOne(Ball<S>&, const std::vector<int>&);                                        \
+  template void EventResolver<S>::collapse(S, int, int, bool);                                                         \
   template std::vector<Vec3<S>> EventResolver<S>::touchingWalls(const Ball<S>&) const;                                 \
   template void EventResolver<S>::holdAgainstWall(Ball<S>&, const Vec3<S>&) const;
 CUE_SIM_INSTANTIATE_SUSTAINED_CONTACT(double)

@@ -171,7 +171,7 @@ void CandidateFinder<S>::restingPath(const Ball<S>& ball, int index, BallRecord<
 }
 
 template <typename S>
-void CandidateFinder<S>::computePath(const Ball<S>& ball, int index, BallRecord<S>& record, S window) const
+void CandidateFinder<S>::computePath(const Ball<S>& ball, int index, BallRecord<S>& record, S from, S travel) const
 {
   if (ball.motion == Motion::Stationary)
   {
@@ -179,13 +179,30 @@ void CandidateFinder<S>::computePath(const Ball<S>& ball, int index, BallRecord<
     return;
   }
   computeOwnEvent(ball, index, record);
-  drawBox(ball, record, ball.time, window);
+  drawBox(ball, record, from, travel);
 }
 
+namespace
+{
+/// How long a ball on `path` takes from tau to travel `distance` at most: its speed there and
+/// its acceleration bound the distance by |v| T + |a| T^2 / 2 (+inf if it neither moves nor
+/// speeds up).
 template <typename S>
-void CandidateFinder<S>::drawBox(const Ball<S>& ball, BallRecord<S>& record, S from, S window) const
+S timeToTravel(const Trajectory<S>& path, S tau, S distance)
+{
+  const S speed = path.velocityAt(tau).norm(), acceleration = S(2) * path.c2.norm();
+  const S denominator = speed + std::sqrt(speed * speed + S(2) * acceleration * distance);
+  return denominator > S(0) ? S(2) * distance / denominator : infinity<S>();
+}
+}  // namespace
+
+template <typename S>
+void CandidateFinder<S>::drawBox(const Ball<S>& ball, BallRecord<S>& record, S from, S travel) const
 {
   // A ball that does not translate stays in its box until it changes: drawn once, never renewed.
+  const S window = std::isfinite(static_cast<double>(travel))
+                       ? from + timeToTravel(record.path, from - ball.time, travel)
+                       : infinity<S>();
   record.window = ball.translating() ? std::min(window, record.first.time) : record.first.time;
   const Trajectory<S>& p = record.path;
   const S T = ball.translating() ? record.window - ball.time : S(0);

@@ -101,10 +101,11 @@ public:
 
   /// A ball at rest: nothing of its own to find, and a box of one ball until it changes.
   void restingPath(const Ball<S>& ball, int index, BallRecord<S>& record) const;
-  /// The ball's path, its own next event, and its box until `window` (absolute).
-  void computePath(const Ball<S>& ball, int index, BallRecord<S>& record, S window) const;
-  /// The box the ball's centre stays in from `from` until `window` (absolute times).
-  void drawBox(const Ball<S>& ball, BallRecord<S>& record, S from, S window) const;
+  /// The ball's path, its own next event, and its box from `from` over `travel` of its path.
+  void computePath(const Ball<S>& ball, int index, BallRecord<S>& record, S from, S travel) const;
+  /// The box the ball's centre stays in from `from` (absolute) while it travels `travel` [m] (all
+  /// of its path if infinite), until its next event at the latest.
+  void drawBox(const Ball<S>& ball, BallRecord<S>& record, S from, S travel) const;
 
   /// A pair's contact is found in two steps, so that a pair whose balls change before they
   /// could meet need not be solved: whether they may meet before either's box window ends, and

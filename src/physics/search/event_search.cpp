@@ -47,14 +47,17 @@ private:
 };
 
 template <typename S>
-EventSearch<S>::EventSearch(const Engine<S>& engine, const TableState<S>& state)
+EventSearch<S>::EventSearch(const Engine<S>& engine, const TableState<S>& state, BroadPhase broad_phase)
   : engine_(engine), finder_(engine), queue_(state.balls.size())
 {
   const int n = static_cast<int>(state.balls.size());
   // A few balls are simply all looked at; beyond that a grid keeps each look local.
-  if (state.balls.size() > kGridFrom)
+  if (broad_phase == BroadPhase::Grid || (broad_phase == BroadPhase::Automatic && state.balls.size() > kGridFrom))
+  {
     grid_.emplace(engine.geometry().cloth_low, engine.geometry().cloth_high, state.balls.size(),
                   engine.params().ball_radius);
+    travel_ = S(2) * grid_->cell();
+  }
   reserveBalls(state);
   for (int i = 0; i < n; ++i)
   {
@@ -97,10 +100,10 @@ void EventSearch<S>::processThrough(TableState<S>& state, S t_end, std::vector<E
 }
 
 template <typename S>
-Event<S> EventSearch<S>::processNext(TableState<S>& state, long& processed)
+Event<S> EventSearch<S>::processNext(TableState<S>& state, S t_end, long& processed)
 {
   Event<S> event;
-  while (processOne(state, infinity<S>(), processed, event) && !event.valid())
+  while (processOne(state, t_end, processed, event) && !event.valid())
   {
   }
   return event;
@@ -154,8 +157,7 @@ void EventSearch<S>::renewBox(const TableState<S>& state, int k)
 {
   // Only what is still ahead: the new box starts where the old window ends (nothing is tested
   // against a time before it any more).
-  const S from = records_[k].window;
-  finder_.drawBox(state.balls[k], records_[k], from, windowFrom(state, k, from));
+  finder_.drawBox(state.balls[k], records_[k], records_[k].window, travel_);
   list(state, k);
   fileRenewal(state, k);
   filePairsOf(k, nullptr);
@@ -230,14 +232,8 @@ void EventSearch<S>::ballRemoved(const TableState<S>& state, int index, int move
 template <typename S>
 void EventSearch<S>::findPath(const TableState<S>& state, int k, S from)
 {
-  finder_.computePath(state.balls[k], k, records_[k], windowFrom(state, k, from));
+  finder_.computePath(state.balls[k], k, records_[k], from, travel_);
   list(state, k);
-}
-
-template <typename S>
-S EventSearch<S>::windowFrom(const TableState<S>& state, int k, S from) const
-{
-  return grid_ ? from + S(2) * grid_->cell() / (state.balls[k].v.norm() + S(0.1)) : infinity<S>();
 }
 
 template <typename S>

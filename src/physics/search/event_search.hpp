@@ -16,13 +16,21 @@ namespace cue_sim
 {
 namespace physics
 {
+/// How the search finds the balls near a ball: a grid beyond kGridFrom balls, or by force.
+enum class BroadPhase
+{
+  Automatic,
+  AllPairs,
+  Grid,
+};
+
 template <typename S>
 class EventSearch
 {
 public:
   /// Finds every ball's candidates and every pair's in `state` (valid on the engine, which
   /// must outlive the search).
-  EventSearch(const Engine<S>& engine, const TableState<S>& state);
+  EventSearch(const Engine<S>& engine, const TableState<S>& state, BroadPhase broad_phase = BroadPhase::Automatic);
   EventSearch(const EventSearch&) = delete;
   EventSearch& operator=(const EventSearch&) = delete;
 
@@ -34,9 +42,9 @@ public:
   /// given. `processed` counts the shot's events: at limits().max_events it throws
   /// EventLimitError, before the event, with the search intact.
   void processThrough(TableState<S>& state, S t_end, std::vector<Event<S>>* events, long& processed);
-  /// Processes the next event, whenever it is (and what comes before it that is not an event);
-  /// an invalid event if there is none.
-  Event<S> processNext(TableState<S>& state, long& processed);
+  /// Processes the next event at or before t_end (and what comes before it that is not an
+  /// event); an invalid event if there is none.
+  Event<S> processNext(TableState<S>& state, S t_end, long& processed);
 
   /// Edits: the ball at `index` was changed (struck, moved, replaced) at state.time.
   void ballChanged(const TableState<S>& state, int index);
@@ -61,8 +69,6 @@ private:
 
   /// Finds the ball's record (path, own event, box from `from`) and lists it in the grid.
   void findPath(const TableState<S>& state, int k, S from);
-  /// The end of a ball's box window drawn from `from`: about two cells of its travel.
-  S windowFrom(const TableState<S>& state, int k, S from) const;
   void list(const TableState<S>& state, int k);
   /// Files the ball's own next event, and the renewal of its box if that comes first.
   void fileOwn(const TableState<S>& state, int k);
@@ -81,6 +87,10 @@ private:
   BallRecords<S> records_;
   EventQueue<Candidate<S>> queue_;
   std::optional<BallGrid<S>> grid_;  ///< beyond kGridFrom balls
+  /// How far a ball's box reaches along its path: about two cells with a grid, so that a box
+  /// on a large table lists the ball in few cells (it is drawn further when the ball gets
+  /// there); all of it without.
+  S travel_ = infinity<S>();
   std::vector<int> changed_;         ///< the balls the event being resolved changed
   std::vector<char> is_changed_;     ///< by index: in changed_, during one event
   std::vector<int> scratch_;         ///< neighbour lists of the event's resolution

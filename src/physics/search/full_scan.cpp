@@ -15,7 +15,7 @@ Event<S> scanNextEvent(const Engine<S>& engine, const TableState<S>& state)
   const int n = static_cast<int>(state.balls.size());
   BallRecords<S> records(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i)
-    finder.computePath(state.balls[i], i, records[i], infinity<S>());
+    finder.computePath(state.balls[i], i, records[i], state.balls[i].time, infinity<S>());
   Candidate<S> best;
   bool found = false;
   const auto keep = [&](const Candidate<S>& c) {

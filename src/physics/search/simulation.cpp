@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "cue_sim/physics/motion.hpp"
+#include "physics/search/contact_times.hpp"
 #include "physics/search/event_search.hpp"
 
 namespace cue_sim
@@ -95,12 +96,13 @@ ShotResult<S> Simulation<S>::runToRest()
 }
 
 template <typename S>
-Event<S> Simulation<S>::step()
+Event<S> Simulation<S>::step(S t_end)
 {
   Event<S> event;
   try
   {
-    event = search_->processNext(state_, events_in_shot_);
+    // What does not happen within the search's horizon for endless motion never happens.
+    event = search_->processNext(state_, std::min(t_end, state_.time + kEndlessHorizon<S>), events_in_shot_);
   }
   catch (const EventLimitError&)
   {
@@ -155,6 +157,7 @@ void Simulation<S>::place(Ball<S> ball)
     search_->ballAdded(state_);
   }
   state_.event_time = state_.time;
+  state_.events_at_event_time = 0;
   edited();
 }
 
@@ -169,6 +172,7 @@ void Simulation<S>::remove(int ball_id)
   state_.balls.pop_back();
   search_->ballRemoved(state_, index, last);
   state_.event_time = state_.time;
+  state_.events_at_event_time = 0;
   edited();
 }
 
