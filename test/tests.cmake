@@ -27,6 +27,7 @@ catkin_add_gtest(scene_tests
   test/scene/test_urdf_table.cpp
   test/scene/test_scene_file.cpp
   test/scene/test_simulate_program.cpp
+  test/scene/test_bundled_tables.cpp
 )
 target_link_libraries(scene_tests cue_sim_table_description gtest_main)
 target_compile_definitions(scene_tests PRIVATE
