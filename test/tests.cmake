@@ -14,6 +14,7 @@ catkin_add_gtest(physics_tests
   test/physics/test_cue_aim.cpp
   test/physics/test_event_search.cpp
   test/physics/test_simulation.cpp
+  test/physics/test_physics_params.cpp
 )
 target_link_libraries(physics_tests cue_sim_physics gtest_main)
 # The event search's internal structures are tested on their own too.
@@ -22,6 +23,9 @@ target_compile_definitions(physics_tests PRIVATE CUE_SIM_SOURCE_DIR="${PROJECT_S
 
 catkin_add_gtest(accuracy_tests test/physics/test_accuracy.cpp)
 target_link_libraries(accuracy_tests cue_sim_evaluation gtest_main)
+
+catkin_add_gtest(evaluation_tests test/evaluation/test_soak.cpp)
+target_link_libraries(evaluation_tests cue_sim_soak gtest_main)
 
 catkin_add_gtest(scene_tests
   test/scene/test_urdf_table.cpp

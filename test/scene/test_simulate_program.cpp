@@ -73,3 +73,25 @@ TEST(SimulateProgram, BadSceneExitsNonZeroWithTheReason)
   EXPECT_EQ(run.status, 1);
   EXPECT_NE(run.out.find("overlap"), std::string::npos) << run.out;
 }
+
+TEST(SimulateProgram, TheDurationOptionStopsWhereTheSceneFileWould)
+{
+  const std::string scene = "rack: eight\nshot: {speed: 7.0, phi: 0.003}\n";
+  const ProgramRun option = simulate(scene, "--duration 0.8 --indent -1");
+  const ProgramRun in_file = simulate(scene + "duration: 0.8\n", "--indent -1");
+  ASSERT_EQ(option.status, 0) << option.out;
+  EXPECT_EQ(option.out, in_file.out);  // the same events and final state, to the last digit
+  const auto report = nlohmann::json::parse(option.out);
+  EXPECT_FALSE(report["at_rest"].get<bool>());
+  for (const auto& e : report["events"])
+    EXPECT_LE(e["t"].get<double>(), 0.8);
+  EXPECT_NE(simulate(scene, "--duration -1").status, 0);
+}
+
+TEST(SimulateProgram, ABallBehindAPocketsMouthIsRefused)
+{
+  // Past the cushion line, beside the side pocket's capture circle: off the playing area.
+  const ProgramRun run = simulate("rack: empty\nballs: [{id: 1, position: [0.12, 0.51]}]\n");
+  EXPECT_EQ(run.status, 1);
+  EXPECT_NE(run.out.find("off the cloth"), std::string::npos) << run.out;
+}
