@@ -75,12 +75,9 @@ EventSearch<S>::EventSearch(const Engine<S>& engine, const TableState<S>& state,
     if (state.balls[i].moving())
       fileOwn(state, i);
   // Pairs need a translating ball: each is found from it (from the lower index if both are).
-  std::vector<char> translating(state.balls.size());
   for (int i = 0; i < n; ++i)
-    translating[i] = state.balls[i].translating();
-  for (int i = 0; i < n; ++i)
-    if (translating[i])
-      filePairsOf(i, &translating);
+    if (state.balls[i].translating())
+      filePairsOf(i, FiledByTranslatingBelow{state.balls});
 }
 
 template <typename S>
@@ -160,7 +157,7 @@ void EventSearch<S>::renewBox(const TableState<S>& state, int k)
   finder_.drawBox(state.balls[k], records_[k], records_[k].window, travel_);
   list(state, k);
   fileRenewal(state, k);
-  filePairsOf(k, nullptr);
+  filePairsOf(k, NoneFiled{});
 }
 
 template <typename S>
@@ -192,7 +189,7 @@ Event<S> EventSearch<S>::resolve(TableState<S>& state, const Candidate<S>& candi
   {
     fileOwn(state, k);
     if (state.balls[k].inPlay())
-      filePairsOf(k, &is_changed_);
+      filePairsOf(k, FiledByChangedBelow{is_changed_});
   }
   for (int k : changed_)
     is_changed_[k] = 0;
@@ -206,7 +203,7 @@ void EventSearch<S>::ballChanged(const TableState<S>& state, int index)
   findPath(state, index, state.time);
   fileOwn(state, index);
   if (state.balls[index].inPlay())
-    filePairsOf(index, nullptr);
+    filePairsOf(index, NoneFiled{});
 }
 
 template <typename S>
@@ -293,7 +290,8 @@ void EventSearch<S>::visitNear(int k, const Visit& visit)
 }
 
 template <typename S>
-void EventSearch<S>::filePairsOf(int k, const std::vector<char>* skip)
+template <typename Filed>
+void EventSearch<S>::filePairsOf(int k, const Filed& filed)
 {
   // A pair is left unsolved, at a time before which they cannot meet, if that is later than a
   // contact of k's found earlier in this look (`soonest`): that contact will most likely change
@@ -303,7 +301,7 @@ void EventSearch<S>::filePairsOf(int k, const std::vector<char>* skip)
   Candidate<S> pair;
   PairMotion<S> motion;
   visitNear(k, [&](int o) {
-    if ((skip && (*skip)[o] && o < k) || !finder_.pairMayMeet(k, o, records_, pair, motion))
+    if (filed(o, k) || !finder_.pairMayMeet(k, o, records_, pair, motion))
       return;
     if (soonest < infinity<S>())
     {

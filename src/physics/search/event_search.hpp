@@ -73,9 +73,27 @@ private:
   /// Files the ball's own next event, and the renewal of its box if that comes first.
   void fileOwn(const TableState<S>& state, int k);
   void fileRenewal(const TableState<S>& state, int k);
-  /// Files the pairs ball k may meet among the balls near it, but those with a ball that `skip`
-  /// marks (filed from that ball).
-  void filePairsOf(int k, const std::vector<char>* skip);
+  /// Files the pairs ball k may meet among the balls near it, but those `filed(o, k)` says
+  /// are filed from the other ball o: one of the three below.
+  template <typename Filed>
+  void filePairsOf(int k, const Filed& filed);
+  /// A look of its own (a box drawn further, an edit): no pair of k's is filed from elsewhere.
+  struct NoneFiled
+  {
+    bool operator()(int, int) const { return false; }
+  };
+  /// The first look at every ball: a pair of translating balls is filed from the lower index.
+  struct FiledByTranslatingBelow
+  {
+    const std::vector<Ball<S>>& balls;
+    bool operator()(int o, int k) const { return o < k && balls[o].translating(); }
+  };
+  /// After an event: a pair of balls it changed is filed from the lower index.
+  struct FiledByChangedBelow
+  {
+    const std::vector<char>& changed;
+    bool operator()(int o, int k) const { return o < k && changed[o]; }
+  };
   /// Calls visit(o) for every other ball whose box meets ball k's (through the grid: may meet it).
   template <typename Visit>
   void visitNear(int k, const Visit& visit);
@@ -91,9 +109,9 @@ private:
   /// on a large table lists the ball in few cells (it is drawn further when the ball gets
   /// there); all of it without.
   S travel_ = infinity<S>();
-  std::vector<int> changed_;         ///< the balls the event being resolved changed
-  std::vector<char> is_changed_;     ///< by index: in changed_, during one event
-  std::vector<int> scratch_;         ///< neighbour lists of the event's resolution
+  std::vector<int> changed_;      ///< the balls the event being resolved changed
+  std::vector<char> is_changed_;  ///< by index: in changed_, during one event
+  std::vector<int> scratch_;      ///< neighbour lists of the event's resolution
 };
 
 }  // namespace physics
