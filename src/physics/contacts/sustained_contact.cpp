@@ -148,6 +148,8 @@ std::vector<Vec3<S>> EventResolver<S>::touchingWalls(const Ball<S>& ball) const
   const S tolerance = S(kTouchingSlack);
   std::vector<Vec3<S>> normals;
   const Vec2<S> c = ball.r.template head<2>();
+  if ((c.array() > geometry_.clear_low.array()).all() && (c.array() < geometry_.clear_high.array()).all())
+    return normals;  // out of every wall's reach
   // Only a wall whose box holds the centre can touch the ball.
   const auto outside = [&](const auto& wall) {
     return (c.array() < wall.low.array()).any() || (c.array() > wall.high.array()).any();

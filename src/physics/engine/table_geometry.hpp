@@ -32,6 +32,9 @@ struct TableGeometry
   std::vector<Circle> circles;    ///< jaws and cushion end caps
   std::vector<Circle> pockets;    ///< capture circles: `low`, `high` bound where a centre enters
   Vec2<S> cloth_low, cloth_high;  ///< the cloth's rectangle
+  /// A box about the cloth's centre that no cushion's, jaw's or pocket's box reaches: a ball
+  /// whose centre is in it touches no wall.
+  Vec2<S> clear_low, clear_high;
 
   TableGeometry(const TableModel& table, S ball_radius);
 };
