@@ -20,8 +20,11 @@ using physics::Event;
 using physics::TableState;
 
 /// How far a ball may be inside another, a cushion, a jaw or a pocket [m], and how much of the
-/// kinetic energy rounding may add at an event: 1e-12 of it, and for each ball the energy of
-/// the speed the engine takes for zero (zeroSpeed, 1.4e-14 m/s; 3e-29 J for a pool ball).
+/// kinetic energy rounding may add at an event: 1e-12 of it, and for each ball what a change of
+/// its speed or its surface's speed by zeroSpeed (1.4e-14 m/s, below which the engine takes a
+/// speed or a slip for zero and snaps it) makes, m zeroSpeed (|v| + R |w| + zeroSpeed) for each.
+/// At a metre a second that is 5e-15 of the energy; it matters only for balls a thousand times
+/// slower.
 constexpr double kOverlapTolerance = 1e-9;
 constexpr double kEnergyTolerance = 1e-12;
 
@@ -45,9 +48,11 @@ public:
     for (const Ball<double>& b : balls_)
       if (!physics::isFinite(b.r) || !physics::isFinite(b.v) || !physics::isFinite(b.w))
         note(found, "nan", describe(when, t) + ": ball " + std::to_string(b.id) + " is not finite");
-    const double zero_energy = static_cast<double>(balls_.size()) * engine_.params().ball_mass *
-                               physics::zeroSpeed<double>() * physics::zeroSpeed<double>();
-    if (energy > last_energy_ * (1 + kEnergyTolerance) + zero_energy)
+    const double zero = physics::zeroSpeed<double>(), R = engine_.params().ball_radius;
+    double snapped = 0;
+    for (const Ball<double>& b : balls_)
+      snapped += 2 * engine_.params().ball_mass * zero * (b.v.norm() + R * b.w.norm() + zero);
+    if (energy > last_energy_ * (1 + kEnergyTolerance) + snapped)
     {
       std::ostringstream why;
       why.precision(17);
@@ -56,7 +61,6 @@ public:
     }
     last_energy_ = energy;
     lookForOverlaps(when, t, found);
-    const double R = engine_.params().ball_radius;
     for (const Ball<double>& b : balls_)
       if (b.inPlay())
       {
