@@ -19,7 +19,7 @@ namespace evaluation
 /// The limits a campaign's shots run under: 20 s of each shot, and an event allowance no real
 /// shot comes near in that time (a break has a few hundred events; 200 balls at a tenth of the
 /// Earth's gravity a few thousand; 119 large balls rolling without resistance and bouncing
-/// elastically on a 9-ft table 260 000). A shot that reaches it is a violation: events that
+/// elastically on a 9-ft table 380 000). A shot that reaches it is a violation: events that
 /// never end.
 struct SoakLimits
 {
