@@ -19,6 +19,7 @@
 #include "cue_sim/physics/engine.hpp"
 #include "cue_sim/physics/motion.hpp"
 #include "cue_sim/physics/rack.hpp"
+#include "scattered_scene.hpp"
 
 using namespace cue_sim::physics;
 
@@ -169,31 +170,8 @@ TEST(Golden, GridAgreesWithFullScan)
   // table scaled to their number, all sent off at once, as in the bench's scaling scenes.
   for (const int count : {40, 100})
   {
-    const double scale = std::sqrt(count / 16.0);
-    const auto table =
-        std::make_shared<const TableModel>(TableModel::pool("scaled", 1.9812 * scale, 0.9906 * scale, 0.118, 0.137));
-    const Engine<double> engine(table, PhysicsParams<double>());
-    const double R = engine.params().ball_radius;
-    std::mt19937 random(static_cast<unsigned>(count));
-    const auto unit = [&] { return static_cast<double>(random()) / 4294967296.0; };
-    TableState<double> start;
-    while (static_cast<int>(start.balls.size()) < count)
-    {
-      Ball<double> b;
-      b.id = static_cast<int>(start.balls.size());
-      b.r = Vec3<double>((2 * unit() - 1) * (table->clothLength() / 2 - 2 * R),
-                         (2 * unit() - 1) * (table->clothWidth() / 2 - 2 * R), R);
-      start.balls.push_back(b);
-      if (!engine.whyInvalid(start).empty())
-        start.balls.pop_back();
-    }
-    for (auto& b : start.balls)
-    {
-      const double speed = 0.5 + 1.5 * unit(), heading = 2 * M_PI * unit();
-      b.v = Vec3<double>(speed * std::cos(heading), speed * std::sin(heading), 0);
-      b.w = Vec3<double>((unit() - 0.5) * 40, (unit() - 0.5) * 40, (unit() - 0.5) * 40);
-      settleMotion(b, R);
-    }
+    const Engine<double> engine(scaledTable(count), PhysicsParams<double>());
+    const TableState<double> start = scatteredScene(engine, count, static_cast<unsigned>(count));
     TableState<double> scanned = start, queued = start;
     std::vector<Event<double>> scan_events;
     for (Event<double> e = engine.step(scanned); e.valid(); e = engine.step(scanned))
