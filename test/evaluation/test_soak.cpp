@@ -74,3 +74,19 @@ TEST(Soak, AStartValidationRefusesIsReported)
   EXPECT_EQ(check.violations[0].kind, "invalid_start");
   EXPECT_NE(check.violations[0].detail.find("overlap"), std::string::npos) << check.violations[0].detail;
 }
+
+/// What the campaigns found, kept as the scene files they wrote (test/data/soak, each file says
+/// what it showed and what answers it): each must now pass every check, in few events.
+TEST(Soak, TheScenesEarlierCampaignsBrokeOnNowPass)
+{
+  for (const std::string name : {"stiff_slide_to_roll", "nose_near_the_top", "crawling_on_frictionless_cloth",
+                                 "wedged_across_a_carom_table", "chain_against_the_cushions", "drift_below_zero_speed"})
+  {
+    const Scene scene = loadSceneFile(std::string(CUE_SIM_SOURCE_DIR) + "/test/data/soak/" + name + ".yaml");
+    const SceneCheck check = checkScene(scene, true);
+    for (const Violation& v : check.violations)
+      ADD_FAILURE() << name << ": " << v.kind << ": " << v.detail;
+    EXPECT_TRUE(check.scanned) << name;
+    EXPECT_LT(check.events, 20000) << name;  // the collapses took 200 000 and more
+  }
+}
