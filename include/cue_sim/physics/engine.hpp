@@ -24,10 +24,16 @@ namespace cue_sim
 {
 namespace physics
 {
-/// The table's geometry in the engine's scalar type, as the event search reads it (internal:
-/// src/physics/engine/table_geometry.hpp).
+/// The table's geometry in the engine's scalar type, as the event search reads it, and the
+/// parts of the core that read it (internal: src/physics/).
 template <typename S>
 struct TableGeometry;
+template <typename S>
+class CandidateFinder;
+template <typename S>
+class EventResolver;
+template <typename S>
+class EventSearch;
 
 struct EngineLimits
 {
@@ -88,8 +94,6 @@ public:
   const EngineLimits& limits() const { return limits_; }
   const BallBallModel<S>& ballBallModel() const { return *ball_ball_; }
   const CushionModel<S>& cushionModel() const { return *cushion_; }
-  /// The geometry the event search reads (internal).
-  const TableGeometry<S>& geometry() const { return *geometry_; }
 
   /// Processes every event with time <= t_end (appending them to `events` if given) and sets
   /// state.time = t_end. Throws EventLimitError after limits().max_events events. To advance
@@ -124,6 +128,11 @@ public:
   std::string whyNotPlaceable(const TableState<S>& state, const Ball<S>& ball, double tolerance = 1e-9) const;
 
 private:
+  friend class CandidateFinder<S>;
+  friend class EventResolver<S>;
+  friend class EventSearch<S>;
+  const TableGeometry<S>& geometry() const { return *geometry_; }
+
   std::shared_ptr<const TableModel> table_;
   PhysicsParams<S> params_;
   ModelChoice model_choice_;
