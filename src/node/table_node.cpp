@@ -49,7 +49,7 @@ geometry_msgs::TransformStamped makeTransform(const std::string& parent, const s
 physics::TableState<double> atTimeZero(physics::TableState<double> state)
 {
   state.time = state.event_time = 0;
-  state.events_at_event_time = 0;
+  state.events_this_instant = 0;
   for (auto& b : state.balls)
     b.time = 0;
   return state;

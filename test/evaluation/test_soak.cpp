@@ -79,8 +79,9 @@ TEST(Soak, AStartValidationRefusesIsReported)
 /// what it showed and what answers it): each must now pass every check, in few events.
 TEST(Soak, TheScenesEarlierCampaignsBrokeOnNowPass)
 {
-  for (const std::string name : {"stiff_slide_to_roll", "nose_near_the_top", "crawling_on_frictionless_cloth",
-                                 "wedged_across_a_carom_table", "chain_against_the_cushions", "drift_below_zero_speed"})
+  for (const std::string name :
+       {"stiff_slide_to_roll", "nose_near_the_top", "crawling_on_frictionless_cloth", "wedged_across_a_carom_table",
+        "chain_against_the_cushions", "drift_below_zero_speed", "column_across_a_pool_table"})
   {
     const Scene scene = loadSceneFile(std::string(CUE_SIM_SOURCE_DIR) + "/test/data/soak/" + name + ".yaml");
     const SceneCheck check = checkScene(scene, true);

@@ -54,7 +54,9 @@ struct EngineLimits
   double sustained_contact_speed = 1e-4;
   /// Events at one instant before the touching balls there are taken to have collapsed: balls
   /// wedged between others and the cushions can take impact after impact at the same instant,
-  /// each changing them by rounding (an inelastic collapse: McNamara and Young 1994). Beyond
+  /// or each a few ulps of time after the last, each changing them by rounding (an inelastic
+  /// collapse: McNamara and Young 1994). Events within about a picosecond of one another count
+  /// as one instant. Beyond
   /// this many, a ball-ball or wall event joins every ball touching its balls into one body (the
   /// mean of their velocities and spins, held by the walls they touch); beyond twice as many,
   /// that body stops. Both keep momentum but what the walls take and cannot add energy. A break

@@ -19,10 +19,10 @@ struct TableState
   /// Time [s] of the last processed event. Predictions start from here, not from `time`, so a
   /// shot's events do not depend on how often it was advanced.
   S event_time = S(0);
-  /// How many events have happened at event_time: a long run of them at one instant is an
-  /// inelastic collapse, which the engine ends (EngineLimits::collapse_events). An edit sets it
-  /// to 0.
-  long events_at_event_time = 0;
+  /// How many events have happened at the instant of event_time (events each within about a
+  /// picosecond of the one before count as one instant): a long run of them is an inelastic
+  /// collapse, which the engine ends (EngineLimits::collapse_events). An edit sets it to 0.
+  long events_this_instant = 0;
   std::vector<Ball<S>> balls;
 
   /// Index of the ball with this id, or -1.
@@ -47,7 +47,7 @@ struct TableState
     TableState<T> out;
     out.time = T(time);
     out.event_time = T(event_time);
-    out.events_at_event_time = events_at_event_time;
+    out.events_this_instant = events_this_instant;
     for (const auto& b : balls)
     {
       Ball<T> c;

@@ -19,12 +19,10 @@ void resolveEvent(const Engine<S>& engine, TableState<S>& state, const Event<S>&
 template <typename S>
 void EventResolver<S>::resolve(const Event<S>& event)
 {
-  if (event.time > state_.event_time)
-  {
-    state_.event_time = event.time;
-    state_.events_at_event_time = 0;
-  }
-  const long at_this_instant = ++state_.events_at_event_time;
+  if (event.time > state_.event_time + S(kSameInstant) + S(kSameInstantPerSecond) * std::abs(event.time))
+    state_.events_this_instant = 0;
+  state_.event_time = std::max(state_.event_time, event.time);
+  const long at_this_instant = ++state_.events_this_instant;
   Ball<S>& ball = state_.balls[context_.index];
   ball = evolve(ball, event.time, params_);
   changed(context_.index);

@@ -209,7 +209,7 @@ void Engine<S>::strike(TableState<S>& state, int ball_id, const CueStrike<S>& st
   settleMotion(ball, params_.ball_radius);
   // The strike is an event: predictions restart from it.
   state.event_time = state.time;
-  state.events_at_event_time = 0;
+  state.events_this_instant = 0;
 }
 
 namespace

@@ -157,7 +157,7 @@ void Simulation<S>::place(Ball<S> ball)
     search_->ballAdded(state_);
   }
   state_.event_time = state_.time;
-  state_.events_at_event_time = 0;
+  state_.events_this_instant = 0;
   edited();
 }
 
@@ -172,7 +172,7 @@ void Simulation<S>::remove(int ball_id)
   state_.balls.pop_back();
   search_->ballRemoved(state_, index, last);
   state_.event_time = state_.time;
-  state_.events_at_event_time = 0;
+  state_.events_this_instant = 0;
   edited();
 }
 
