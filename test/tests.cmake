@@ -40,6 +40,9 @@ target_compile_definitions(scene_tests PRIVATE
   CUE_SIM_SIMULATE="$<TARGET_FILE:simulate>")
 add_dependencies(scene_tests simulate)
 
+catkin_add_gtest(session_tests test/session/test_live_table.cpp)
+target_link_libraries(session_tests cue_sim_session cue_sim_table_description gtest_main)
+
 add_rostest_gtest(node_tests test/node/table_node.test test/node/test_table_node.cpp test/node/rostest_main.cpp)
 target_include_directories(node_tests PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(node_tests ${catkin_LIBRARIES})

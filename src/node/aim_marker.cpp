@@ -29,6 +29,12 @@ AimMarker::AimMarker(const std::string& topic_ns, const std::string& frame, doub
 
 Shot AimMarker::shot() const
 {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return shotLocked();
+}
+
+Shot AimMarker::shotLocked() const
+{
   Shot s;
   s.ball_id = 0;
   s.phi = std::atan2(aim_.y(), aim_.x());
@@ -38,6 +44,7 @@ Shot AimMarker::shot() const
 
 void AimMarker::place(const Eigen::Vector2d& cue_ball)
 {
+  std::lock_guard<std::mutex> lock(mutex_);
   cue_ball_ = cue_ball;
   publish();
 }
@@ -46,6 +53,7 @@ void AimMarker::onFeedback(const visualization_msgs::InteractiveMarkerFeedbackCo
 {
   if (feedback->event_type == InteractiveMarkerFeedback::POSE_UPDATE)
   {
+    std::lock_guard<std::mutex> lock(mutex_);
     const Eigen::Vector2d handle(feedback->pose.position.x, feedback->pose.position.y);
     if ((handle - cue_ball_).norm() > 1e-3)
       aim_ = handle - cue_ball_;

@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <mutex>
 #include <string>
 
 namespace cue_sim
@@ -20,7 +21,7 @@ public:
   using ShotCallback = std::function<void(const Shot&)>;
 
   /// Serves the marker on <topic_ns>/update and <topic_ns>/feedback; callbacks run in the
-  /// node's own spinner (no thread of their own).
+  /// node's own spinner (no thread of their own). place() may be called from another thread.
   AimMarker(const std::string& topic_ns, const std::string& frame, double ball_radius, ShotCallback strike,
             ShotCallback predict);
 
@@ -30,6 +31,7 @@ public:
   Shot shot() const;
 
 private:
+  Shot shotLocked() const;
   void onFeedback(const visualization_msgs::InteractiveMarkerFeedbackConstPtr& feedback);
   void publish();
 
@@ -38,6 +40,7 @@ private:
   std::string frame_;
   double ball_radius_;
   ShotCallback strike_, predict_;
+  mutable std::mutex mutex_;  ///< guards the aim: place() comes from the publishing thread
   Eigen::Vector2d cue_ball_ = Eigen::Vector2d::Zero();
   Eigen::Vector2d aim_ = Eigen::Vector2d(0.5, 0);  ///< handle minus cue ball [m]
 };

@@ -128,51 +128,75 @@ Event toEventMsg(const physics::Event<double>& event, const physics::TableModel&
 
 namespace
 {
-bool finite(const geometry_msgs::Point& p)
+physics::Vec3<double> toVec3(double x, double y, double z)
 {
-  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
-bool finite(const geometry_msgs::Vector3& v)
-{
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+  return physics::Vec3<double>(x, y, z);
 }
 }  // namespace
 
-std::string fromBallStateMsgs(const std::vector<BallState>& balls, const physics::TableModel& table, double ball_radius,
-                              physics::TableState<double>& out)
+session::BallInput toBallInput(const BallState& msg)
 {
-  out = physics::TableState<double>();
-  for (std::size_t i = 0; i < balls.size(); ++i)
-  {
-    const BallState& m = balls[i];
-    const std::string field = "balls[" + std::to_string(i) + "]";
-    if (m.id < 0 || m.id > 15)
-      return field + ".id = " + std::to_string(m.id) + " is not in [0, 15]";
-    if (!finite(m.position) || !finite(m.velocity) || !finite(m.angular_velocity))
-      return field + ": position, velocity and angular_velocity must be finite";
-    physics::Ball<double> b;
-    b.id = m.id;
-    if (m.pocketed)
-    {
-      for (std::size_t k = 0; k < table.pockets().size(); ++k)
-        if (table.pockets()[k].name == m.pocket)
-          b.pocket = static_cast<int>(k);
-      if (b.pocket < 0)
-        return field + ".pocket = '" + m.pocket + "' is not a pocket of table '" + table.name() + "'";
-      b.motion = physics::Motion::Pocketed;
-      b.r = physics::Vec3<double>(m.position.x, m.position.y, m.position.z);
-      out.balls.push_back(b);
-      continue;
-    }
-    if (m.velocity.z != 0)
-      return field + ".velocity.z must be 0 (balls stay on the cloth), got " + std::to_string(m.velocity.z);
-    b.r = physics::Vec3<double>(m.position.x, m.position.y, ball_radius);  // z: on the cloth
-    b.v = physics::Vec3<double>(m.velocity.x, m.velocity.y, 0);
-    b.w = physics::Vec3<double>(m.angular_velocity.x, m.angular_velocity.y, m.angular_velocity.z);
-    physics::settleMotion(b, ball_radius);
-    out.balls.push_back(b);
-  }
-  return "";
+  session::BallInput input;
+  input.id = msg.id;
+  input.position = toVec3(msg.position.x, msg.position.y, msg.position.z);
+  input.velocity = toVec3(msg.velocity.x, msg.velocity.y, msg.velocity.z);
+  input.angular_velocity = toVec3(msg.angular_velocity.x, msg.angular_velocity.y, msg.angular_velocity.z);
+  input.pocketed = msg.pocketed;
+  input.pocket = msg.pocket;
+  return input;
+}
+
+std::vector<session::BallInput> toBallInputs(const std::vector<BallState>& msgs)
+{
+  std::vector<session::BallInput> inputs;
+  inputs.reserve(msgs.size());
+  for (const auto& m : msgs)
+    inputs.push_back(toBallInput(m));
+  return inputs;
+}
+
+session::Shot toSessionShot(const Shot& msg)
+{
+  return {msg.ball_id, toCueStrike(msg)};
+}
+
+Shot toShotMsg(const session::Shot& shot)
+{
+  return toShotMsg(shot.ball_id, shot.strike);
+}
+
+Prediction toPredictionMsg(const session::ShotPrediction& prediction, const physics::TableModel& table,
+                           double sample_period, const std::string& frame_id)
+{
+  Prediction msg;
+  msg.success = prediction.success;
+  msg.message = prediction.message;
+  msg.executed = toShotMsg(prediction.executed);
+  msg.time_to_rest = prediction.time_to_rest;
+  msg.at_rest = prediction.at_rest;
+  msg.sample_period = sample_period;
+  msg.final_balls.reserve(prediction.final_balls.size());
+  for (const auto& b : prediction.final_balls)
+    msg.final_balls.push_back(toBallStateMsg(b, table));
+  msg.events.reserve(prediction.events.size());
+  for (const auto& e : prediction.events)
+    msg.events.push_back(toEventMsg(e, table, ros::Time(), e.time - prediction.strike_time));
+  msg.samples.reserve(prediction.samples.size());
+  for (const auto& sample : prediction.samples)
+    msg.samples.push_back(toTableStateMsg(sample, table, ros::Time(), frame_id));
+  return msg;
+}
+
+ros::Time toRosTime(session::Stamp stamp)
+{
+  ros::Time time;
+  time.fromNSec(static_cast<std::uint64_t>(stamp));
+  return time;
+}
+
+session::Stamp toStamp(const ros::Time& time)
+{
+  return static_cast<session::Stamp>(time.toNSec());
 }
 
 }  // namespace cue_sim

@@ -3,6 +3,7 @@
 
 #include <cue_sim/BallState.h>
 #include <cue_sim/Event.h>
+#include <cue_sim/Prediction.h>
 #include <cue_sim/Shot.h>
 #include <cue_sim/Strike.h>
 #include <cue_sim/TableState.h>
@@ -15,6 +16,9 @@
 #include <vector>
 
 #include "cue_sim/physics/engine.hpp"
+#include "cue_sim/session/ball_input.hpp"
+#include "cue_sim/session/physics_clock.hpp"
+#include "cue_sim/session/shot_prediction.hpp"
 
 namespace cue_sim
 {
@@ -34,10 +38,19 @@ Shot shotOf(const Strike::Request& request);
 Event toEventMsg(const physics::Event<double>& event, const physics::TableModel& table, const ros::Time& stamp,
                  double shot_time);
 
-/// The balls of a message as a table state at time 0, or why they cannot be: an id out of
-/// [0, 15], a non-finite value, a velocity off the cloth, an unknown pocket. Motion states
-/// follow from velocity and spin; placement (cloth, cushions, overlaps) is the engine's to check.
-std::string fromBallStateMsgs(const std::vector<BallState>& balls, const physics::TableModel& table, double ball_radius,
-                              physics::TableState<double>& out);
+/// A ball of a request as the live table takes it (checked there, field by field).
+session::BallInput toBallInput(const BallState& msg);
+std::vector<session::BallInput> toBallInputs(const std::vector<BallState>& msgs);
+
+session::Shot toSessionShot(const Shot& msg);
+Shot toShotMsg(const session::Shot& shot);
+
+/// A prediction as a message: events stamped zero with shot times from the strike, samples in
+/// `frame_id`.
+Prediction toPredictionMsg(const session::ShotPrediction& prediction, const physics::TableModel& table,
+                           double sample_period, const std::string& frame_id);
+
+ros::Time toRosTime(session::Stamp stamp);
+session::Stamp toStamp(const ros::Time& time);
 
 }  // namespace cue_sim

@@ -4,34 +4,16 @@
 #include <rosgraph_msgs/Clock.h>
 #include <visualization_msgs/MarkerArray.h>
 
-#include <cmath>
-#include <fstream>
-#include <sstream>
-
+#include "cue_sim/ExecutedShot.h"
 #include "cue_sim/TableState.h"
-#include "cue_sim/physics/rack.hpp"
-#include "cue_sim/table_description/table_catalog.hpp"
 #include "cue_sim/table_description/urdf_table_loader.hpp"
 #include "node/ros_conversions.hpp"
 #include "node/table_markers.hpp"
 
 namespace cue_sim
 {
-using physics::Ball;
-using PhysicsState = physics::TableState<double>;
-
 namespace
 {
-std::string readFile(const std::string& path)
-{
-  std::ifstream file(path);
-  if (!file)
-    throw std::runtime_error("cannot read URDF file '" + path + "'");
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
 geometry_msgs::TransformStamped makeTransform(const std::string& parent, const std::string& child,
                                               const Eigen::Vector3d& p, const Eigen::Quaterniond& q,
                                               const ros::Time& stamp)
@@ -44,77 +26,26 @@ geometry_msgs::TransformStamped makeTransform(const std::string& parent, const s
   t.transform.rotation = toQuaternion(q);
   return t;
 }
+
+/// Threads answering the light services: a tf lookup for ~strike_cue may hold one of them for
+/// up to ~tf_timeout while the other answers.
+constexpr int kLightServiceThreads = 2;
 }  // namespace
 
-physics::TableState<double> atTimeZero(physics::TableState<double> state)
+TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node) : sim_time_(ros::Time::isSimTime())
 {
-  state.time = state.event_time = 0;
-  state.events_this_instant = 0;
-  for (auto& b : state.balls)
-    b.time = 0;
-  return state;
-}
-
-TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
-{
-  private_node.param("publish_rate", config_.publish_rate, config_.publish_rate);
-  private_node.param("allow_strike_while_moving", config_.allow_strike_while_moving, false);
-  private_node.param("table_frame", config_.table_frame, config_.table_frame);
-  private_node.param("world_frame", config_.world_frame, config_.world_frame);
-  private_node.param("rack", config_.initial_rack, config_.initial_rack);
-  private_node.param("rack_gap", config_.rack_gap, config_.rack_gap);
-  private_node.param("ball_frame_prefix", config_.ball_frame_prefix, config_.ball_frame_prefix);
-  private_node.param("real_time_factor", config_.real_time_factor, config_.real_time_factor);
-  private_node.param("paused", paused_, false);
-  if (!(config_.publish_rate > 0 && config_.publish_rate <= 10000))
-    throw std::runtime_error("~publish_rate must be in (0, 10000] Hz");
-  sim_time_ = ros::Time::isSimTime();
-  if (!(config_.real_time_factor >= 0 && config_.real_time_factor <= 1000))
-    throw std::runtime_error("~real_time_factor must be in [0, 1000] (0: as fast as possible, with use_sim_time)");
-  if (config_.real_time_factor == 0 && !sim_time_)
-    throw std::runtime_error(
-        "~real_time_factor 0 (as fast as possible) needs use_sim_time: the node then drives /clock");
-  for (const std::string* frame : {&config_.table_frame, &config_.world_frame, &config_.ball_frame_prefix})
-    if (frame->empty() || frame->front() == '/')
-      throw std::runtime_error("frame ids must be non-empty and without a leading '/', got '" + *frame + "'");
-  if (!(config_.rack_gap >= 0 && config_.rack_gap < 0.01))
-    throw std::runtime_error("~rack_gap must be in [0, 0.01) m");
-  loadNoise(private_node);
-
-  physics::PhysicsParams<double> params;
-  for (const auto& field : physics::physicsParamFields())
-    private_node.param(field.name, params.*field.member, params.*field.member);
-  const std::string why = params.validate();
-  if (!why.empty())
-    throw std::runtime_error("physics parameter ~" + why);
-  physics::ModelChoice models;
-  private_node.param("ball_ball_model", models.ball_ball, models.ball_ball);
-  private_node.param("cushion_model", models.cushion, models.cushion);
-
-  loadTable(node, private_node);
-  engine_ = std::make_shared<const physics::Engine<double>>(table_, params, models);  // throws for unknown models
-
-  PhysicsState rack;
+  parameters_ = readNodeParameters(node, private_node, sim_time_);
+  clock_factor_ = parameters_.real_time_factor;
+  const NodeParameters& p = parameters_;
+  std::shared_ptr<const physics::Engine<double>> engine;
   try
   {
-    physics::RackOptions options;
-    options.gap = config_.rack_gap;
-    rack = physics::rackLayout<double>(config_.initial_rack, *table_, params.ball_radius, options);
+    engine = std::make_shared<const physics::Engine<double>>(p.table_model, p.physics, p.models);
   }
   catch (const std::invalid_argument& e)
   {
-    throw std::runtime_error(std::string("~rack: ") + e.what());
+    throw std::runtime_error(std::string("~ball_ball_model, ~cushion_model: ") + e.what());
   }
-  const std::string invalid = engine_->whyInvalid(rack);
-  if (!invalid.empty())
-    throw std::runtime_error("~rack '" + config_.initial_rack + "' does not fit table '" + table_->name() +
-                             "': " + invalid);
-
-  state_publisher_ = private_node.advertise<cue_sim::TableState>("state", 10);
-  marker_publisher_ = private_node.advertise<visualization_msgs::MarkerArray>("markers", 1, true);
-  event_publisher_ = private_node.advertise<cue_sim::Event>("events", 1000);
-  cue_publisher_ = private_node.advertise<visualization_msgs::Marker>("cue", 1, true);
-  preview_publisher_ = private_node.advertise<visualization_msgs::MarkerArray>("preview", 1, true);
   if (sim_time_)
   {
     // This node's clock starts at the wall time (never 0) and only ever moves forward.
@@ -122,64 +53,47 @@ TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
     sim_now_ = ros::Time(ros::WallTime::now().sec, ros::WallTime::now().nsec);
     ros::Time::setNow(sim_now_);
   }
-  pool_ = std::make_unique<physics::ThreadPool>();
-  live_.emplace(engine_, physics::TableState<double>());
-  if (!sim_time_)
-    clock_.setRate(ros::Time::now(), paused_ ? 0 : config_.real_time_factor);
-  setRack(rack, ros::Time::now());
+  try
+  {
+    table_.emplace(engine, p.table, p.rack, toStamp(ros::Time::now()));
+  }
+  catch (const std::invalid_argument& e)
+  {
+    throw std::runtime_error("~" + std::string(e.what()));
+  }
+  state_publisher_ = private_node.advertise<cue_sim::TableState>("state", 10);
+  marker_publisher_ = private_node.advertise<visualization_msgs::MarkerArray>("markers", 1, true);
+  event_publisher_ = private_node.advertise<cue_sim::Event>("events", 1000);
+  cue_publisher_ = private_node.advertise<visualization_msgs::Marker>("cue", 1, true);
+  preview_publisher_ = private_node.advertise<visualization_msgs::MarkerArray>("preview", 1, true);
+  shot_publisher_ = private_node.advertise<cue_sim::ExecutedShot>("shots", 100, true);
+  publishStaticFrames(p.urdf_xml);
+  // Listening to tf from the start: a cue pose in a robot's frame is then found at once, and a
+  // lookup never waits for the listener to fill.
+  tf_buffer_ = std::make_unique<tf2_ros::Buffer>();
+  tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_);
+  // One thread for the loop, one fewer than the cores for batches: the tick keeps a core.
+  pool_ = std::make_unique<physics::ThreadPool>(std::max(1u, std::thread::hardware_concurrency()) - 1);
   applied_config_ = TableNodeConfig::__getDefault__();
   reconfigure_ = std::make_unique<dynamic_reconfigure::Server<TableNodeConfig>>(private_node);
   reconfigure_->setCallback([this](TableNodeConfig& config, uint32_t level) { onReconfigure(config, level); });
   startAimMarker(private_node);
-  services_ = {
-      private_node.advertiseService("strike", &TableNode::onStrike, this),
-      private_node.advertiseService("strike_cue", &TableNode::onStrikeCue, this),
-      private_node.advertiseService("predict", &TableNode::onPredict, this),
-      private_node.advertiseService("predict_batch", &TableNode::onPredictBatch, this),
-      private_node.advertiseService("rack", &TableNode::onRack, this),
-      private_node.advertiseService("reset", &TableNode::onReset, this),
-      private_node.advertiseService("set_state", &TableNode::onSetState, this),
-      private_node.advertiseService("pause", &TableNode::onPause, this),
-      private_node.advertiseService("step", &TableNode::onStep, this),
-  };
+  advertiseServices(private_node);
   ROS_INFO("cue_sim: table '%s' (%zu cushions, %zu pockets), rack '%s', models %s/%s, tf at %.0f Hz",
-           table_->name().c_str(), table_->segments().size(), table_->pockets().size(), config_.initial_rack.c_str(),
-           models.ball_ball.c_str(), models.cushion.c_str(), config_.publish_rate);
-}
-
-void TableNode::loadNoise(ros::NodeHandle& private_node)
-{
-  // Off by default; the deviations default to those of the computational pool tournaments.
-  physics::ExecutionNoise& noise = config_.noise;
-  private_node.param("noise/enabled", config_.noise_enabled, false);
-  private_node.param("noise/speed", noise.speed, noise.speed);
-  private_node.param("noise/phi", noise.phi, noise.phi);
-  private_node.param("noise/theta", noise.theta, noise.theta);
-  private_node.param("noise/a", noise.a, noise.a);
-  private_node.param("noise/b", noise.b, noise.b);
-  private_node.param("noise/seed", config_.noise_seed, 0);
-  const std::string why = noise.validate();
-  if (!why.empty())
-    throw std::runtime_error("~" + why);
-  if (config_.noise_seed < 0)
-    throw std::runtime_error("~noise/seed must be >= 0");
-  live_cue_ = physics::NoisyCue(config_.noise_enabled ? noise : physics::ExecutionNoise::none(),
-                                static_cast<std::uint64_t>(config_.noise_seed));
+           p.table_model->name().c_str(), p.table_model->segments().size(), p.table_model->pockets().size(),
+           p.rack.c_str(), p.models.ball_ball.c_str(), p.models.cushion.c_str(), p.publish_rate);
 }
 
 void TableNode::startAimMarker(ros::NodeHandle& private_node)
 {
-  bool enabled = true;
-  private_node.param("aim_marker", enabled, enabled);
-  if (!enabled)
+  if (!parameters_.aim_marker)
     return;
   const auto strike = [this](const Shot& shot) {
-    Strike::Response response;
-    strikeLive(shot, ros::Time::now(), response);
-    if (response.success)
-      ROS_INFO("cue_sim: aim marker: %s", response.message.c_str());
+    const session::StrikeOutcome outcome = strikeLive(toSessionShot(shot), "aim_marker");
+    if (outcome.success)
+      ROS_INFO("cue_sim: aim marker: %s", outcome.message.c_str());
     else
-      ROS_WARN("cue_sim: aim marker: %s", response.message.c_str());
+      ROS_WARN("cue_sim: aim marker: %s", outcome.message.c_str());
   };
   const auto predict = [this](const Shot& shot) {
     Predict::Request request;
@@ -189,29 +103,8 @@ void TableNode::startAimMarker(ros::NodeHandle& private_node)
     if (!response.prediction.success)
       ROS_WARN("cue_sim: aim marker: %s", response.prediction.message.c_str());
   };
-  aim_marker_ = std::make_unique<AimMarker>(private_node.resolveName("aim"), config_.table_frame,
-                                            engine_->params().ball_radius, strike, predict);
-}
-
-void TableNode::loadTable(ros::NodeHandle& node, ros::NodeHandle& private_node)
-{
-  // The table comes from ~urdf_file, else the robot_description parameter, else ~table by name.
-  std::string urdf_file, urdf_xml, table_name = "7ft";
-  private_node.param("urdf_file", urdf_file, urdf_file);
-  private_node.param("table", table_name, table_name);
-  try
-  {
-    if (!urdf_file.empty())
-      urdf_xml = readFile(urdf_file);
-    else if (!node.getParam("robot_description", urdf_xml))
-      urdf_xml = readFile(tableUrdfPath(table_name));
-    table_ = std::make_shared<const physics::TableModel>(tableFromUrdf(urdf_xml, config_.table_frame));
-    publishStaticFrames(urdf_xml);
-  }
-  catch (const TableDescriptionError& e)
-  {
-    throw std::runtime_error(std::string("table description: ") + e.what());
-  }
+  aim_marker_ = std::make_unique<AimMarker>(private_node.resolveName("aim"), parameters_.table_frame,
+                                            parameters_.physics.ball_radius, strike, predict);
 }
 
 void TableNode::publishStaticFrames(const std::string& urdf_xml)
@@ -219,75 +112,49 @@ void TableNode::publishStaticFrames(const std::string& urdf_xml)
   // world -> table, and every link of the table description for rviz's RobotModel.
   std::vector<geometry_msgs::TransformStamped> frames;
   const ros::Time now = ros::Time::now();
-  frames.push_back(makeTransform(config_.world_frame, config_.table_frame, Eigen::Vector3d::Zero(),
+  frames.push_back(makeTransform(parameters_.world_frame, parameters_.table_frame, Eigen::Vector3d::Zero(),
                                  Eigen::Quaterniond::Identity(), now));
   for (const auto& link : fixedLinkTransforms(urdf_xml))
     frames.push_back(makeTransform(link.parent, link.child, link.translation, link.rotation, now));
   static_broadcaster_.sendTransform(frames);
 }
 
-double TableNode::catchUp(const ros::Time& stamp)
-{
-  const double now = std::max(clock_.at(stamp), live_->time());
-  if (live_->atRest())
-  {
-    live_->advance(now);  // nothing moves: no physics to do
-    applyPendingPhysics();
-    return now;
-  }
-  std::vector<physics::Event<double>> events;
-  try
-  {
-    live_->advance(now, &events);
-  }
-  catch (const physics::EventLimitError& e)
-  {
-    // Not reachable for strikes (they are simulated to rest first); kept so that the node
-    // never dies on a pathological state. The state is left at its last event, and the shot
-    // goes on with a new allowance of events at the next tick.
-    ROS_ERROR_THROTTLE(1.0, "cue_sim: %s", e.what());
-    live_->reset(live_->state());
-  }
-  for (const auto& e : events)
-    event_publisher_.publish(toEventMsg(e, *table_, clock_.stampOf(e.time, stamp), e.time));
-  applyPendingPhysics();  // between shots only
-  return now;
-}
-
-void TableNode::rebaseAtRest(const ros::Time& stamp)
-{
-  clock_.restart(stamp);
-  live_->reset(atTimeZero(live_->state()));
-}
-
 void TableNode::run()
 {
+  // Services on their own threads from here on: this thread only publishes.
+  light_spinner_ = std::make_unique<ros::AsyncSpinner>(kLightServiceThreads);
+  heavy_spinner_ = std::make_unique<ros::AsyncSpinner>(1, &heavy_queue_);
+  light_spinner_->start();
+  heavy_spinner_->start();
   // The balls' frames exist from the start, even on a table started paused.
-  tick(ros::Time::now());
+  tick();
   if (!sim_time_)
   {
-    ros::Rate rate(config_.publish_rate);
+    ros::Rate rate(parameters_.publish_rate);
     while (ros::ok())
     {
-      ros::spinOnce();
-      tick(ros::Time::now());
+      tick();
       rate.sleep();
     }
     return;
   }
-  // Sim time: the clock moves at real_time_factor x wall time, or one publish period per
-  // loop without waiting (as fast as possible), and not at all while paused.
-  const ros::WallDuration period(1.0 / config_.publish_rate);
+  // Sim time: /clock moves at real_time_factor x wall time, or one publish period per loop
+  // without waiting (as fast as possible) while the table runs; paused, at wall time, so that
+  // sim-time clients never wait on it.
+  const ros::WallDuration period(1.0 / parameters_.publish_rate);
   ros::WallTime last = ros::WallTime::now();
   while (ros::ok())
   {
-    ros::spinOnce();
     const ros::WallTime wall = ros::WallTime::now();
-    if (!paused_)
-      advanceSimClock(config_.real_time_factor == 0 ? ros::Duration(period.toSec())
-                                                    : ros::Duration((wall - last).toSec() * config_.real_time_factor));
+    bool paused = false;
+    {
+      std::lock_guard<std::mutex> lock(table_mutex_);
+      paused = table_->paused();
+    }
+    const double factor = paused && clock_factor_ == 0 ? 1.0 : clock_factor_;
+    advanceSimClock(factor == 0 ? ros::Duration(period.toSec()) : ros::Duration((wall - last).toSec() * factor));
     last = wall;
-    if (paused_ || config_.real_time_factor > 0)
+    if (factor > 0)
       period.sleep();
   }
 }
@@ -296,54 +163,69 @@ void TableNode::advanceSimClock(const ros::Duration& by)
 {
   if (by <= ros::Duration(0))
     return;
-  sim_now_ += by;
-  ros::Time::setNow(sim_now_);
   rosgraph_msgs::Clock clock;
-  clock.clock = sim_now_;
+  {
+    std::lock_guard<std::mutex> lock(table_mutex_);
+    sim_now_ += by;
+    ros::Time::setNow(sim_now_);
+    clock.clock = sim_now_;
+  }
   clock_publisher_.publish(clock);
-  tick(sim_now_);
+  tick();
 }
 
-void TableNode::tick(const ros::Time& stamp)
+void TableNode::tick()
 {
-  if (stamp <= last_stamp_)
-    return;  // tf must never see the same stamp twice (TF_REPEATED_DATA)
-  catchUp(stamp);
-  // Balls at rest are where they were: no physics at all until something moves them.
-  if (!live_->atRest() || !snapshot_at_rest_)
+  std::vector<session::StampedEvent> events;
+  std::vector<physics::Ball<double>> balls;
+  bool at_rest = false;
+  long layout = 0;
+  ros::Time stamp;
   {
-    snapshot_ = live_->snapshot();
-    snapshot_at_rest_ = live_->atRest();
-    // The aim marker waits at the cue ball once everything rests.
-    const int cue = live_->state().indexOf(0);
-    if (snapshot_at_rest_ && aim_marker_ && cue >= 0 && snapshot_[cue].inPlay())
-      aim_marker_->place(snapshot_[cue].r.head<2>());
+    // The stamp is taken under the lock, as the services take theirs: no request can come
+    // between it and the table it shows.
+    std::lock_guard<std::mutex> lock(table_mutex_);
+    stamp = now();
+    if (stamp <= last_stamp_)
+      return;  // tf must never see the same stamp twice (TF_REPEATED_DATA)
+    table_->advanceTo(toStamp(stamp), &events);
+    balls = table_->balls();
+    at_rest = table_->atRest();
+    layout = table_->layoutVersion();
+    if (layout != markers_drawn_)
+      publishMarkers(*table_);
+    last_stamp_ = stamp;
   }
-  const std::vector<Ball<double>>& balls = snapshot_;
+  const physics::TableModel& table = *parameters_.table_model;
+  for (const auto& e : events)
+    event_publisher_.publish(toEventMsg(e.event, table, toRosTime(e.stamp), e.event.time));
   std::vector<geometry_msgs::TransformStamped> transforms;
   transforms.reserve(balls.size());
   for (const auto& b : balls)
-    transforms.push_back(makeTransform(config_.table_frame, config_.ball_frame_prefix + std::to_string(b.id), b.r,
-                                       Eigen::Quaterniond::Identity(), stamp));
+    transforms.push_back(makeTransform(parameters_.table_frame, parameters_.ball_frame_prefix + std::to_string(b.id),
+                                       b.r, Eigen::Quaterniond::Identity(), stamp));
   tf_broadcaster_.sendTransform(transforms);
-  state_publisher_.publish(toTableStateMsg(balls, *table_, stamp, config_.table_frame));
-  last_stamp_ = stamp;
+  state_publisher_.publish(toTableStateMsg(balls, table, stamp, parameters_.table_frame));
+  // The aim marker waits at the cue ball once everything rests.
+  if (!at_rest)
+    aim_placed_at_ = -1;
+  else if (aim_marker_ && aim_placed_at_ != layout)
+  {
+    aim_placed_at_ = layout;
+    for (const auto& b : balls)
+      if (b.id == 0 && b.inPlay())
+        aim_marker_->place(b.r.head<2>());
+  }
 }
 
-void TableNode::setRack(PhysicsState rack, const ros::Time& stamp)
+void TableNode::publishMarkers(const session::LiveTable& table)
 {
-  clock_.restart(stamp);
-  live_->reset(atTimeZero(rack));
-  snapshot_at_rest_ = false;
-  last_rack_ = rack;
-  publishMarkers();
-}
-
-void TableNode::publishMarkers()
-{
-  marker_publisher_.publish(tableMarkers(*table_, live_->state(), engine_->params().ball_radius,
-                                         engine_->params().cushion_height,
-                                         {config_.table_frame, config_.ball_frame_prefix}));
+  const physics::PhysicsParams<double>& params = table.engine().params();
+  physics::TableState<double> state;
+  state.balls = table.balls();
+  marker_publisher_.publish(tableMarkers(table.table(), state, params.ball_radius, params.cushion_height,
+                                         {parameters_.table_frame, parameters_.ball_frame_prefix}));
+  markers_drawn_ = table.layoutVersion();
 }
 
 }  // namespace cue_sim

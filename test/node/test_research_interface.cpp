@@ -337,7 +337,16 @@ TEST_F(ResearchInterfaceTest, StrikeCueFindsTheBallAndTheStrikeFromThePoseInAnyF
   in_base.pose.orientation.z = q_base.z();
   in_base.pose.orientation.w = q_base.w();
 
-  const cue_sim::StrikeCue::Response struck = table_.strikeCue(in_base, 1.0);
+  // The node waits ~tf_timeout for a frame, not for it to appear: a robot asks again once its
+  // base frame is on tf. Until then every call is refused and changes nothing.
+  cue_sim::StrikeCue::Response struck = table_.strikeCue(in_base, 1.0);
+  const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(5);
+  while (!struck.success && struck.message.find("cannot transform") != std::string::npos &&
+         ros::WallTime::now() < until)
+  {
+    ros::WallDuration(0.05).sleep();
+    struck = table_.strikeCue(in_base, 1.0);
+  }
   ASSERT_TRUE(struck.success) << struck.message;
   EXPECT_EQ(struck.shot.ball_id, 0);
   EXPECT_NEAR(struck.shot.phi, planned.phi, 1e-9);

@@ -97,30 +97,34 @@ TEST_F(SimControlTest, TheClockRunsAheadOfTheWallNeverZeroAndNeverBackAcrossRese
     ASSERT_LT(seen[i - 1], seen[i]) << "clock message " << i;
 }
 
-TEST_F(SimControlTest, PauseStopsTheClockAndStepMovesItByExactlyTheDuration)
+TEST_F(SimControlTest, PauseFreezesThePhysicsWhileTheClockRunsAndAStepMovesItByTheDuration)
 {
   EXPECT_FALSE(step(0.1).success) << "a step needs a paused table";
   ASSERT_TRUE(table_.rack("custom", {0, 1}, {{-0.5, 0.0}, {0.3, 0.0}}).success);
   pause(true);
-  // This process's clock follows /clock: let the messages already on their way arrive.
-  ros::WallDuration(0.3).sleep();
-  const ros::Time paused_at = ros::Time::now();
-  ros::WallDuration(0.3).sleep();
-  EXPECT_EQ(ros::Time::now(), paused_at);
   const cue_sim::Strike::Response struck = table_.strike(TableClient::shot(0, 1.0, 0.0));
   ASSERT_TRUE(struck.success) << struck.message;
-  EXPECT_EQ(struck.stamp, paused_at);
+  // The clock runs on while the table is paused (a sim-time client never waits on it), and
+  // the struck ball waits at its spot.
+  ros::WallDuration(0.3).sleep();
+  const ros::Time later = ros::Time::now();
+  EXPECT_GT(later, struck.stamp + ros::Duration(0.1));
+  const cue_sim::TableStateConstPtr waiting = table_.stateAfter(later);
+  EXPECT_EQ(TableClient::byId(waiting->balls).at(0).position.x, -0.5);
 
   const cue_sim::Step::Response stepped = step(0.25);
   ASSERT_TRUE(stepped.success) << stepped.message;
-  EXPECT_EQ(stepped.stamp - struck.stamp, ros::Duration(0.25));
-  ros::WallDuration(0.3).sleep();
-  EXPECT_EQ(ros::Time::now(), stepped.stamp);
-  // The ~state stamped at the step's end has the cue ball 0.25 s into its shot.
+  EXPECT_GE(stepped.stamp, later);
+  // The ~state from the step on has the cue ball 0.25 s into its shot, and stays there.
   const cue_sim::TableStateConstPtr after = table_.stateAfter(stepped.stamp);
-  EXPECT_EQ(after->header.stamp, stepped.stamp);
+  ros::WallDuration(0.2).sleep();
+  const cue_sim::TableStateConstPtr still = table_.stateAfter(ros::Time::now());
+  EXPECT_GT(still->header.stamp, after->header.stamp);
   EXPECT_TRUE(after->moving);
-  EXPECT_GT(TableClient::byId(after->balls).at(0).position.x, -0.5 + 0.2);
+  const double x = TableClient::byId(after->balls).at(0).position.x;
+  EXPECT_GT(x, -0.5 + 0.2);
+  EXPECT_LT(x, -0.5 + 0.5);  // the cue ball leaves a 1 m/s cue at about 1.5 m/s
+  EXPECT_EQ(TableClient::byId(still->balls).at(0).position.x, x);
 
   EXPECT_FALSE(step(0).success);
   const cue_sim::Step::Response too_long = step(61);
@@ -167,7 +171,7 @@ TEST_F(SimControlTest, SetStatePlacesMovingBallsAndRefusesBadOnesByField)
   ASSERT_TRUE(r.success) << r.message;
   const cue_sim::Step::Response stepped = step(0.1);
   ASSERT_TRUE(stepped.success) << stepped.message;
-  EXPECT_EQ(stepped.stamp - r.stamp, ros::Duration(0.1));
+  EXPECT_GE(stepped.stamp, r.stamp);
   const auto placed = table_.stateAfter(stepped.stamp);
   pause(false);
   const auto balls = TableClient::byId(placed->balls);
@@ -186,7 +190,6 @@ TEST_F(SimControlTest, EveryBallTransformInTheBagIsTheExactTrajectoryAtItsStamp)
   ASSERT_TRUE(table_.rack("custom", ids, {{-0.6, 0.0}, {0.0, 0.02}, {0.15, -0.2}, {0.3, 0.25}}).success);
   const cue_sim::TableState rack = *table_.atRest(10);
   ASSERT_EQ(rack.balls.size(), ids.size());
-  pause(true);
   const std::string bag_path = std::string(CUE_SIM_TEST_DIR) + "/sim_shot_test.bag";
   std::remove(bag_path.c_str());
   std::thread recorder([&] {
@@ -198,7 +201,6 @@ TEST_F(SimControlTest, EveryBallTransformInTheBagIsTheExactTrajectoryAtItsStamp)
   const cue_sim::Shot shot = TableClient::shot(0, 1.5, 0.05, 0.1, 0.2, -0.1);
   const cue_sim::Strike::Response struck = table_.strike(shot);
   ASSERT_TRUE(struck.success) << struck.message;
-  pause(false);
   table_.atRest(60);
   ros::WallDuration(0.5).sleep();
   EXPECT_EQ(std::system("rosnode kill /record > /dev/null 2>&1"), 0);

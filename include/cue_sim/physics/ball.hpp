@@ -23,6 +23,16 @@ enum class Motion : std::uint8_t
 
 const char* motionName(Motion motion);
 
+/// The fastest a ball may be given (a placement, a scene file, a request): far beyond what a cue
+/// or a collision gives (the hardest break sends the cue ball off at about 13 m/s, with at most
+/// about 500 rad/s of spin from a 12 m/s cue at the largest tip offset), and small enough that
+/// every term of a trajectory over EngineLimits::max_shot_time stays far inside double's range.
+struct BallLimits
+{
+  static constexpr double max_speed = 100.0;  ///< |v| [m/s]
+  static constexpr double max_spin = 1e5;     ///< |w| [rad/s]
+};
+
 template <typename S>
 struct Ball
 {

@@ -91,6 +91,8 @@ public:
   ~Engine();
 
   const TableModel& table() const { return *table_; }
+  /// The table, to share with another engine on it.
+  const std::shared_ptr<const TableModel>& tableShared() const { return table_; }
   const PhysicsParams<S>& params() const { return params_; }
   const ModelChoice& models() const { return model_choice_; }
   const EngineLimits& limits() const { return limits_; }

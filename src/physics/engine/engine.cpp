@@ -225,6 +225,14 @@ std::string whyBallInvalid(const TableModel& table, const Ball<S>& b, S R, doubl
     return label + ": position, velocity, angular velocity and time must be finite";
   if (!b.inPlay())
     return {};
+  const double speed = static_cast<double>(b.v.norm()), spin = static_cast<double>(b.w.norm());
+  if (speed > BallLimits::max_speed || spin > BallLimits::max_spin)
+  {
+    std::ostringstream why;
+    why << label << ": speed " << speed << " m/s and spin " << spin << " rad/s must be at most "
+        << BallLimits::max_speed << " m/s and " << BallLimits::max_spin << " rad/s";
+    return why.str();
+  }
   if (std::abs(static_cast<double>(b.r.z() - R)) > tolerance)
     return label + ": a ball on the cloth has z = R = " + std::to_string(static_cast<double>(R)) + " m";
   const std::string where =

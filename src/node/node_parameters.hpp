@@ -1,0 +1,41 @@
+// table_node's parameters (config/table_node.yaml, config/physics.yaml): read once at start,
+// each checked with its name, its value and the accepted range.
+#pragma once
+
+#include <ros/ros.h>
+
+#include <memory>
+#include <string>
+
+#include "cue_sim/physics/collision_models.hpp"
+#include "cue_sim/physics/physics_params.hpp"
+#include "cue_sim/physics/table_model.hpp"
+#include "cue_sim/session/live_table.hpp"
+
+namespace cue_sim
+{
+struct NodeParameters
+{
+  double publish_rate = 100.0;  ///< [Hz] tf, ~state, /clock
+  std::string table_frame = "table";
+  std::string world_frame = "world";
+  std::string ball_frame_prefix = "ball_";
+  std::string rack = "eight";
+  double real_time_factor = 1.0;  ///< 0: as fast as possible (use_sim_time only)
+  double tf_timeout = 0.05;       ///< [s] ~strike_cue waits at most this long for tf
+  bool aim_marker = true;
+  session::LiveTableOptions table;
+  physics::PhysicsParams<double> physics;
+  physics::ModelChoice models;
+  std::shared_ptr<const physics::TableModel> table_model;
+  std::string urdf_xml;  ///< the table description, for its static frames
+};
+
+/// Longest accepted ~tf_timeout [s]: a lookup holds one service thread at most this long.
+constexpr double kMaxTfTimeout = 1.0;
+
+/// Reads and checks every parameter; throws std::runtime_error naming the first one that is
+/// wrong, its value and its accepted range.
+NodeParameters readNodeParameters(ros::NodeHandle& node, ros::NodeHandle& private_node, bool sim_time);
+
+}  // namespace cue_sim

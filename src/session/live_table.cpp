@@ -1,0 +1,431 @@
+#include "cue_sim/session/live_table.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+#include "cue_sim/physics/rack.hpp"
+
+namespace cue_sim
+{
+namespace session
+{
+namespace
+{
+/// The cue drawn at a strike stops this far short of the ball [m].
+constexpr double kCueDrawGap = 0.005;
+
+Outcome done(const std::string& message)
+{
+  return {true, message};
+}
+Outcome refused(const std::string& why)
+{
+  return {false, why};
+}
+
+/// The balls in play sitting on the cloth with radius R: where they are under another radius.
+physics::TableState<double> onCloth(physics::TableState<double> state, double R)
+{
+  for (auto& b : state.balls)
+    if (b.inPlay())
+      b.r.z() = R;
+  return state;
+}
+
+std::string seconds(Stamp stamp)
+{
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(9) << toSeconds(stamp);
+  return text.str();
+}
+}  // namespace
+
+physics::TableState<double> atTimeZero(physics::TableState<double> state)
+{
+  state.time = state.event_time = 0;
+  state.events_this_instant = 0;
+  for (auto& b : state.balls)
+    b.time = 0;
+  return state;
+}
+
+std::string LiveTableOptions::whyInvalid() const
+{
+  std::ostringstream why;
+  if (!(rack_gap >= 0 && rack_gap < 0.01))
+    why << "rack_gap must be in [0, 0.01) m, got " << rack_gap;
+  else if (!(real_time_factor > 0 && real_time_factor <= kMaxRealTimeFactor))
+    why << "real_time_factor must be in (0, " << kMaxRealTimeFactor << "], got " << real_time_factor;
+  else if (!noise.validate().empty())
+    why << noise.validate();
+  else if (limits.max_batch_shots < 1 || limits.max_samples < 1 || limits.max_samples_per_shot < 1 ||
+           limits.max_reply_bytes < 1)
+    why << "max_batch_shots, max_samples, max_samples_per_shot and max_reply_bytes must be at least 1";
+  return why.str();
+}
+
+LiveTable::LiveTable(std::shared_ptr<const physics::Engine<double>> engine, const LiveTableOptions& options,
+                     const std::string& rack, Stamp now)
+  : engine_(std::move(engine)),
+    options_(options),
+    live_(engine_, physics::TableState<double>()),
+    cue_(options.noise_enabled ? options.noise : physics::ExecutionNoise::none(), options.noise_seed),
+    paused_(options.paused)
+{
+  const std::string why = options_.whyInvalid();
+  if (!why.empty())
+    throw std::invalid_argument(why);
+  RackRequest request;
+  request.layout = rack;
+  physics::TableState<double> layout;
+  const std::string bad_rack = whyNotRack(request, layout);
+  if (!bad_rack.empty())
+    throw std::invalid_argument("rack: " + bad_rack);
+  clock_.setRate(now, paused_ ? 0 : options_.real_time_factor);
+  last_rack_ = layout;
+  startFrom(atTimeZero(layout), now);
+}
+
+void LiveTable::advanceTo(Stamp now, std::vector<StampedEvent>* events)
+{
+  last_stamp_ = std::max(last_stamp_, now);
+  const double time = std::max(clock_.at(now), live_.time());
+  if (live_.atRest())
+    live_.advance(time);  // nothing moves: no physics to do
+  else
+  {
+    std::vector<physics::Event<double>> happened;
+    try
+    {
+      live_.advance(time, &happened);
+    }
+    catch (const physics::EventLimitError&)
+    {
+      // Not reachable for strikes (they run to rest first) nor for placements at rest; kept so
+      // that the table goes on from its last event with a new allowance of events.
+      live_.reset(live_.state());
+    }
+    if (events)
+      for (const auto& e : happened)
+        events->push_back({e, clock_.stampOf(e.time, now)});
+  }
+  applyPendingPhysics();
+  if (!live_.atRest() || !balls_at_rest_)
+  {
+    balls_ = live_.snapshot();
+    balls_at_rest_ = live_.atRest();
+  }
+}
+
+void LiveTable::startFrom(physics::TableState<double> state, Stamp now)
+{
+  clock_.restart(now);
+  live_.reset(std::move(state));
+  balls_at_rest_ = false;
+  ++layout_version_;
+  advanceTo(now);
+}
+
+void LiveTable::restartAtRest(Stamp now)
+{
+  clock_.restart(now);
+  live_.reset(atTimeZero(live_.state()));
+}
+
+void LiveTable::applyPendingPhysics()
+{
+  if (!pending_engine_ || !live_.atRest())
+    return;
+  std::shared_ptr<const physics::Engine<double>> engine = std::move(pending_engine_);
+  pending_engine_.reset();
+  const physics::TableState<double> resting = onCloth(live_.state(), engine->params().ball_radius);
+  if (!engine->whyInvalid(resting).empty())
+    return;  // the balls changed since and would not fit: setPhysics checks again
+  engine_ = std::move(engine);
+  live_ = physics::Simulation<double>(engine_, resting);
+  last_rack_ = onCloth(last_rack_, engine_->params().ball_radius);
+  ++layout_version_;  // the ball radius or cushion height may have changed
+}
+
+Outcome LiveTable::pause(bool paused, Stamp now)
+{
+  advanceTo(now);
+  paused_ = paused;
+  clock_.setRate(now, paused_ ? 0 : options_.real_time_factor);
+  return done(paused_ ? "paused" : "running");
+}
+
+Outcome LiveTable::step(double duration, Stamp now)
+{
+  if (!paused_)
+    return refused("not paused: a step advances a paused table (~pause first)");
+  if (!(duration > 0 && duration <= kMaxStep))
+  {
+    std::ostringstream why;
+    why << "duration must be in (0, " << kMaxStep << "] s, got " << duration;
+    return refused(why.str());
+  }
+  advanceTo(now);
+  clock_.step(now, duration);
+  advanceTo(now);
+  std::ostringstream message;
+  message << "stepped " << duration << " s";
+  return done(message.str());
+}
+
+Outcome LiveTable::setRealTimeFactor(double factor, Stamp now)
+{
+  if (!(factor > 0 && factor <= kMaxRealTimeFactor))
+  {
+    std::ostringstream why;
+    why << "real_time_factor must be in (0, " << kMaxRealTimeFactor << "], got " << factor;
+    return refused(why.str());
+  }
+  advanceTo(now);
+  options_.real_time_factor = factor;
+  if (!paused_)
+    clock_.setRate(now, factor);
+  return done("real_time_factor " + std::to_string(factor));
+}
+
+Outcome LiveTable::setPhysics(const physics::PhysicsParams<double>& params, const physics::ModelChoice& models,
+                              Stamp now)
+{
+  const std::string why = params.validate();
+  if (!why.empty())
+    return refused(why);
+  std::shared_ptr<const physics::Engine<double>> engine;
+  try
+  {
+    engine = std::make_shared<const physics::Engine<double>>(engine_->tableShared(), params, models, engine_->limits());
+  }
+  catch (const std::exception& e)
+  {
+    return refused(e.what());
+  }
+  advanceTo(now);
+  // A larger ball must still fit where the balls are.
+  const std::string fit = engine->whyInvalid(onCloth(live_.state(), params.ball_radius));
+  if (!fit.empty())
+    return refused("the balls on the table would not fit: " + fit);
+  pending_engine_ = std::move(engine);
+  advanceTo(now);  // applies it if the balls rest
+  return done(pending_engine_ ? "new physics: applies when the balls rest" : "new physics applied");
+}
+
+StrikeOutcome LiveTable::strike(const Shot& shot, Stamp now)
+{
+  StrikeOutcome outcome;
+  outcome.executed = shot;
+  advanceTo(now);
+  std::string why = live_.whyNotStrikable(shot.ball_id, shot.strike);
+  if (why.empty() && !live_.atRest() && !options_.allow_strike_while_moving)
+    why = "balls are still moving (set ~allow_strike_while_moving to strike anyway)";
+  if (!why.empty())
+  {
+    outcome.message = why;
+    return outcome;
+  }
+  // A strike from rest starts at physics time 0, like a prediction.
+  if (live_.atRest())
+    restartAtRest(now);
+  physics::NoisyCue cue = cue_;
+  outcome.executed.strike = cue.execute(shot.strike, engine_->params().ball_radius);
+  // Run the shot to rest on a copy first: it answers the request, and a shot the engine cannot
+  // finish is refused before it touches the table.
+  const ShotPrediction prediction = predictShot(*engine_, live_.state(), outcome.executed, PredictionOptions{});
+  if (!prediction.success)
+  {
+    outcome.message = prediction.message;
+    return outcome;
+  }
+  cue_ = cue;
+  const physics::Ball<double> before = live_.snapshot()[live_.state().indexOf(shot.ball_id)];
+  outcome.cue = physics::cueStickFor(before, outcome.executed.strike, engine_->params(), kCueDrawGap);
+  live_.strike(shot.ball_id, outcome.executed.strike);
+  balls_at_rest_ = false;
+  const physics::Ball<double>& ball = live_.state().balls[live_.state().indexOf(shot.ball_id)];
+  outcome.ball_velocity = ball.v;
+  outcome.ball_angular_velocity = ball.w;
+  outcome.success = true;
+  outcome.stamp = now;
+  outcome.time_to_rest = prediction.time_to_rest;
+  outcome.num_events = prediction.events.size();
+  outcome.message = "struck ball " + std::to_string(shot.ball_id) + " at " + seconds(now) + "; " + prediction.message;
+  advanceTo(now);
+  return outcome;
+}
+
+StrikeOutcome LiveTable::strikeWithCue(const physics::CueStick& cue, double speed, Stamp now, Shot& aimed)
+{
+  advanceTo(now);
+  physics::CueAim aim;
+  const std::string why = physics::aimCue(balls_, engine_->params(), cue, speed, aim);
+  if (!why.empty())
+  {
+    StrikeOutcome outcome;
+    outcome.message = why;
+    return outcome;
+  }
+  aimed = Shot{aim.ball_id, aim.strike};
+  return strike(aimed, now);
+}
+
+std::string LiveTable::predictionStart(const std::vector<BallInput>& balls, Stamp now, PredictionStart& start)
+{
+  start.engine = engine_;
+  if (balls.empty())
+  {
+    advanceTo(now);
+    if (!live_.atRest())
+      return "the live table is moving: predict from it once it rests, or pass the balls to start from";
+    start.table = atTimeZero(live_.state());
+    return "";
+  }
+  std::string why = stateFromInputs(balls, table(), engine_->params().ball_radius, start.table);
+  if (why.empty())
+  {
+    why = engine_->whyInvalid(start.table);
+    if (!why.empty())
+      why = "balls: " + why;
+  }
+  return why;
+}
+
+std::string LiveTable::whyNotRack(const RackRequest& request, physics::TableState<double>& rack) const
+{
+  const double R = engine_->params().ball_radius;
+  std::ostringstream why;
+  if (!(request.jitter >= 0 && request.jitter <= options_.rack_gap / 2))
+  {
+    why << "jitter must be in [0, rack_gap / 2] = [0, " << options_.rack_gap / 2 << "] m, got " << request.jitter;
+    return why.str();
+  }
+  rack = physics::TableState<double>();
+  if (request.layout == "custom")
+  {
+    if (request.ids.size() != request.positions.size())
+      return "ids and positions must have the same length (got " + std::to_string(request.ids.size()) + " and " +
+             std::to_string(request.positions.size()) + ")";
+    if (request.jitter != 0)
+      return "jitter is for the standard layouts, not 'custom'";
+    for (std::size_t i = 0; i < request.ids.size(); ++i)
+    {
+      BallInput input;
+      input.id = request.ids[i];
+      input.position = physics::Vec3<double>(request.positions[i].x(), request.positions[i].y(), R);
+      physics::Ball<double> b;
+      const std::string bad = ballFromInput(input, "balls[" + std::to_string(i) + "]", table(), R, b);
+      if (!bad.empty())
+        return bad;
+      rack.balls.push_back(b);
+    }
+  }
+  else
+  {
+    if (!request.ids.empty() || !request.positions.empty())
+      return "ids and positions are for layout 'custom' only";
+    const std::vector<std::string> names = physics::rackNames();
+    if (std::find(names.begin(), names.end(), request.layout) == names.end())
+      return "layout must be one of eight, nine, empty, custom; got '" + request.layout + "'";
+    physics::RackOptions options;
+    options.gap = options_.rack_gap;
+    options.jitter = request.jitter;
+    options.seed = request.seed;
+    rack = physics::rackLayout<double>(request.layout, table(), R, options);
+  }
+  const std::string invalid = engine_->whyInvalid(rack);
+  if (invalid.empty())
+    return "";
+  if (request.layout == "custom")
+    return "positions: " + invalid;
+  why << "layout '" << request.layout << "' does not fit table '" << table().name() << "' with ball_radius " << R
+      << " m: " << invalid;
+  return why.str();
+}
+
+Outcome LiveTable::rack(const RackRequest& request, Stamp now)
+{
+  advanceTo(now);
+  physics::TableState<double> layout;
+  const std::string why = whyNotRack(request, layout);
+  if (!why.empty())
+    return refused(why);
+  last_rack_ = layout;
+  startFrom(atTimeZero(layout), now);
+  return done("racked '" + request.layout + "': " + std::to_string(layout.balls.size()) + " balls");
+}
+
+Outcome LiveTable::reset(Stamp now)
+{
+  advanceTo(now);
+  const std::string why = engine_->whyInvalid(last_rack_);
+  if (!why.empty())
+    return refused("the last rack does not fit the physics now (rack again): " + why);
+  startFrom(atTimeZero(last_rack_), now);
+  return done("back to the last rack (" + std::to_string(last_rack_.balls.size()) + " balls)");
+}
+
+Outcome LiveTable::setState(const std::vector<BallInput>& balls, Stamp now)
+{
+  physics::TableState<double> state;
+  std::string why = stateFromInputs(balls, table(), engine_->params().ball_radius, state);
+  if (why.empty() && state.balls.empty())
+    why = "balls: give at least one ball (~set_state replaces every ball on the table)";
+  if (why.empty())
+  {
+    why = engine_->whyInvalid(state);
+    if (!why.empty())
+      why = "balls: " + why;
+  }
+  if (!why.empty())
+    return refused(why);
+  advanceTo(now);
+  startFrom(state, now);  // every ball at time 0: now
+  return done("replaced the table by " + std::to_string(state.balls.size()) + " balls" +
+              (state.anyMoving() ? ", some moving" : ", all at rest"));
+}
+
+Outcome LiveTable::placeBall(const BallInput& input, Stamp now)
+{
+  physics::Ball<double> ball;
+  const std::string why = ballFromInput(input, "ball", table(), engine_->params().ball_radius, ball);
+  if (!why.empty())
+    return refused(why);
+  advanceTo(now);
+  const std::string where = live_.whyNotPlaceable(ball);
+  if (!where.empty())
+    return refused("ball: " + where);
+  const bool moved = live_.state().indexOf(ball.id) >= 0;
+  if (live_.atRest())
+    restartAtRest(now);
+  live_.place(ball);
+  balls_at_rest_ = false;
+  ++layout_version_;
+  advanceTo(now);
+  return done(std::string(moved ? "moved" : "placed") + " ball " + std::to_string(ball.id));
+}
+
+Outcome LiveTable::removeBall(int id, Stamp now)
+{
+  advanceTo(now);
+  if (live_.state().indexOf(id) < 0)
+  {
+    std::string on_table;
+    for (const auto& b : live_.state().balls)
+      on_table += (on_table.empty() ? "" : ", ") + std::to_string(b.id);
+    return refused("ball_id " + std::to_string(id) +
+                   " is not on the table (on it: " + (on_table.empty() ? "none" : on_table) + ")");
+  }
+  live_.remove(id);
+  balls_at_rest_ = false;
+  ++layout_version_;
+  advanceTo(now);
+  return done("removed ball " + std::to_string(id));
+}
+
+}  // namespace session
+}  // namespace cue_sim
