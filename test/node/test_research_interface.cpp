@@ -11,6 +11,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <vector>
@@ -500,9 +501,20 @@ TEST_F(ResearchInterfaceTest, ReconfigureStartsFromTheNodesParametersAndChangesP
   p = table_.predict(gentle, {lone}, 0.01);
   EXPECT_NEAR(p.time_to_rest, restTime(p, kMuRoll), 1e-12);
 
-  // An invalid value is refused, and the last valid one stays.
-  EXPECT_EQ(doubleOf(reconfigure("/table", {{"mu_slide", -1}}), "mu_slide"), kMuSlide);
+  // A value that is not a number, or out of a range that depends on the others, is refused, and
+  // the last valid one stays; one beyond its declared range is clamped to it by
+  // dynamic_reconfigure, as rqt's sliders show it.
+  EXPECT_EQ(doubleOf(reconfigure("/table", {{"mu_slide", std::nan("")}}), "mu_slide"), kMuSlide);
+  EXPECT_EQ(doubleOf(reconfigure("/table", {{"real_time_factor", std::nan("")}}), "real_time_factor"), 1.0);
+  EXPECT_EQ(doubleOf(reconfigure("/table", {{"cushion_height", 0.5}}), "cushion_height"), 0.036576);
   EXPECT_EQ(table_.predict(gentle, {lone}, 0.01).time_to_rest, p.time_to_rest);
+  EXPECT_EQ(doubleOf(reconfigure("/table", {{"e_ball", 1.5}}), "e_ball"), 1.0);
+  EXPECT_EQ(doubleOf(reconfigure("/table", {{"gravity", std::numeric_limits<double>::infinity()}}), "gravity"), 30);
+  reconfigure("/table", {{"e_ball", 0.95}, {"gravity", kGravity}});
+  // The node is alive and strikes after all of it.
+  const cue_sim::Strike::Response alive = table_.strike(gentle);
+  EXPECT_TRUE(alive.success) << alive.message;
+  table_.atRest(20);
 
   // Another model gives other physics; back again, the same as before.
   ASSERT_TRUE(table_.rack("custom", kIds, kPositions).success);

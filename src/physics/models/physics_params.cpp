@@ -26,7 +26,7 @@ std::string PhysicsParams<S>::validate() const
   {
     const double value = p.*field.member;
     if (std::isnan(field.min))
-      continue;  // a range of its own, below
+      continue;                                       // a range of its own, below
     if (!(value >= field.min && value <= field.max))  // NaN too
     {
       std::ostringstream range;
@@ -55,31 +55,14 @@ template struct PhysicsParams<long double>;
 const std::vector<ParamField>& physicsParamFields()
 {
   using P = PhysicsParams<double>;
-  // Where a range is wider than the physical one, the models hold across it and the soak
-  // campaign (soak) checks them there.
   static const char* const kPositive = "the models hold for any positive value; beyond these bounds none is checked";
   static const char* const kFriction = "0 is frictionless; Coulomb coefficients beyond the upper bound are not checked";
   static const char* const kRestitution = "0 is perfectly plastic, 1 perfectly elastic; above 1 would create energy";
   static const std::vector<ParamField> fields = {
-      {"ball_mass", &P::ball_mass, "kg", 1e-3, 10.0, kPositive},
-      {"ball_radius", &P::ball_radius, "m", 1e-3, 1.0, kPositive},
-      {"gravity", &P::gravity, "m/s^2", 0.1, 30.0,
-       "from a hundredth of the Earth's to three times it: the range the soak campaign checks (below 0.1 a "
-       "rolling ball outlasts max_shot_time)"},
-      {"mu_slide", &P::mu_slide, "-", 0.0, 100.0, kFriction},
-      {"mu_roll", &P::mu_roll, "-", 0.0, 10.0, kFriction},
-      {"mu_spin", &P::mu_spin, "-", 0.0, 10.0, kFriction},
-      {"e_ball", &P::e_ball, "-", 0.0, 1.0, kRestitution},
-      {"mu_ball_a", &P::mu_ball_a, "-", 0.0, 10.0, kFriction},
-      {"mu_ball_b", &P::mu_ball_b, "-", 0.0, 10.0, kFriction},
-      {"mu_ball_c", &P::mu_ball_c, "s/m", 0.0, 100.0,
-       "the decay of mu_b with the slip speed: 0 makes it constant; faster decays are not checked"},
-      {"e_cushion", &P::e_cushion, "-", 0.0, 1.0, kRestitution},
-      {"f_cushion", &P::f_cushion, "-", 0.0, 10.0, kFriction},
-      {"cushion_height", &P::cushion_height, "m", NAN, NAN, "strictly between R and 2R (validate says why)"},
-      {"cue_mass", &P::cue_mass, "kg", 1e-3, 100.0, kPositive},
-      {"cue_end_mass", &P::cue_end_mass, "kg", 1e-6, 100.0, kPositive},
-      {"cue_tip_radius", &P::cue_tip_radius, "m", 0.0, 1.0, "0 is a point tip; the strike model holds for any"},
+#define CUE_SIM_PARAM(name, unit, default_value, min, max, description, why)                                           \
+  {#name, &P::name, unit, min, max, why, description},
+#include "cue_sim/physics/physics_params.def"
+#undef CUE_SIM_PARAM
   };
   return fields;
 }
