@@ -17,15 +17,6 @@ namespace
 /// The cue drawn at a strike stops this far short of the ball [m].
 constexpr double kCueDrawGap = 0.005;
 
-Outcome done(const std::string& message)
-{
-  return {true, message};
-}
-Outcome refused(const std::string& why)
-{
-  return {false, why};
-}
-
 /// The balls in play sitting on the cloth with radius R: where they are under another radius.
 physics::TableState<double> onCloth(physics::TableState<double> state, double R)
 {
@@ -155,25 +146,25 @@ Outcome LiveTable::pause(bool paused, Stamp now)
   advanceTo(now);
   paused_ = paused;
   clock_.setRate(now, paused_ ? 0 : options_.real_time_factor);
-  return done(paused_ ? "paused" : "running");
+  return Outcome::done(paused_ ? "paused" : "running");
 }
 
 Outcome LiveTable::step(double duration, Stamp now)
 {
   if (!paused_)
-    return refused("not paused: a step advances a paused table (~pause first)");
+    return Outcome::refused("not paused: a step advances a paused table (~pause first)");
   if (!(duration > 0 && duration <= kMaxStep))
   {
     std::ostringstream why;
     why << "duration must be in (0, " << kMaxStep << "] s, got " << duration;
-    return refused(why.str());
+    return Outcome::refused(why.str());
   }
   advanceTo(now);
   clock_.step(now, duration);
   advanceTo(now);
   std::ostringstream message;
   message << "stepped " << duration << " s";
-  return done(message.str());
+  return Outcome::done(message.str());
 }
 
 Outcome LiveTable::setRealTimeFactor(double factor, Stamp now)
@@ -182,13 +173,13 @@ Outcome LiveTable::setRealTimeFactor(double factor, Stamp now)
   {
     std::ostringstream why;
     why << "real_time_factor must be in (0, " << kMaxRealTimeFactor << "], got " << factor;
-    return refused(why.str());
+    return Outcome::refused(why.str());
   }
   advanceTo(now);
   options_.real_time_factor = factor;
   if (!paused_)
     clock_.setRate(now, factor);
-  return done("real_time_factor " + std::to_string(factor));
+  return Outcome::done("real_time_factor " + std::to_string(factor));
 }
 
 Outcome LiveTable::setPhysics(const physics::PhysicsParams<double>& params, const physics::ModelChoice& models,
@@ -196,7 +187,7 @@ Outcome LiveTable::setPhysics(const physics::PhysicsParams<double>& params, cons
 {
   const std::string why = params.validate();
   if (!why.empty())
-    return refused(why);
+    return Outcome::refused(why);
   std::shared_ptr<const physics::Engine<double>> engine;
   try
   {
@@ -204,16 +195,16 @@ Outcome LiveTable::setPhysics(const physics::PhysicsParams<double>& params, cons
   }
   catch (const std::exception& e)
   {
-    return refused(e.what());
+    return Outcome::refused(e.what());
   }
   advanceTo(now);
   // A larger ball must still fit where the balls are.
   const std::string fit = engine->whyInvalid(onCloth(live_.state(), params.ball_radius));
   if (!fit.empty())
-    return refused("the balls on the table would not fit: " + fit);
+    return Outcome::refused("the balls on the table would not fit: " + fit);
   pending_engine_ = std::move(engine);
   advanceTo(now);  // applies it if the balls rest
-  return done(pending_engine_ ? "new physics: applies when the balls rest" : "new physics applied");
+  return Outcome::done(pending_engine_ ? "new physics: applies when the balls rest" : "new physics applied");
 }
 
 StrikeOutcome LiveTable::strike(const Shot& shot, Stamp now)
@@ -293,138 +284,6 @@ std::string LiveTable::predictionStart(const std::vector<BallInput>& balls, Stam
       why = "balls: " + why;
   }
   return why;
-}
-
-std::string LiveTable::whyNotRack(const RackRequest& request, physics::TableState<double>& rack) const
-{
-  const double R = engine_->params().ball_radius;
-  std::ostringstream why;
-  if (!(request.jitter >= 0 && request.jitter <= options_.rack_gap / 2))
-  {
-    why << "jitter must be in [0, rack_gap / 2] = [0, " << options_.rack_gap / 2 << "] m, got " << request.jitter;
-    return why.str();
-  }
-  rack = physics::TableState<double>();
-  if (request.layout == "custom")
-  {
-    if (request.ids.size() != request.positions.size())
-      return "ids and positions must have the same length (got " + std::to_string(request.ids.size()) + " and " +
-             std::to_string(request.positions.size()) + ")";
-    if (request.jitter != 0)
-      return "jitter is for the standard layouts, not 'custom'";
-    for (std::size_t i = 0; i < request.ids.size(); ++i)
-    {
-      BallInput input;
-      input.id = request.ids[i];
-      input.position = physics::Vec3<double>(request.positions[i].x(), request.positions[i].y(), R);
-      physics::Ball<double> b;
-      const std::string bad = ballFromInput(input, "balls[" + std::to_string(i) + "]", table(), R, b);
-      if (!bad.empty())
-        return bad;
-      rack.balls.push_back(b);
-    }
-  }
-  else
-  {
-    if (!request.ids.empty() || !request.positions.empty())
-      return "ids and positions are for layout 'custom' only";
-    const std::vector<std::string> names = physics::rackNames();
-    if (std::find(names.begin(), names.end(), request.layout) == names.end())
-      return "layout must be one of eight, nine, empty, custom; got '" + request.layout + "'";
-    physics::RackOptions options;
-    options.gap = options_.rack_gap;
-    options.jitter = request.jitter;
-    options.seed = request.seed;
-    rack = physics::rackLayout<double>(request.layout, table(), R, options);
-  }
-  const std::string invalid = engine_->whyInvalid(rack);
-  if (invalid.empty())
-    return "";
-  if (request.layout == "custom")
-    return "positions: " + invalid;
-  why << "layout '" << request.layout << "' does not fit table '" << table().name() << "' with ball_radius " << R
-      << " m: " << invalid;
-  return why.str();
-}
-
-Outcome LiveTable::rack(const RackRequest& request, Stamp now)
-{
-  advanceTo(now);
-  physics::TableState<double> layout;
-  const std::string why = whyNotRack(request, layout);
-  if (!why.empty())
-    return refused(why);
-  last_rack_ = layout;
-  startFrom(atTimeZero(layout), now);
-  return done("racked '" + request.layout + "': " + std::to_string(layout.balls.size()) + " balls");
-}
-
-Outcome LiveTable::reset(Stamp now)
-{
-  advanceTo(now);
-  const std::string why = engine_->whyInvalid(last_rack_);
-  if (!why.empty())
-    return refused("the last rack does not fit the physics now (rack again): " + why);
-  startFrom(atTimeZero(last_rack_), now);
-  return done("back to the last rack (" + std::to_string(last_rack_.balls.size()) + " balls)");
-}
-
-Outcome LiveTable::setState(const std::vector<BallInput>& balls, Stamp now)
-{
-  physics::TableState<double> state;
-  std::string why = stateFromInputs(balls, table(), engine_->params().ball_radius, state);
-  if (why.empty() && state.balls.empty())
-    why = "balls: give at least one ball (~set_state replaces every ball on the table)";
-  if (why.empty())
-  {
-    why = engine_->whyInvalid(state);
-    if (!why.empty())
-      why = "balls: " + why;
-  }
-  if (!why.empty())
-    return refused(why);
-  advanceTo(now);
-  startFrom(state, now);  // every ball at time 0: now
-  return done("replaced the table by " + std::to_string(state.balls.size()) + " balls" +
-              (state.anyMoving() ? ", some moving" : ", all at rest"));
-}
-
-Outcome LiveTable::placeBall(const BallInput& input, Stamp now)
-{
-  physics::Ball<double> ball;
-  const std::string why = ballFromInput(input, "ball", table(), engine_->params().ball_radius, ball);
-  if (!why.empty())
-    return refused(why);
-  advanceTo(now);
-  const std::string where = live_.whyNotPlaceable(ball);
-  if (!where.empty())
-    return refused("ball: " + where);
-  const bool moved = live_.state().indexOf(ball.id) >= 0;
-  if (live_.atRest())
-    restartAtRest(now);
-  live_.place(ball);
-  balls_at_rest_ = false;
-  ++layout_version_;
-  advanceTo(now);
-  return done(std::string(moved ? "moved" : "placed") + " ball " + std::to_string(ball.id));
-}
-
-Outcome LiveTable::removeBall(int id, Stamp now)
-{
-  advanceTo(now);
-  if (live_.state().indexOf(id) < 0)
-  {
-    std::string on_table;
-    for (const auto& b : live_.state().balls)
-      on_table += (on_table.empty() ? "" : ", ") + std::to_string(b.id);
-    return refused("ball_id " + std::to_string(id) +
-                   " is not on the table (on it: " + (on_table.empty() ? "none" : on_table) + ")");
-  }
-  live_.remove(id);
-  balls_at_rest_ = false;
-  ++layout_version_;
-  advanceTo(now);
-  return done("removed ball " + std::to_string(id));
 }
 
 }  // namespace session

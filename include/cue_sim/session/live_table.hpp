@@ -48,6 +48,9 @@ struct Outcome
 {
   bool success = false;
   std::string message;  ///< why not, when success is false
+
+  static Outcome done(const std::string& message) { return {true, message}; }
+  static Outcome refused(const std::string& why) { return {false, why}; }
 };
 
 struct StrikeOutcome : Outcome
