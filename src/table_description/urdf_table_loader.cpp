@@ -1,5 +1,6 @@
 #include "cue_sim/table_description/urdf_table_loader.hpp"
 
+#include <console_bridge/console.h>
 #include <urdf_parser/urdf_parser.h>
 
 #include <Eigen/Geometry>
@@ -83,8 +84,12 @@ public:
     if (segments.empty())
       fail("no cushion links: name each straight cushion 'cushion_<name>' with a collision box");
     const Eigen::Vector3d centre = cloth_pose.translation();
-    return TableModel(model_.getName(), centre.head<2>(), length, width, std::move(segments), std::move(circles),
-                      std::move(pockets));
+    TableModel table(model_.getName(), centre.head<2>(), length, width, std::move(segments), std::move(circles),
+                     std::move(pockets));
+    const std::string open = table.whyOpen();
+    if (!open.empty())
+      fail(open);
+    return table;
   }
 
 private:
@@ -141,14 +146,43 @@ private:
   const urdf::ModelInterface& model_;
   std::string root_;
 };
+/// urdfdom says what is wrong with a description through console_bridge: its messages are
+/// collected for the time of one parse, to say why the description is refused.
+class ParserMessages : public console_bridge::OutputHandler
+{
+public:
+  ParserMessages() : previous_(console_bridge::getOutputHandler()) { console_bridge::useOutputHandler(this); }
+  ~ParserMessages() override { console_bridge::useOutputHandler(previous_); }
+  ParserMessages(const ParserMessages&) = delete;
+  ParserMessages& operator=(const ParserMessages&) = delete;
+
+  void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override
+  {
+    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_WARN)
+      text_ += (text_.empty() ? "" : "; ") + text;
+  }
+  const std::string& text() const { return text_; }
+
+private:
+  console_bridge::OutputHandler* previous_;
+  std::string text_;
+};
+
+urdf::ModelInterfaceSharedPtr parse(const std::string& urdf_xml)
+{
+  ParserMessages messages;
+  urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(urdf_xml);
+  if (!model)
+    throw TableDescriptionError(
+        "the table description is not valid URDF: " +
+        (messages.text().empty() ? std::string("urdfdom could not parse it") : messages.text()));
+  return model;
+}
 }  // namespace
 
 physics::TableModel tableFromUrdf(const std::string& urdf_xml, const std::string& root_frame)
 {
-  const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(urdf_xml);
-  if (!model)
-    throw TableDescriptionError("the table description is not valid URDF (urdfdom could not parse it)");
-  return UrdfTableReader(*model, root_frame).read();
+  return UrdfTableReader(*parse(urdf_xml), root_frame).read();
 }
 
 physics::TableModel tableFromUrdfFile(const std::string& path, const std::string& root_frame)
@@ -161,15 +195,9 @@ physics::TableModel tableFromUrdfFile(const std::string& path, const std::string
   return tableFromUrdf(text.str(), root_frame);
 }
 
-}  // namespace cue_sim
-
-namespace cue_sim
-{
 std::vector<FixedLinkTransform> fixedLinkTransforms(const std::string& urdf_xml)
 {
-  const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(urdf_xml);
-  if (!model)
-    throw TableDescriptionError("the table description is not valid URDF (urdfdom could not parse it)");
+  const urdf::ModelInterfaceSharedPtr model = parse(urdf_xml);
   std::vector<FixedLinkTransform> out;
   for (const auto& [name, joint] : model->joints_)
   {

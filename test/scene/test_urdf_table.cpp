@@ -2,7 +2,11 @@
 // description is refused with a message that names what is missing.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <fstream>
 #include <map>
+#include <regex>
+#include <sstream>
 
 #include "cue_sim/table_description/table_catalog.hpp"
 #include "cue_sim/table_description/urdf_table_loader.hpp"
@@ -110,18 +114,75 @@ TEST(UrdfTable, BrokenDescriptionsSayWhatIsMissing)
   EXPECT_NE(errorOf(wrong_root).find("root link must be 'table'"), std::string::npos);
 }
 
-TEST(UrdfTable, AMinimalTableLoads)
+/// A straight cushion along the cloth's edge: its nose line through `xyz`, turned `yaw` about z
+/// from one along +x with the playing area on its +y side; `length` [m].
+std::string cushionLink(const std::string& name, const std::string& xyz, double yaw, double length)
 {
-  const std::string cushion =
-      R"(<link name="cushion_a"><collision><origin xyz="0 -0.025 0.02"/><geometry><box size="1 0.05 0.04"/></geometry></collision></link>
-         <joint name="j" type="fixed"><parent link="table"/><child link="cushion_a"/><origin xyz="0 -0.5 0" rpy="0 0 0"/></joint>
-         <link name="pocket_p"><collision><geometry><cylinder radius="0.06" length="0.1"/></geometry></collision></link>
-         <joint name="k" type="fixed"><parent link="table"/><child link="pocket_p"/><origin xyz="1 0.5 0"/></joint>)";
-  const TableModel t = tableFromUrdf(minimalTable(cushion));
-  ASSERT_EQ(t.segments().size(), 1u);
-  EXPECT_NEAR((t.segments()[0].start - Eigen::Vector2d(-0.5, -0.5)).norm(), 0, 1e-12);
-  EXPECT_NEAR((t.segments()[0].normal - Eigen::Vector2d(0, 1)).norm(), 0, 1e-12);
-  ASSERT_EQ(t.pockets().size(), 1u);
-  EXPECT_NEAR(t.pockets()[0].radius, 0.06, 1e-12);
-  EXPECT_EQ(t.circles().size(), 2u);  // the lone cushion's two free ends
+  std::ostringstream link;
+  link.precision(17);
+  link << "<link name='cushion_" << name << "'><collision><origin xyz='0 -0.025 0.02'/><geometry><box size='" << length
+       << " 0.05 0.04'/></geometry></collision></link><joint name='j_" << name
+       << "' type='fixed'><parent link='table'/><child link='cushion_" << name << "'/><origin xyz='" << xyz
+       << "' rpy='0 0 " << yaw << "'/></joint>";
+  return link.str();
+}
+
+/// The 2 m x 1 m cloth of minimalTable closed by four cushions, but for those named in `leave_out`.
+std::string closedTable(const std::string& leave_out = "", const std::string& extra = "")
+{
+  std::string links;
+  if (leave_out.find("foot") == std::string::npos)
+    links += cushionLink("foot", "1 0 0", M_PI / 2, 1.0);
+  if (leave_out.find("head") == std::string::npos)
+    links += cushionLink("head", "-1 0 0", -M_PI / 2, 1.0);
+  if (leave_out.find("near") == std::string::npos)
+    links += cushionLink("near", "0 -0.5 0", 0, 2.0);
+  if (leave_out.find("far") == std::string::npos)
+    links += cushionLink("far", "0 0.5 0", M_PI, 2.0);
+  return minimalTable(links + extra);
+}
+
+TEST(UrdfTable, AMinimalClosedTableLoads)
+{
+  const TableModel t = tableFromUrdf(closedTable());
+  ASSERT_EQ(t.segments().size(), 4u);
+  for (const auto& s : t.segments())
+    if (s.name == "cushion_near")
+    {
+      EXPECT_NEAR((s.start - Eigen::Vector2d(-1, -0.5)).norm(), 0, 1e-12);
+      EXPECT_NEAR((s.normal - Eigen::Vector2d(0, 1)).norm(), 0, 1e-12);
+    }
+  EXPECT_EQ(t.whyOpen(), "");
+  const std::string pocket =
+      R"(<link name="pocket_p"><collision><geometry><cylinder radius="0.06" length="0.1"/></geometry></collision></link>
+         <joint name="k" type="fixed"><parent link="table"/><child link="pocket_p"/><origin xyz="1.05 0.55 0"/></joint>)";
+  const TableModel with_pocket = tableFromUrdf(closedTable("", pocket));
+  ASSERT_EQ(with_pocket.pockets().size(), 1u);
+  EXPECT_NEAR(with_pocket.pockets()[0].radius, 0.06, 1e-12);
+}
+
+TEST(UrdfTable, ATableThatLetsABallOutIsRefusedWithWhereItIsOpen)
+{
+  // A cushion missing: the head end is open from corner to corner.
+  const std::string no_head = errorOf(closedTable("head"));
+  EXPECT_NE(no_head.find("open at its edge from (-1, 0.499) to (-1, -0.499) m"), std::string::npos) << no_head;
+  // One cushion alone.
+  EXPECT_NE(errorOf(closedTable("head foot far")).find("open at its edge"), std::string::npos);
+  // A cushion of almost no length.
+  const std::string tiny = errorOf(closedTable("", cushionLink("tiny", "0 0 0", 0, 0.001)));
+  EXPECT_NE(tiny.find("cushion 'cushion_tiny' is 0.001 m long, at least 0.01 m"), std::string::npos) << tiny;
+  // A pool table without its pockets (links and joints): every mouth is open.
+  std::ifstream file(tableUrdfPath("7ft"));
+  std::stringstream text;
+  text << file.rdbuf();
+  const std::string urdf = text.str();
+  const std::regex pocket_link(R"(<link name="pocket_[\s\S]*?</link>)");
+  const std::regex pocket_joint(R"(<joint name="table_to_pocket_[\s\S]*?</joint>)");
+  const std::string without = std::regex_replace(std::regex_replace(urdf, pocket_link, ""), pocket_joint, "");
+  ASSERT_EQ(without.find("pocket_"), std::string::npos);
+  const std::string no_pockets = errorOf(without);
+  EXPECT_NE(no_pockets.find("open at its edge"), std::string::npos) << no_pockets;
+  // Joints to links that are not there: urdfdom's own words say which.
+  const std::string dangling = errorOf(std::regex_replace(urdf, pocket_link, ""));
+  EXPECT_NE(dangling.find("pocket_"), std::string::npos) << dangling;
 }

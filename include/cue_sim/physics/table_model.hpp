@@ -74,6 +74,11 @@ public:
   /// count as touching.
   std::string whyNotPlaceable(const Eigen::Vector2d& p, double ball_radius, double tolerance = 1e-9) const;
 
+  /// Empty if the cushions, jaws and pockets close the playing area (every way out from the
+  /// cloth's centre across its edge meets one, within 1 m of the edge) and every straight
+  /// cushion is at least 1 cm long; else where it is open, or which cushion is too short.
+  std::string whyOpen() const;
+
 private:
   std::string name_;
   Eigen::Vector2d cloth_centre_;
