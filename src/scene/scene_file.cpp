@@ -18,16 +18,45 @@ namespace cue_sim
 {
 namespace
 {
-double number(const YAML::Node& node, const std::string& key)
+/// A scalar, or why not, naming the key and saying what it is instead.
+template <typename T>
+T scalar(const YAML::Node& node, const std::string& key, const char* what)
 {
   try
   {
-    return node.as<double>();
+    if (node.IsScalar())
+      return node.as<T>();
   }
   catch (const YAML::Exception&)
   {
-    throw SceneError("'" + key + "' must be a number");
   }
+  std::ostringstream why;
+  why << "'" << key << "' must be " << what;
+  if (node.IsScalar())
+    why << ", got '" << node.Scalar() << "'";
+  else
+    why << ", got a " << (node.IsSequence() ? "list" : node.IsMap() ? "map" : "null");
+  if (node.Mark().line >= 0)
+    why << " (line " << node.Mark().line + 1 << ")";
+  throw SceneError(why.str());
+}
+
+double number(const YAML::Node& node, const std::string& key)
+{
+  const double x = scalar<double>(node, key, "a number");
+  if (!std::isfinite(x))
+    throw SceneError("'" + key + "' must be a finite number, got '" + node.Scalar() + "'");
+  return x;
+}
+
+int integer(const YAML::Node& node, const std::string& key)
+{
+  return scalar<int>(node, key, "an integer");
+}
+
+std::string text(const YAML::Node& node, const std::string& key)
+{
+  return scalar<std::string>(node, key, "a name");
 }
 
 template <int N>
@@ -41,11 +70,17 @@ Eigen::Matrix<double, N, 1> vector(const YAML::Node& node, const std::string& ke
   return v;
 }
 
+/// Every key of the map known, and each once.
 void onlyKeys(const YAML::Node& map, const std::string& where, const std::set<std::string>& known)
 {
+  if (!map.IsMap())
+    throw SceneError(where + " must be a map of keys to values");
+  std::set<std::string> seen;
   for (const auto& item : map)
   {
-    const std::string key = item.first.as<std::string>();
+    const std::string key = text(item.first, "a key in " + where);
+    if (!seen.insert(key).second)
+      throw SceneError("key '" + key + "' appears twice in " + where);
     if (!known.count(key))
     {
       std::string list;
@@ -58,8 +93,6 @@ void onlyKeys(const YAML::Node& map, const std::string& where, const std::set<st
 
 void applyPhysicsNode(const YAML::Node& node, physics::PhysicsParams<double>& params, physics::ModelChoice& models)
 {
-  if (!node.IsMap())
-    throw SceneError("physics must be a map of coefficient names to values");
   std::set<std::string> known = {"ball_ball_model", "cushion_model"};
   for (const auto& field : physics::physicsParamFields())
     known.insert(field.name);
@@ -70,7 +103,7 @@ void applyPhysicsNode(const YAML::Node& node, physics::PhysicsParams<double>& pa
   const auto model = [&](const char* key, std::string& choice, const std::vector<std::string>& known) {
     if (!node[key])
       return;
-    choice = node[key].as<std::string>();
+    choice = text(node[key], key);
     if (std::find(known.begin(), known.end(), choice) == known.end())
     {
       std::string list;
@@ -86,16 +119,16 @@ void applyPhysicsNode(const YAML::Node& node, physics::PhysicsParams<double>& pa
     throw SceneError("physics: " + why);
 }
 
-physics::Ball<double> ballFrom(const YAML::Node& node, double radius)
+physics::Ball<double> ballFrom(const YAML::Node& node, const std::string& where, double radius)
 {
-  onlyKeys(node, "balls", {"id", "position", "velocity", "angular_velocity"});
+  onlyKeys(node, where, {"id", "position", "velocity", "angular_velocity"});
   if (!node["id"] || !node["position"])
-    throw SceneError("every ball needs 'id' and 'position' ([x, y] in metres)");
-  return sceneBall(
-      node["id"].as<int>(), vector<2>(node["position"], "position"),
-      node["velocity"] ? vector<2>(node["velocity"], "velocity") : Eigen::Vector2d::Zero(),
-      node["angular_velocity"] ? vector<3>(node["angular_velocity"], "angular_velocity") : Eigen::Vector3d::Zero(),
-      radius);
+    throw SceneError(where + " needs 'id' and 'position' ([x, y] in metres)");
+  return sceneBall(integer(node["id"], where + ".id"), vector<2>(node["position"], where + ".position"),
+                   node["velocity"] ? vector<2>(node["velocity"], where + ".velocity") : Eigen::Vector2d::Zero(),
+                   node["angular_velocity"] ? vector<3>(node["angular_velocity"], where + ".angular_velocity")
+                                            : Eigen::Vector3d::Zero(),
+                   radius);
 }
 
 /// A number written so that reading it back gives it exactly.
@@ -141,7 +174,7 @@ Scene loadScene(const std::string& yaml_text)
     if (root["physics"])
       applyPhysicsNode(root["physics"], scene.params, scene.models);
     if (root["table"])
-      scene.table_name = root["table"].as<std::string>();
+      scene.table_name = text(root["table"], "table");
     scene.table = std::make_shared<const physics::TableModel>(tableFromUrdfFile(tableUrdfPath(scene.table_name)));
     const double R = scene.params.ball_radius;
     if (root["rack"])
@@ -151,7 +184,7 @@ Scene loadScene(const std::string& yaml_text)
         options.gap = number(root["rack_gap"], "rack_gap");
       try
       {
-        scene.state = physics::rackLayout<double>(root["rack"].as<std::string>(), *scene.table, R, options);
+        scene.state = physics::rackLayout<double>(text(root["rack"], "rack"), *scene.table, R, options);
       }
       catch (const std::invalid_argument& e)
       {
@@ -160,9 +193,15 @@ Scene loadScene(const std::string& yaml_text)
     }
     if (root["balls"])
     {
-      for (const auto& node : root["balls"])
+      if (!root["balls"].IsSequence())
+        throw SceneError("balls must be a list of balls");
+      std::set<int> ids;
+      for (std::size_t i = 0; i < root["balls"].size(); ++i)
       {
-        const physics::Ball<double> b = ballFrom(node, R);
+        const std::string where = "balls[" + std::to_string(i) + "]";
+        const physics::Ball<double> b = ballFrom(root["balls"][i], where, R);
+        if (!ids.insert(b.id).second)
+          throw SceneError(where + ".id = " + std::to_string(b.id) + " appears twice in balls");
         const int index = scene.state.indexOf(b.id);
         if (index >= 0)
           scene.state.balls[index] = b;
@@ -175,14 +214,14 @@ Scene loadScene(const std::string& yaml_text)
       const YAML::Node s = root["shot"];
       onlyKeys(s, "shot", {"ball", "speed", "phi", "theta", "a", "b"});
       Shot shot;
-      shot.ball = s["ball"] ? s["ball"].as<int>() : 0;
+      shot.ball = s["ball"] ? integer(s["ball"], "shot.ball") : 0;
       if (!s["speed"])
         throw SceneError("shot needs 'speed' (the cue's speed V0 in m/s)");
-      shot.strike.speed = number(s["speed"], "speed");
-      shot.strike.phi = s["phi"] ? number(s["phi"], "phi") : 0.0;
-      shot.strike.theta = s["theta"] ? number(s["theta"], "theta") : 0.0;
-      shot.strike.a = s["a"] ? number(s["a"], "a") : 0.0;
-      shot.strike.b = s["b"] ? number(s["b"], "b") : 0.0;
+      shot.strike.speed = number(s["speed"], "shot.speed");
+      shot.strike.phi = s["phi"] ? number(s["phi"], "shot.phi") : 0.0;
+      shot.strike.theta = s["theta"] ? number(s["theta"], "shot.theta") : 0.0;
+      shot.strike.a = s["a"] ? number(s["a"], "shot.a") : 0.0;
+      shot.strike.b = s["b"] ? number(s["b"], "shot.b") : 0.0;
       const std::string why = physics::validateStrike(shot.strike);
       if (!why.empty())
         throw SceneError("shot: " + why);

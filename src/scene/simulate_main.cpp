@@ -1,5 +1,7 @@
 // simulate: runs a scene file through the physics engine and prints JSON (no ROS needed).
 //   rosrun cue_sim simulate scene.yaml      (or devel/lib/cue_sim/simulate scene.yaml)
+// Exit codes: 0 the scene ran; 1 the scene is refused (the message names the key and the value);
+// 2 the command line is wrong; 3 the engine gave up (--max-events reached).
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <optional>
@@ -7,6 +9,14 @@
 #include "cue_sim/physics/simulation.hpp"
 #include "cue_sim/scene/scene_file.hpp"
 #include "cue_sim/scene/shot_report.hpp"
+
+namespace
+{
+constexpr int kExitOk = 0;
+constexpr int kExitRefused = 1;
+constexpr int kExitCommandLine = 2;
+constexpr int kExitGaveUp = 3;
+}  // namespace
 
 int main(int argc, char** argv)
 {
@@ -16,12 +26,20 @@ int main(int argc, char** argv)
   long max_events = cue_sim::physics::EngineLimits().max_events;
   std::optional<double> duration;
   app.add_option("scene", scene_path, "scene file (YAML; format in README.md, 'Scene files'); - for stdin")->required();
-  app.add_option("--indent", indent, "JSON indentation, -1 for one line");
+  app.add_option("--indent", indent, "JSON indentation, -1 for one line")->check(CLI::Range(-1, 16));
   app.add_option("--max-events", max_events, "give up after this many events")->check(CLI::PositiveNumber);
   app.add_option("--duration", duration,
                  "advance this many seconds [s] instead of running to rest (instead of the scene's duration)")
       ->check(CLI::Range(0.0, 1e6));
-  CLI11_PARSE(app, argc, argv);
+  try
+  {
+    app.parse(argc, argv);
+  }
+  catch (const CLI::ParseError& e)
+  {
+    app.exit(e);  // prints the help, or what is wrong with the command line
+    return e.get_exit_code() == 0 ? kExitOk : kExitCommandLine;
+  }
 
   try
   {
@@ -55,11 +73,16 @@ int main(int argc, char** argv)
     scene.state = simulation.state();
     const bool at_rest = simulation.atRest();
     std::cout << cue_sim::shotReport(engine, scene.state, events, at_rest).dump(indent) << std::endl;
-    return 0;
+    return kExitOk;
+  }
+  catch (const cue_sim::physics::EventLimitError& e)
+  {
+    std::cerr << "simulate: " << e.what() << std::endl;
+    return kExitGaveUp;
   }
   catch (const std::exception& e)
   {
     std::cerr << "simulate: " << e.what() << std::endl;
-    return 1;
+    return kExitRefused;
   }
 }

@@ -82,8 +82,27 @@ TEST(SceneFile, BadScenesNameTheProblem)
   EXPECT_NE(
       errorOf("physics: {cushion_model: rubber}\n").find("cushion_model 'rubber' is unknown (known: han2005, simple)"),
       std::string::npos);
-  EXPECT_NE(errorOf("balls: [{id: 0, position: [1]}]\n").find("'position' must be a list of 2"), std::string::npos);
+  EXPECT_NE(errorOf("balls: [{id: 0, position: [1]}]\n").find("'balls[0].position' must be a list of 2"),
+            std::string::npos);
   EXPECT_NE(errorOf("shot: {speed: -2}\n").find("speed must be in (0, 12]"), std::string::npos);
   EXPECT_NE(errorOf("shot: {phi: 1}\n").find("needs 'speed'"), std::string::npos);
   EXPECT_NE(errorOf("duration: -1\n").find("duration"), std::string::npos);
+}
+
+TEST(SceneFile, NonNumbersDuplicatesAndWrongTypesAreRefusedByKey)
+{
+  EXPECT_NE(errorOf("balls: [{id: 0, position: [0, 0], velocity: [.nan, 0]}]\n")
+                .find("'balls[0].velocity' must be a finite number, got '.nan'"),
+            std::string::npos);
+  EXPECT_NE(errorOf("shot: {speed: .inf}\n").find("'shot.speed' must be a finite number"), std::string::npos);
+  EXPECT_NE(errorOf("balls: [{id: one, position: [0, 0]}]\n").find("'balls[0].id' must be an integer, got 'one'"),
+            std::string::npos);
+  EXPECT_NE(errorOf("table: [7ft]\n").find("'table' must be a name, got a list"), std::string::npos);
+  EXPECT_NE(errorOf("rack: eight\nrack: nine\n").find("key 'rack' appears twice in the scene"), std::string::npos);
+  EXPECT_NE(errorOf("physics: {mu_roll: 0.01, mu_roll: 0.02}\n").find("key 'mu_roll' appears twice in physics"),
+            std::string::npos);
+  EXPECT_NE(errorOf("balls: [{id: 3, position: [0, 0]}, {id: 3, position: [0.3, 0]}]\n")
+                .find("balls[1].id = 3 appears twice"),
+            std::string::npos);
+  EXPECT_NE(errorOf("balls: {id: 3}\n").find("balls must be a list"), std::string::npos);
 }

@@ -95,3 +95,22 @@ TEST(SimulateProgram, ABallBehindAPocketsMouthIsRefused)
   EXPECT_EQ(run.status, 1);
   EXPECT_NE(run.out.find("off the cloth"), std::string::npos) << run.out;
 }
+
+TEST(SimulateProgram, ExitCodesSayWhatWentWrong)
+{
+  EXPECT_EQ(simulate("rack: eight\n", "--help").status, 0);
+  const ProgramRun option = simulate("rack: eight\n", "--no-such-option");
+  EXPECT_EQ(option.status, 2) << option.out;
+  EXPECT_EQ(simulate("rack: eight\n", "--indent 99").status, 2);
+  // A ball far faster than any shot gives: refused by name, not printed as a null position.
+  const ProgramRun fast = simulate("rack: empty\nballs: [{id: 0, position: [0, 0], velocity: [1e308, 0]}]\n");
+  EXPECT_EQ(fast.status, 1);
+  EXPECT_NE(fast.out.find("speed"), std::string::npos) << fast.out;
+  EXPECT_EQ(fast.out.find("null"), std::string::npos) << fast.out;
+  const ProgramRun nan = simulate("rack: empty\nballs: [{id: 0, position: [0, 0], velocity: [.nan, 0]}]\n");
+  EXPECT_EQ(nan.status, 1);
+  EXPECT_NE(nan.out.find("finite"), std::string::npos) << nan.out;
+  // The engine giving up is a code of its own.
+  const ProgramRun limited = simulate("rack: eight\nshot: {speed: 8}\n", "--max-events 5");
+  EXPECT_EQ(limited.status, 3) << limited.out;
+}
