@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 # Plans a break-off shot with ~predict_batch: every heading round the cue ball at three speeds,
 # all on the node's cores in one call; keeps the shot that pockets the most object balls without
 # the cue ball, and strikes it. Run it next to a table: rosrun cue_sim plan_shots.py

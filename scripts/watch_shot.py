@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Follows /table/state until every ball rests, then prints where each ball ended up."""
 import sys
 
