@@ -4,10 +4,6 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/env.sh"
 mkdir -p "$CUE_SIM_BUILD"
-# catkin caches the environment its tests run in when it configures, keeping only directories
-# that exist then: the generated Python messages' directory must already be there, or tests that
-# run Python nodes (scripts/plan_shots.py) cannot import cue_sim on a first build.
-mkdir -p "$CUE_SIM_DEVEL/lib/python3/dist-packages"
 cmake -S "$CUE_SIM_ROOT" -B "$CUE_SIM_BUILD" -DCMAKE_BUILD_TYPE=Release \
   -DCATKIN_DEVEL_PREFIX="$CUE_SIM_DEVEL" \
   -DPYTHON_EXECUTABLE=/usr/bin/python3 -DPython3_EXECUTABLE=/usr/bin/python3 >"$CUE_SIM_BUILD/cmake.log" 2>&1 \

@@ -65,3 +65,8 @@ target_include_directories(examples_tests PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(examples_tests ${catkin_LIBRARIES})
 add_dependencies(examples_tests table_node plan_shots ${PROJECT_NAME}_generate_messages_cpp)
 target_compile_definitions(examples_tests PRIVATE CUE_SIM_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+
+add_rostest_gtest(node_load_tests test/node/node_load.test test/node/test_node_load.cpp test/node/rostest_main.cpp)
+target_include_directories(node_load_tests PRIVATE ${catkin_INCLUDE_DIRS})
+target_link_libraries(node_load_tests ${catkin_LIBRARIES})
+add_dependencies(node_load_tests table_node ${PROJECT_NAME}_generate_messages_cpp)

@@ -1,7 +1,11 @@
 #include "node/table_node.hpp"
 
 #include <geometry_msgs/TransformStamped.h>
+#include <malloc.h>
 #include <rosgraph_msgs/Clock.h>
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include "cue_sim/ExecutedShot.h"
@@ -27,9 +31,18 @@ geometry_msgs::TransformStamped makeTransform(const std::string& parent, const s
   return t;
 }
 
+/// How often, after heavy requests, the memory their replies took goes back to the system.
+const ros::WallDuration kTrimPeriod(2.0);
+
 /// Threads answering the light services: a tf lookup for ~strike_cue may hold one of them for
 /// up to ~tf_timeout while the other answers.
 constexpr int kLightServiceThreads = 2;
+
+/// ~markers goes out again this often, besides whenever the balls are placed anew: a bag then
+/// holds the table's picture after the balls' first transforms wherever it is played from, and
+/// rviz shows every ball on a replay (frame-locked markers that came before their frames are not
+/// shown).
+const ros::WallDuration kMarkerRefresh(1.0);
 }  // namespace
 
 TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node) : sim_time_(ros::Time::isSimTime())
@@ -72,8 +85,12 @@ TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node) : sim
   // lookup never waits for the listener to fill.
   tf_buffer_ = std::make_unique<tf2_ros::Buffer>();
   tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_);
-  // One thread for the loop, one fewer than the cores for batches: the tick keeps a core.
-  pool_ = std::make_unique<physics::ThreadPool>(std::max(1u, std::thread::hardware_concurrency()) - 1);
+  // Batches on one thread fewer than the cores, each at a lower priority: the tick keeps a core.
+  pool_ = std::make_unique<physics::ThreadPool>(std::max(1u, std::thread::hardware_concurrency()) - 1,
+                                                lowerThisThreadsPriority);
+  ros::WallTimerOptions trim(
+      kTrimPeriod, [this](const ros::WallTimerEvent&) { trimMemory(); }, &heavy_queue_);
+  trim_timer_ = private_node.createWallTimer(trim);
   applied_config_ = TableNodeConfig::__getDefault__();
   reconfigure_ = std::make_unique<dynamic_reconfigure::Server<TableNodeConfig>>(private_node);
   reconfigure_->setCallback([this](TableNodeConfig& config, uint32_t level) { onReconfigure(config, level); });
@@ -105,6 +122,19 @@ void TableNode::startAimMarker(ros::NodeHandle& private_node)
   };
   aim_marker_ = std::make_unique<AimMarker>(private_node.resolveName("aim"), parameters_.table_frame,
                                             parameters_.physics.ball_radius, strike, predict);
+}
+
+void lowerThisThreadsPriority()
+{
+  // Linux gives each thread a nice value of its own; raising it needs no privilege.
+  setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), kHeavyNice);
+}
+
+void TableNode::trimMemory()
+{
+  // glibc keeps freed memory in its arenas: a batch's reply would stay with the node for good.
+  if (heavy_done_.exchange(false))
+    malloc_trim(0);
 }
 
 void TableNode::publishStaticFrames(const std::string& urdf_xml)
@@ -192,7 +222,7 @@ void TableNode::tick()
     balls = table_->balls();
     at_rest = table_->atRest();
     layout = table_->layoutVersion();
-    if (layout != markers_drawn_)
+    if (layout != markers_drawn_ || ros::WallTime::now() - markers_sent_ > kMarkerRefresh)
       publishMarkers(*table_);
     last_stamp_ = stamp;
   }
@@ -226,6 +256,7 @@ void TableNode::publishMarkers(const session::LiveTable& table)
   marker_publisher_.publish(tableMarkers(table.table(), state, params.ball_radius, params.cushion_height,
                                          {parameters_.table_frame, parameters_.ball_frame_prefix}));
   markers_drawn_ = table.layoutVersion();
+  markers_sent_ = ros::WallTime::now();
 }
 
 }  // namespace cue_sim

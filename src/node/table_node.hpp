@@ -25,6 +25,7 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 
+#include <atomic>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -37,6 +38,11 @@
 
 namespace cue_sim
 {
+/// Nice value of the threads that run predictions: below the publishing thread.
+constexpr int kHeavyNice = 10;
+/// Lowers the calling thread's priority to kHeavyNice.
+void lowerThisThreadsPriority();
+
 class TableNode
 {
 public:
@@ -61,6 +67,8 @@ private:
   void publishMarkers(const session::LiveTable& table);
   void startAimMarker(ros::NodeHandle& private_node);
   void advertiseServices(ros::NodeHandle& private_node);
+  /// Gives the memory heavy requests freed back to the system (on the heavy requests' thread).
+  void trimMemory();
 
   // Services (table_services.cpp): each converts its request, calls the live table under the
   // lock, and converts the answer.
@@ -91,14 +99,17 @@ private:
 
   std::mutex table_mutex_;  ///< guards table_ and what is published from it
   std::optional<session::LiveTable> table_;
-  long markers_drawn_ = -1;  ///< the layout version last drawn on ~markers
-  long aim_placed_at_ = -1;  ///< the layout the aim marker waits on at the cue ball (-1: balls moving)
+  long markers_drawn_ = -1;     ///< the layout version last drawn on ~markers
+  ros::WallTime markers_sent_;  ///< when ~markers last went out
+  long aim_placed_at_ = -1;     ///< the layout the aim marker waits on at the cue ball (-1: balls moving)
   ros::Time last_stamp_;
   ros::Time sim_now_;  ///< the time it last published on /clock
 
   std::unique_ptr<physics::ThreadPool> pool_;  ///< ~predict_batch's threads
   ros::CallbackQueue heavy_queue_;             ///< predictions: off the light services' threads
   std::unique_ptr<ros::AsyncSpinner> light_spinner_, heavy_spinner_;
+  std::atomic<bool> heavy_done_{false};  ///< a heavy request ran since the last trim
+  ros::WallTimer trim_timer_;
 
   tf2_ros::TransformBroadcaster tf_broadcaster_;
   tf2_ros::StaticTransformBroadcaster static_broadcaster_;

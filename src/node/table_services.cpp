@@ -17,6 +17,15 @@ namespace
 /// How long the cue drawn at a strike stays in rviz [s].
 constexpr double kCueMarkerLifetime = 1.5;
 
+/// The heavy requests' thread runs below the publishing thread's priority.
+void lowerPriorityOnce()
+{
+  thread_local bool lowered = false;
+  if (!lowered)
+    lowerThisThreadsPriority();
+  lowered = true;
+}
+
 template <typename Response>
 void answer(const session::Outcome& outcome, Response& response)
 {
@@ -28,12 +37,16 @@ void answer(const session::Outcome& outcome, Response& response)
 void TableNode::advertiseServices(ros::NodeHandle& private_node)
 {
   ros::AdvertiseServiceOptions predict, batch;
-  predict.init<Predict::Request, Predict::Response>(
-      private_node.resolveName("predict"),
-      [this](Predict::Request& q, Predict::Response& r) { return onPredict(q, r); });
+  predict.init<Predict::Request, Predict::Response>(private_node.resolveName("predict"),
+                                                    [this](Predict::Request& q, Predict::Response& r) {
+                                                      lowerPriorityOnce();
+                                                      return onPredict(q, r);
+                                                    });
   batch.init<PredictBatch::Request, PredictBatch::Response>(
-      private_node.resolveName("predict_batch"),
-      [this](PredictBatch::Request& q, PredictBatch::Response& r) { return onPredictBatch(q, r); });
+      private_node.resolveName("predict_batch"), [this](PredictBatch::Request& q, PredictBatch::Response& r) {
+        lowerPriorityOnce();
+        return onPredictBatch(q, r);
+      });
   predict.callback_queue = batch.callback_queue = &heavy_queue_;
   services_ = {
       private_node.advertiseService("strike", &TableNode::onStrike, this),
@@ -158,6 +171,7 @@ bool TableNode::onStrikeCue(StrikeCue::Request& request, StrikeCue::Response& re
 
 bool TableNode::onPredict(Predict::Request& request, Predict::Response& response)
 {
+  heavy_done_ = true;
   session::PredictionStart start;
   std::string why = session::whyBadSamplePeriod(request.sample_period);
   if (why.empty())
@@ -185,6 +199,7 @@ bool TableNode::onPredict(Predict::Request& request, Predict::Response& response
 
 bool TableNode::onPredictBatch(PredictBatch::Request& request, PredictBatch::Response& response)
 {
+  heavy_done_ = true;
   session::PredictionStart start;
   std::string why = session::whyBadSamplePeriod(request.sample_period);
   if (why.empty() && request.shots.size() > parameters_.table.limits.max_batch_shots)

@@ -17,8 +17,9 @@ namespace physics
 class ThreadPool
 {
 public:
-  /// `threads` workers (0: one per core the machine reports). The calling thread also works.
-  explicit ThreadPool(unsigned threads = 0);
+  /// `threads` threads take part in a loop, the calling thread among them (0: one per core the
+  /// machine reports). Each worker calls `on_start` first, if given (to lower its priority, say).
+  explicit ThreadPool(unsigned threads = 0, const std::function<void()>& on_start = nullptr);
   ~ThreadPool();
   ThreadPool(const ThreadPool&) = delete;
   ThreadPool& operator=(const ThreadPool&) = delete;

@@ -7,12 +7,16 @@ namespace cue_sim
 {
 namespace physics
 {
-ThreadPool::ThreadPool(unsigned threads)
+ThreadPool::ThreadPool(unsigned threads, const std::function<void()>& on_start)
 {
   if (threads == 0)
     threads = std::max(1u, std::thread::hardware_concurrency());
   for (unsigned i = 1; i < threads; ++i)  // the caller is the last of them
-    workers_.emplace_back([this] { work(); });
+    workers_.emplace_back([this, on_start] {
+      if (on_start)
+        on_start();
+      work();
+    });
 }
 
 ThreadPool::~ThreadPool()
