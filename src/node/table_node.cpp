@@ -1,14 +1,9 @@
 #include "node/table_node.hpp"
 
 #include <geometry_msgs/TransformStamped.h>
-#include <malloc.h>
 #include <rosgraph_msgs/Clock.h>
-#include <sys/resource.h>
-#include <sys/syscall.h>
-#include <unistd.h>
 #include <visualization_msgs/MarkerArray.h>
 
-#include "cue_sim/ExecutedShot.h"
 #include "cue_sim/TableState.h"
 #include "cue_sim/table_description/urdf_table_loader.hpp"
 #include "node/ros_conversions.hpp"
@@ -31,9 +26,6 @@ geometry_msgs::TransformStamped makeTransform(const std::string& parent, const s
   return t;
 }
 
-/// How often, after heavy requests, the memory their replies took goes back to the system.
-const ros::WallDuration kTrimPeriod(2.0);
-
 /// Threads answering the light services: a tf lookup for ~strike_cue may hold one of them for
 /// up to ~tf_timeout while the other answers.
 constexpr int kLightServiceThreads = 2;
@@ -45,10 +37,11 @@ constexpr int kLightServiceThreads = 2;
 const ros::WallDuration kMarkerRefresh(1.0);
 }  // namespace
 
-TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node) : sim_time_(ros::Time::isSimTime())
+TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
 {
-  parameters_ = readNodeParameters(node, private_node, sim_time_);
-  clock_factor_ = parameters_.real_time_factor;
+  shared_.sim_time = ros::Time::isSimTime();
+  parameters_ = readNodeParameters(node, private_node, shared_.sim_time);
+  shared_.clock_factor = parameters_.real_time_factor;
   const NodeParameters& p = parameters_;
   std::shared_ptr<const physics::Engine<double>> engine;
   try
@@ -59,16 +52,16 @@ TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node) : sim
   {
     throw std::runtime_error(std::string("~ball_ball_model, ~cushion_model: ") + e.what());
   }
-  if (sim_time_)
+  if (shared_.sim_time)
   {
-    // This node's clock starts at the wall time (never 0) and only ever moves forward.
+    // This node's clock starts at the wall time (never 0) and only ever moves forward. The node
+    // stamps with it directly; roscpp's own time follows it through /clock, never backwards.
     clock_publisher_ = node.advertise<rosgraph_msgs::Clock>("/clock", 10);
-    sim_now_ = ros::Time(ros::WallTime::now().sec, ros::WallTime::now().nsec);
-    ros::Time::setNow(sim_now_);
+    shared_.sim_now = ros::Time(ros::WallTime::now().sec, ros::WallTime::now().nsec);
   }
   try
   {
-    table_.emplace(engine, p.table, p.rack, toStamp(ros::Time::now()));
+    shared_.live.emplace(engine, p.table, p.rack, toStamp(shared_.now()));
   }
   catch (const std::invalid_argument& e)
   {
@@ -77,28 +70,20 @@ TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node) : sim
   state_publisher_ = private_node.advertise<cue_sim::TableState>("state", 10);
   marker_publisher_ = private_node.advertise<visualization_msgs::MarkerArray>("markers", 1, true);
   event_publisher_ = private_node.advertise<cue_sim::Event>("events", 1000);
-  cue_publisher_ = private_node.advertise<visualization_msgs::Marker>("cue", 1, true);
-  preview_publisher_ = private_node.advertise<visualization_msgs::MarkerArray>("preview", 1, true);
-  shot_publisher_ = private_node.advertise<cue_sim::ExecutedShot>("shots", 100, true);
   publishStaticFrames(p.urdf_xml);
-  // Listening to tf from the start: a cue pose in a robot's frame is then found at once, and a
-  // lookup never waits for the listener to fill.
-  tf_buffer_ = std::make_unique<tf2_ros::Buffer>();
-  tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_);
-  // Batches on one thread fewer than the cores, each at a lower priority: the tick keeps a core.
-  pool_ = std::make_unique<physics::ThreadPool>(std::max(1u, std::thread::hardware_concurrency()) - 1,
-                                                lowerThisThreadsPriority);
-  ros::WallTimerOptions trim(
-      kTrimPeriod, [this](const ros::WallTimerEvent&) { trimMemory(); }, &heavy_queue_);
-  trim_timer_ = private_node.createWallTimer(trim);
-  applied_config_ = TableNodeConfig::__getDefault__();
-  reconfigure_ = std::make_unique<dynamic_reconfigure::Server<TableNodeConfig>>(private_node);
-  reconfigure_->setCallback([this](TableNodeConfig& config, uint32_t level) { onReconfigure(config, level); });
+  services_ = std::make_unique<TableServices>(private_node, shared_, parameters_);
+  predictions_ = std::make_unique<PredictionServices>(private_node, shared_, parameters_);
+  reconfigure_ = std::make_unique<PhysicsReconfigure>(private_node, shared_);
   startAimMarker(private_node);
-  advertiseServices(private_node);
   ROS_INFO("cue_sim: table '%s' (%zu cushions, %zu pockets), rack '%s', models %s/%s, tf at %.0f Hz",
            p.table_model->name().c_str(), p.table_model->segments().size(), p.table_model->pockets().size(),
            p.rack.c_str(), p.models.ball_ball.c_str(), p.models.cushion.c_str(), p.publish_rate);
+}
+
+TableNode::~TableNode()
+{
+  if (spinner_)
+    spinner_->stop();
 }
 
 void TableNode::startAimMarker(ros::NodeHandle& private_node)
@@ -106,7 +91,7 @@ void TableNode::startAimMarker(ros::NodeHandle& private_node)
   if (!parameters_.aim_marker)
     return;
   const auto strike = [this](const Shot& shot) {
-    const session::StrikeOutcome outcome = strikeLive(toSessionShot(shot), "aim_marker");
+    const session::StrikeOutcome outcome = services_->strike(toSessionShot(shot), "aim_marker");
     if (outcome.success)
       ROS_INFO("cue_sim: aim marker: %s", outcome.message.c_str());
     else
@@ -116,7 +101,7 @@ void TableNode::startAimMarker(ros::NodeHandle& private_node)
     Predict::Request request;
     Predict::Response response;
     request.shot = shot;
-    onPredict(request, response);  // draws the paths on ~preview
+    predictions_->onPredict(request, response);  // draws the paths on ~preview
     if (!response.prediction.success)
       ROS_WARN("cue_sim: aim marker: %s", response.prediction.message.c_str());
   };
@@ -124,24 +109,11 @@ void TableNode::startAimMarker(ros::NodeHandle& private_node)
                                             parameters_.physics.ball_radius, strike, predict);
 }
 
-void lowerThisThreadsPriority()
-{
-  // Linux gives each thread a nice value of its own; raising it needs no privilege.
-  setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), kHeavyNice);
-}
-
-void TableNode::trimMemory()
-{
-  // glibc keeps freed memory in its arenas: a batch's reply would stay with the node for good.
-  if (heavy_done_.exchange(false))
-    malloc_trim(0);
-}
-
 void TableNode::publishStaticFrames(const std::string& urdf_xml)
 {
   // world -> table, and every link of the table description for rviz's RobotModel.
   std::vector<geometry_msgs::TransformStamped> frames;
-  const ros::Time now = ros::Time::now();
+  const ros::Time now = shared_.now();
   frames.push_back(makeTransform(parameters_.world_frame, parameters_.table_frame, Eigen::Vector3d::Zero(),
                                  Eigen::Quaterniond::Identity(), now));
   for (const auto& link : fixedLinkTransforms(urdf_xml))
@@ -152,13 +124,11 @@ void TableNode::publishStaticFrames(const std::string& urdf_xml)
 void TableNode::run()
 {
   // Services on their own threads from here on: this thread only publishes.
-  light_spinner_ = std::make_unique<ros::AsyncSpinner>(kLightServiceThreads);
-  heavy_spinner_ = std::make_unique<ros::AsyncSpinner>(1, &heavy_queue_);
-  light_spinner_->start();
-  heavy_spinner_->start();
+  spinner_ = std::make_unique<ros::AsyncSpinner>(kLightServiceThreads);
+  spinner_->start();
   // The balls' frames exist from the start, even on a table started paused.
   tick();
-  if (!sim_time_)
+  if (!shared_.sim_time)
   {
     ros::Rate rate(parameters_.publish_rate);
     while (ros::ok())
@@ -178,10 +148,10 @@ void TableNode::run()
     const ros::WallTime wall = ros::WallTime::now();
     bool paused = false;
     {
-      std::lock_guard<std::mutex> lock(table_mutex_);
-      paused = table_->paused();
+      std::lock_guard<std::mutex> lock(shared_.mutex);
+      paused = shared_.live->paused();
     }
-    const double factor = paused && clock_factor_ == 0 ? 1.0 : clock_factor_;
+    const double factor = paused && shared_.clock_factor == 0 ? 1.0 : shared_.clock_factor.load();
     advanceSimClock(factor == 0 ? ros::Duration(period.toSec()) : ros::Duration((wall - last).toSec() * factor));
     last = wall;
     if (factor > 0)
@@ -195,10 +165,9 @@ void TableNode::advanceSimClock(const ros::Duration& by)
     return;
   rosgraph_msgs::Clock clock;
   {
-    std::lock_guard<std::mutex> lock(table_mutex_);
-    sim_now_ += by;
-    ros::Time::setNow(sim_now_);
-    clock.clock = sim_now_;
+    std::lock_guard<std::mutex> lock(shared_.mutex);
+    shared_.sim_now += by;
+    clock.clock = shared_.sim_now;
   }
   clock_publisher_.publish(clock);
   tick();
@@ -214,16 +183,17 @@ void TableNode::tick()
   {
     // The stamp is taken under the lock, as the services take theirs: no request can come
     // between it and the table it shows.
-    std::lock_guard<std::mutex> lock(table_mutex_);
-    stamp = now();
+    std::lock_guard<std::mutex> lock(shared_.mutex);
+    stamp = shared_.now();
     if (stamp <= last_stamp_)
       return;  // tf must never see the same stamp twice (TF_REPEATED_DATA)
-    table_->advanceTo(toStamp(stamp), &events);
-    balls = table_->balls();
-    at_rest = table_->atRest();
-    layout = table_->layoutVersion();
+    session::LiveTable& table = *shared_.live;
+    table.advanceTo(toStamp(stamp), &events);
+    balls = table.balls();
+    at_rest = table.atRest();
+    layout = table.layoutVersion();
     if (layout != markers_drawn_ || ros::WallTime::now() - markers_sent_ > kMarkerRefresh)
-      publishMarkers(*table_);
+      publishMarkers(table);
     last_stamp_ = stamp;
   }
   const physics::TableModel& table = *parameters_.table_model;

@@ -1,6 +1,9 @@
 // Simulation control through a real master, with use_sim_time: the node drives /clock as fast
-// as possible; ~pause, ~step, ~set_state; and a rosbag of a shot whose every ball transform is
-// the engine's exact trajectory at its stamp.
+// as possible; ~pause, ~step, ~set_state, ~place_ball, ~remove_ball; and a rosbag of a shot whose
+// every ball transform is the engine's exact trajectory at its stamp, with the shot played in it.
+#include <cue_sim/ExecutedShot.h>
+#include <cue_sim/PlaceBall.h>
+#include <cue_sim/RemoveBall.h>
 #include <cue_sim/SetState.h>
 #include <cue_sim/Step.h>
 #include <gtest/gtest.h>
@@ -11,6 +14,7 @@
 #include <std_srvs/SetBool.h>
 #include <std_srvs/Trigger.h>
 #include <tf2_msgs/TFMessage.h>
+#include <visualization_msgs/MarkerArray.h>
 
 #include <cstdlib>
 #include <mutex>
@@ -184,6 +188,52 @@ TEST_F(SimControlTest, SetStatePlacesMovingBallsAndRefusesBadOnesByField)
   table_.atRest(30);
 }
 
+TEST_F(SimControlTest, OneBallIsPlacedMovedOrRemovedAndTheOthersStay)
+{
+  ASSERT_TRUE(table_.rack("custom", {0, 1, 2}, {{-0.5, 0.0}, {0.3, 0.0}, {0.3, 0.2}}).success);
+  const auto before = TableClient::byId(table_.atRest(10)->balls);
+  ros::ServiceClient place = nh_.serviceClient<cue_sim::PlaceBall>("/table/place_ball");
+  ros::ServiceClient remove = nh_.serviceClient<cue_sim::RemoveBall>("/table/remove_ball");
+  cue_sim::PlaceBall in_hand;
+  in_hand.request.ball.id = 0;
+  in_hand.request.ball.position.x = -0.7;
+  in_hand.request.ball.position.y = 0.1;
+  ASSERT_TRUE(place.call(in_hand));
+  ASSERT_TRUE(in_hand.response.success) << in_hand.response.message;
+  auto after = TableClient::byId(table_.stateAfter(in_hand.response.stamp)->balls);
+  ASSERT_EQ(after.size(), 3u);
+  EXPECT_EQ(after.at(0).position.x, -0.7);
+  EXPECT_EQ(after.at(1).position.x, before.at(1).position.x);
+  EXPECT_EQ(after.at(2).position.y, before.at(2).position.y);
+
+  // On another ball, at 1e308 m/s, or with an unknown id: refused by field, nothing changes.
+  cue_sim::PlaceBall bad = in_hand;
+  bad.request.ball.position.x = 0.31;
+  bad.request.ball.position.y = 0.0;
+  ASSERT_TRUE(place.call(bad));
+  EXPECT_FALSE(bad.response.success);
+  EXPECT_NE(bad.response.message.find("overlap"), std::string::npos) << bad.response.message;
+  bad = in_hand;
+  bad.request.ball.velocity.x = 1e308;
+  ASSERT_TRUE(place.call(bad));
+  EXPECT_FALSE(bad.response.success);
+  EXPECT_NE(bad.response.message.find("ball.velocity"), std::string::npos) << bad.response.message;
+  cue_sim::RemoveBall unknown;
+  unknown.request.ball_id = 7;
+  ASSERT_TRUE(remove.call(unknown));
+  EXPECT_FALSE(unknown.response.success);
+  EXPECT_NE(unknown.response.message.find("not on the table"), std::string::npos) << unknown.response.message;
+
+  cue_sim::RemoveBall take;
+  take.request.ball_id = 2;
+  ASSERT_TRUE(remove.call(take));
+  ASSERT_TRUE(take.response.success) << take.response.message;
+  after = TableClient::byId(table_.stateAfter(take.response.stamp)->balls);
+  EXPECT_EQ(after.size(), 2u);
+  EXPECT_EQ(after.count(2), 0u);
+  EXPECT_EQ(after.at(0).position.x, -0.7);
+}
+
 TEST_F(SimControlTest, EveryBallTransformInTheBagIsTheExactTrajectoryAtItsStamp)
 {
   const std::vector<int> ids = {0, 1, 2, 3};
@@ -228,6 +278,32 @@ TEST_F(SimControlTest, EveryBallTransformInTheBagIsTheExactTrajectoryAtItsStamp)
   engine.strike(state, 0, strikeOfShot(shot));
 
   rosbag::Bag bag(bag_path, rosbag::bagmode::Read);
+  // The shot played is in the bag, as executed, at its stamp.
+  std::size_t shots = 0;
+  for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery(std::string("/table/shots"))))
+  {
+    const auto played = m.instantiate<cue_sim::ExecutedShot>();
+    ASSERT_TRUE(played);
+    if (played->header.stamp != struck.stamp)
+      continue;
+    ++shots;
+    EXPECT_EQ(played->source, "strike");
+    EXPECT_EQ(played->executed.speed, struck.executed.speed);
+    EXPECT_EQ(played->executed.phi, struck.executed.phi);
+    EXPECT_EQ(played->num_events, struck.num_events);
+  }
+  EXPECT_EQ(shots, 1u) << "the strike on /table/shots";
+  // The table's picture comes again after the balls' first transforms: a replay from anywhere
+  // shows every ball.
+  ros::Time first_tf, last_markers;
+  for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery(std::string("/tf"))))
+  {
+    first_tf = m.getTime();
+    break;
+  }
+  for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery(std::string("/table/markers"))))
+    last_markers = m.getTime();
+  EXPECT_GT(last_markers, first_tf);
   std::size_t compared = 0;
   double largest = 0, moved = 0;
   for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery(std::string("/tf"))))
