@@ -30,7 +30,7 @@ node=$(pgrep -f 'cue_sim/table_node' | head -1)
 rss() { awk '/^VmRSS/ { print $2 }' "/proc/$node/status"; }  # [kB]
 rostopic hz /tf > /dev/null 2>&1 &  # a tf subscriber, as rviz would be
 pids+=($!)
-sleep 3
+sleep 15  # steady: the node's tf listener holds its 10 s of history
 before=$(rss)
 echo "storm: table_node (pid $node) at ${before} kB before the storm; $minutes min, $threads threads"
 peak_file=$(mktemp)
@@ -40,7 +40,8 @@ echo "$before" > "$peak_file"
     [ "${r:-0}" -gt "$(cat "$peak_file")" ] && echo "$r" > "$peak_file"
     sleep 0.5
   done ) &
-pids+=($!)
+sampler=$!
+pids+=($sampler)
 status=0
 python3 "$here/storm_client.py" "$(awk -v m="$minutes" 'BEGIN { print m * 60 }')" "$threads" "$max_batch" || status=1
 if ! kill -0 "$node" 2>/dev/null; then
@@ -49,6 +50,8 @@ if ! kill -0 "$node" 2>/dev/null; then
 fi
 sleep 15  # the node gives back what the last replies took (every 2 s after heavy requests)
 after=$(rss)
+kill "$sampler" 2>/dev/null || true
+wait "$sampler" 2>/dev/null || true
 peak=$(cat "$peak_file")
 rm -f "$peak_file"
 rosservice call /table/rack "{layout: eight}" > /dev/null || status=1
