@@ -24,3 +24,19 @@ cue_sim_source_devel() {
     *) export ROS_PACKAGE_PATH="$CUE_SIM_ROOT${ROS_PACKAGE_PATH:+:$ROS_PACKAGE_PATH}" ;;
   esac
 }
+
+# A ROS master of the calling script's own on port $1 ($2 names its log), and everything the
+# script adds to cue_sim_pids, stopped when the script exits.
+cue_sim_private_master() {
+  export ROS_MASTER_URI="http://localhost:$1"
+  mkdir -p "$ROS_LOG_DIR"
+  cue_sim_pids=()
+  trap cue_sim_stop_all EXIT
+  roscore -p "$1" > "$ROS_LOG_DIR/$2_core.log" 2>&1 &
+  cue_sim_pids+=($!)
+  for _ in $(seq 100); do rosparam list > /dev/null 2>&1 && break; sleep 0.2; done
+}
+cue_sim_stop_all() {
+  for p in "${cue_sim_pids[@]}"; do kill "$p" 2>/dev/null || true; done
+  wait 2>/dev/null || true
+}

@@ -8,22 +8,15 @@ here="$(dirname "${BASH_SOURCE[0]}")"
 source "$here/env.sh"
 cue_sim_source_devel
 seconds="${1:-4}"
-export ROS_MASTER_URI=http://localhost:11397  # a master of its own
-mkdir -p "$ROS_LOG_DIR"
-pids=()
-cleanup() { for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done; wait 2>/dev/null || true; }
-trap cleanup EXIT
-roscore -p 11397 > "$ROS_LOG_DIR/node_load_core.log" 2>&1 &
-pids+=($!)
-for _ in $(seq 100); do rosparam list > /dev/null 2>&1 && break; sleep 0.2; done
+cue_sim_private_master 11397 node_load
 rosrun cue_sim table_node __name:=table _urdf_file:="$CUE_SIM_ROOT/urdf/table_7ft.urdf" _publish_rate:=1000 \
   _mu_roll:=0.001 _rack:=eight \
   > "$ROS_LOG_DIR/node_load_node.log" 2>&1 &
-pids+=($!)
+cue_sim_pids+=($!)
 for _ in $(seq 100); do rosservice list 2>/dev/null | grep -q '^/table/strike$' && break; sleep 0.2; done
 node=$(pgrep -f 'cue_sim/table_node' | head -1)
 rostopic hz /tf > /dev/null 2>&1 &
-pids+=($!)
+cue_sim_pids+=($!)
 sleep 2
 
 ticks=$(getconf CLK_TCK)

@@ -12,24 +12,17 @@ cue_sim_source_devel
 minutes="${1:-10}"
 threads="${2:-4}"
 max_batch="${3:-1000}"
-export ROS_MASTER_URI=http://localhost:11398  # a master of its own
-mkdir -p "$ROS_LOG_DIR"
-pids=()
-cleanup() { for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done; wait 2>/dev/null || true; }
-trap cleanup EXIT
-roscore -p 11398 > "$ROS_LOG_DIR/storm_core.log" 2>&1 &
-pids+=($!)
-for _ in $(seq 100); do rosparam list > /dev/null 2>&1 && break; sleep 0.2; done
+cue_sim_private_master 11398 storm
 rosparam set /robot_description -t "$CUE_SIM_ROOT/urdf/table_7ft.urdf"
 rosparam load "$CUE_SIM_ROOT/config/physics.yaml" /table
 rosparam load "$CUE_SIM_ROOT/config/table_node.yaml" /table
 rosrun cue_sim table_node __name:=table _aim_marker:=false > "$ROS_LOG_DIR/storm_node.log" 2>&1 &
-pids+=($!)
+cue_sim_pids+=($!)
 for _ in $(seq 100); do rosservice list 2>/dev/null | grep -q '^/table/strike$' && break; sleep 0.2; done
 node=$(pgrep -f 'cue_sim/table_node' | head -1)
 rss() { awk '/^VmRSS/ { print $2 }' "/proc/$node/status"; }  # [kB]
 rostopic hz /tf > /dev/null 2>&1 &  # a tf subscriber, as rviz would be
-pids+=($!)
+cue_sim_pids+=($!)
 sleep 15  # steady: the node's tf listener holds its 10 s of history
 before=$(rss)
 echo "storm: table_node (pid $node) at ${before} kB before the storm; $minutes min, $threads threads"
@@ -41,7 +34,7 @@ echo "$before" > "$peak_file"
     sleep 0.5
   done ) &
 sampler=$!
-pids+=($sampler)
+cue_sim_pids+=($sampler)
 status=0
 python3 "$here/storm_client.py" "$(awk -v m="$minutes" 'BEGIN { print m * 60 }')" "$threads" "$max_batch" || status=1
 if ! kill -0 "$node" 2>/dev/null; then

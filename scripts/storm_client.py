@@ -72,9 +72,10 @@ class Storm:
             "reconfigure": rospy.ServiceProxy(ns + "set_parameters", Reconfigure),
         }
 
-    def request(self, rng):
-        kind = rng.choice(["strike", "strike", "cue", "predict", "batch", "set_state", "place", "remove", "rack",
-                           "reset", "pause", "reconfigure"])
+    KINDS = ["strike", "strike", "cue", "predict", "batch", "set_state", "place", "remove", "rack", "reset",
+             "pause", "reconfigure"]
+
+    def request(self, rng, kind):
         s = self.services
         if kind == "strike":
             return s["strike"](**vars_of(shot(rng, bad=rng.random() < 0.3))).success
@@ -122,8 +123,9 @@ class Storm:
     def worker(self, seed):
         rng = random.Random(seed)
         while time.time() < self.until and not rospy.is_shutdown():
+            kind = rng.choice(self.KINDS)
             try:
-                ok = self.request(rng)
+                ok = self.request(rng, kind)
                 with self.lock:
                     self.calls += 1
                     self.refused += not ok
@@ -131,7 +133,7 @@ class Storm:
                 with self.lock:
                     self.calls += 1
                     self.failed += 1
-                print("storm: call failed: %s" % e, file=sys.stderr)
+                print("storm: a %s request failed: %s" % (kind, e), file=sys.stderr)
 
 
 def vars_of(s):

@@ -1,6 +1,7 @@
 #include "node/node_parameters.hpp"
 
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "cue_sim/table_description/table_catalog.hpp"
@@ -27,39 +28,102 @@ std::string readFile(const std::string& path)
   throw std::runtime_error(why.str());
 }
 
-/// A non-negative integer parameter (XML-RPC has no unsigned or 64-bit integers).
-std::size_t readCount(ros::NodeHandle& private_node, const std::string& name, std::size_t fallback)
+template <typename T>
+const char* kindOf();
+template <>
+const char* kindOf<double>()
 {
-  int value = static_cast<int>(fallback);
-  private_node.param(name, value, value);
-  if (value < 1)
-    refuse(name, value, "[1, 2147483647]");
-  return static_cast<std::size_t>(value);
+  return "a number";
+}
+template <>
+const char* kindOf<int>()
+{
+  return "an integer";
+}
+template <>
+const char* kindOf<bool>()
+{
+  return "true or false";
+}
+template <>
+const char* kindOf<std::string>()
+{
+  return "a string";
 }
 
-void readNoise(ros::NodeHandle& private_node, session::LiveTableOptions& options)
+/// Reads private parameters, each of its kind (a wrong kind is refused, not replaced by the
+/// default), and knows which it read: any other private parameter is a misspelling.
+class ParameterReader
+{
+public:
+  explicit ParameterReader(ros::NodeHandle& private_node) : node_(private_node) {}
+
+  template <typename T>
+  void read(const std::string& name, T& value)
+  {
+    known_.insert(name);
+    if (node_.hasParam(name) && !node_.getParam(name, value))
+      throw std::runtime_error("~" + name + " must be " + kindOf<T>());
+  }
+
+  /// A non-negative integer (XML-RPC has no unsigned or 64-bit integers).
+  std::size_t count(const std::string& name, std::size_t fallback)
+  {
+    int value = static_cast<int>(fallback);
+    read(name, value);
+    if (value < 1)
+      refuse(name, value, "[1, 2147483647]");
+    return static_cast<std::size_t>(value);
+  }
+
+  /// Throws naming the first private parameter nothing read, and the known ones.
+  void refuseUnknown() const
+  {
+    std::vector<std::string> names;
+    node_.getParamNames(names);
+    const std::string prefix = node_.getNamespace() + "/";
+    for (const std::string& name : names)
+    {
+      if (name.compare(0, prefix.size(), prefix) != 0)
+        continue;
+      const std::string key = name.substr(prefix.size());
+      if (known_.count(key))
+        continue;
+      std::string list;
+      for (const auto& k : known_)
+        list += (list.empty() ? "" : ", ") + k;
+      throw std::runtime_error("unknown parameter ~" + key + " (known: " + list + ")");
+    }
+  }
+
+private:
+  ros::NodeHandle& node_;
+  std::set<std::string> known_;
+};
+
+void readNoise(ParameterReader& reader, session::LiveTableOptions& options)
 {
   // Off by default; the deviations default to those of the computational pool tournaments.
   physics::ExecutionNoise& noise = options.noise;
-  private_node.param("noise/enabled", options.noise_enabled, false);
-  private_node.param("noise/speed", noise.speed, noise.speed);
-  private_node.param("noise/phi", noise.phi, noise.phi);
-  private_node.param("noise/theta", noise.theta, noise.theta);
-  private_node.param("noise/a", noise.a, noise.a);
-  private_node.param("noise/b", noise.b, noise.b);
+  reader.read("noise/enabled", options.noise_enabled);
+  reader.read("noise/speed", noise.speed);
+  reader.read("noise/phi", noise.phi);
+  reader.read("noise/theta", noise.theta);
+  reader.read("noise/a", noise.a);
+  reader.read("noise/b", noise.b);
   int seed = 0;
-  private_node.param("noise/seed", seed, 0);
+  reader.read("noise/seed", seed);
   if (seed < 0)
     refuse("noise/seed", seed, "[0, 2147483647]");
   options.noise_seed = static_cast<std::uint64_t>(seed);
 }
 
-void readTable(ros::NodeHandle& node, ros::NodeHandle& private_node, NodeParameters& p)
+void readTable(ros::NodeHandle& node, ParameterReader& reader, NodeParameters& p)
 {
   // The table comes from ~urdf_file, else the robot_description parameter, else ~table by name.
   std::string urdf_file, table_name = "7ft";
-  private_node.param("urdf_file", urdf_file, urdf_file);
-  private_node.param("table", table_name, table_name);
+  reader.read("urdf_file", urdf_file);
+  reader.read("table", table_name);
   try
   {
     if (!urdf_file.empty())
@@ -79,21 +143,22 @@ NodeParameters readNodeParameters(ros::NodeHandle& node, ros::NodeHandle& privat
 {
   NodeParameters p;
   session::LiveTableOptions& options = p.table;
-  private_node.param("publish_rate", p.publish_rate, p.publish_rate);
-  private_node.param("table_frame", p.table_frame, p.table_frame);
-  private_node.param("world_frame", p.world_frame, p.world_frame);
-  private_node.param("ball_frame_prefix", p.ball_frame_prefix, p.ball_frame_prefix);
-  private_node.param("rack", p.rack, p.rack);
-  private_node.param("real_time_factor", p.real_time_factor, p.real_time_factor);
-  private_node.param("tf_timeout", p.tf_timeout, p.tf_timeout);
-  private_node.param("aim_marker", p.aim_marker, p.aim_marker);
-  private_node.param("allow_strike_while_moving", options.allow_strike_while_moving, false);
-  private_node.param("rack_gap", options.rack_gap, options.rack_gap);
-  private_node.param("paused", options.paused, false);
-  options.limits.max_batch_shots = readCount(private_node, "max_batch_shots", options.limits.max_batch_shots);
-  options.limits.max_samples = readCount(private_node, "max_samples", options.limits.max_samples);
-  options.limits.max_reply_bytes = readCount(private_node, "max_reply_mb", options.limits.max_reply_bytes >> 20) << 20;
-  readNoise(private_node, options);
+  ParameterReader reader(private_node);
+  reader.read("publish_rate", p.publish_rate);
+  reader.read("table_frame", p.table_frame);
+  reader.read("world_frame", p.world_frame);
+  reader.read("ball_frame_prefix", p.ball_frame_prefix);
+  reader.read("rack", p.rack);
+  reader.read("real_time_factor", p.real_time_factor);
+  reader.read("tf_timeout", p.tf_timeout);
+  reader.read("aim_marker", p.aim_marker);
+  reader.read("allow_strike_while_moving", options.allow_strike_while_moving);
+  reader.read("rack_gap", options.rack_gap);
+  reader.read("paused", options.paused);
+  options.limits.max_batch_shots = reader.count("max_batch_shots", options.limits.max_batch_shots);
+  options.limits.max_samples = reader.count("max_samples", options.limits.max_samples);
+  options.limits.max_reply_bytes = reader.count("max_reply_mb", options.limits.max_reply_bytes >> 20) << 20;
+  readNoise(reader, options);
 
   if (!(p.publish_rate > 0 && p.publish_rate <= 10000))
     refuse("publish_rate", p.publish_rate, "(0, 10000] Hz");
@@ -114,13 +179,14 @@ NodeParameters readNodeParameters(ros::NodeHandle& node, ros::NodeHandle& privat
     throw std::runtime_error("~" + why);
 
   for (const auto& field : physics::physicsParamFields())
-    private_node.param(field.name, p.physics.*field.member, p.physics.*field.member);
+    reader.read(field.name, p.physics.*field.member);
   const std::string bad_physics = p.physics.validate();
   if (!bad_physics.empty())
     throw std::runtime_error("physics parameter ~" + bad_physics);
-  private_node.param("ball_ball_model", p.models.ball_ball, p.models.ball_ball);
-  private_node.param("cushion_model", p.models.cushion, p.models.cushion);
-  readTable(node, private_node, p);
+  reader.read("ball_ball_model", p.models.ball_ball);
+  reader.read("cushion_model", p.models.cushion);
+  readTable(node, reader, p);
+  reader.refuseUnknown();
   return p;
 }
 

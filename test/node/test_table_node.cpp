@@ -309,4 +309,33 @@ TEST_F(TableNodeTest, BrokenTableDescriptionStopsTheNodeWithAReason)
   EXPECT_EQ(missing_cloth.first, 1);
   EXPECT_NE(missing_cloth.second.find("no link named 'cloth'"), std::string::npos) << missing_cloth.second;
 }
+
+TEST_F(TableNodeTest, MisspelledOrMistypedParametersStopTheNodeWithAReason)
+{
+  const std::string dir = CUE_SIM_TEST_DIR;
+  const auto run = [&](const std::string& name, const std::string& params) {
+    const std::string log = dir + "/" + name + ".log";
+    const std::string command =
+        "rosrun cue_sim table_node __name:=" + name + " _table:=7ft " + params + " > " + log + " 2>&1";
+    const int status = std::system(command.c_str());
+    std::ifstream in(log);
+    std::stringstream text;
+    text << in.rdbuf();
+    return std::make_pair(WEXITSTATUS(status), text.str());
+  };
+  const auto misspelled = run("misspelled", "_publish_rte:=50");
+  EXPECT_EQ(misspelled.first, 1);
+  EXPECT_NE(misspelled.second.find("unknown parameter ~publish_rte (known: "), std::string::npos) << misspelled.second;
+  const auto mistyped = run("mistyped", "_publish_rate:=fast");
+  EXPECT_EQ(mistyped.first, 1);
+  EXPECT_NE(mistyped.second.find("~publish_rate must be a number"), std::string::npos) << mistyped.second;
+  const auto out_of_range = run("out_of_range", "_tf_timeout:=5.0");
+  EXPECT_EQ(out_of_range.first, 1);
+  EXPECT_NE(out_of_range.second.find("~tf_timeout must be in (0, 1] s, got 5"), std::string::npos)
+      << out_of_range.second;
+  const auto bad_limit = run("bad_limit", "_max_batch_shots:=0");
+  EXPECT_EQ(bad_limit.first, 1);
+  EXPECT_NE(bad_limit.second.find("~max_batch_shots must be in [1, 2147483647], got 0"), std::string::npos)
+      << bad_limit.second;
+}
 }  // namespace

@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# The README's catkin lines ("In a catkin workspace"), run as a new user runs them, on a fresh
+# workspace, with a python3 first on PATH that lacks Debian's modules, as a pyenv shim would:
+# catkin_make, catkin_make run_tests, catkin_test_results. Exits non-zero if any of them fails.
+#   scripts/catkin_route.sh [workspace]     (default: a new one under /tmp, removed after)
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+ws="${1:-$(mktemp -d /tmp/cue_sim_ws.XXXXXX)}"
+[ $# -ge 1 ] || trap 'rm -rf "$ws"' EXIT
+shim="$ws/pyenv_shims"
+mkdir -p "$ws/src" "$shim"
+# A python3 without Debian's dist-packages: no catkin_pkg, no rospy.
+printf '#!/bin/sh\nexec /usr/bin/python3 -S "$@"\n' > "$shim/python3"
+chmod +x "$shim/python3"
+export PATH="$shim:$PATH"
+if python3 -c "import catkin_pkg" 2>/dev/null; then
+  echo "catkin_route: the stand-in python3 should lack catkin_pkg" >&2
+  exit 1
+fi
+ln -s "$root" "$ws/src/cue_sim"
+cd "$ws"
+python=(-DPYTHON_EXECUTABLE=/usr/bin/python3 -DPython3_EXECUTABLE=/usr/bin/python3)
+echo "catkin_route: catkin_make in $ws (log: $ws/catkin_make.log)"
+catkin_make "${python[@]}" > "$ws/catkin_make.log" 2>&1 || { tail -40 "$ws/catkin_make.log"; exit 1; }
+echo "catkin_route: catkin_make run_tests (log: $ws/run_tests.log)"
+catkin_make run_tests "${python[@]}" > "$ws/run_tests.log" 2>&1 || { tail -40 "$ws/run_tests.log"; exit 1; }
+catkin_test_results build/test_results
