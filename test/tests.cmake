@@ -70,3 +70,5 @@ add_rostest_gtest(node_load_tests test/node/node_load.test test/node/test_node_l
 target_include_directories(node_load_tests PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(node_load_tests ${catkin_LIBRARIES})
 add_dependencies(node_load_tests table_node ${PROJECT_NAME}_generate_messages_cpp)
+# It measures tf's rate: alone on the machine, not beside another test's node.
+set_tests_properties(_ctest_cue_sim_rostest_test_node_node_load.test PROPERTIES RUN_SERIAL TRUE)

@@ -5,6 +5,7 @@
 
 #include <ros/time.h>
 
+#include <algorithm>
 #include <atomic>
 #include <mutex>
 #include <optional>
@@ -15,14 +16,19 @@ namespace cue_sim
 {
 struct SharedTable
 {
-  std::mutex mutex;  ///< guards live and sim_now
+  std::mutex mutex;  ///< guards live, sim_now and last_published
   std::optional<session::LiveTable> live;
   bool sim_time = false;
   ros::Time sim_now;                      ///< with sim_time: the time last published on /clock
   std::atomic<double> clock_factor{1.0};  ///< with sim_time: /clock per wall time; 0 as fast as possible
+  ros::Time last_published;               ///< the stamp of the last tf and ~state
 
-  /// The time now; call it holding the lock.
-  ros::Time now() const { return sim_time ? sim_now : ros::Time::now(); }
+  /// The clock now; call it holding the lock.
+  ros::Time clock() const { return sim_time ? sim_now : ros::Time::now(); }
+  /// The stamp of a request now (call it holding the lock): after the last stamp published, so
+  /// that what it changes is in the next tf and ~state, whose stamp is later still, and never in
+  /// one that went out before it with the same stamp.
+  ros::Time now() const { return std::max(clock(), last_published + ros::Duration(0, 1)); }
 };
 
 }  // namespace cue_sim

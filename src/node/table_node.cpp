@@ -184,8 +184,8 @@ void TableNode::tick()
     // The stamp is taken under the lock, as the services take theirs: no request can come
     // between it and the table it shows.
     std::lock_guard<std::mutex> lock(shared_.mutex);
-    stamp = shared_.now();
-    if (stamp <= last_stamp_)
+    stamp = shared_.clock();
+    if (stamp <= shared_.last_published)
       return;  // tf must never see the same stamp twice (TF_REPEATED_DATA)
     session::LiveTable& table = *shared_.live;
     table.advanceTo(toStamp(stamp), &events);
@@ -194,7 +194,7 @@ void TableNode::tick()
     layout = table.layoutVersion();
     if (layout != markers_drawn_ || ros::WallTime::now() - markers_sent_ > kMarkerRefresh)
       publishMarkers(table);
-    last_stamp_ = stamp;
+    shared_.last_published = stamp;
   }
   const physics::TableModel& table = *parameters_.table_model;
   for (const auto& e : events)

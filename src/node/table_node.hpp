@@ -49,7 +49,6 @@ private:
   long markers_drawn_ = -1;     ///< the layout version last drawn on ~markers
   ros::WallTime markers_sent_;  ///< when ~markers last went out
   long aim_placed_at_ = -1;     ///< the layout the aim marker waits on at the cue ball (-1: balls moving)
-  ros::Time last_stamp_;
 
   tf2_ros::TransformBroadcaster tf_broadcaster_;
   tf2_ros::StaticTransformBroadcaster static_broadcaster_;

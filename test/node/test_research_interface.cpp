@@ -1,6 +1,7 @@
 // The research interface through a real master: ~predict and ~predict_batch against ~strike
 // (bit for bit), ~events, execution noise, and refusals by field.
 #include <cue_sim/Event.h>
+#include <cue_sim/ExecutedShot.h>
 #include <dynamic_reconfigure/Reconfigure.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
@@ -560,12 +561,31 @@ TEST_F(ResearchInterfaceTest, TheAimMarkerFiresTheShotItShows)
   const cue_sim::Prediction planned = table_.predict(aimed);
   ASSERT_TRUE(planned.success) << planned.message;
 
+  // The strike is on ~shots, with who fired it: wait for it before waiting for the balls to rest.
+  std::mutex shots_mutex;
+  std::vector<cue_sim::ExecutedShot> shots;
+  ros::Subscriber shots_sub =
+      nh_.subscribe<cue_sim::ExecutedShot>("/table/shots", 10, [&](const cue_sim::ExecutedShotConstPtr& m) {
+        std::lock_guard<std::mutex> lock(shots_mutex);
+        shots.push_back(*m);
+      });
   const ros::Time clicked = ros::Time::now();
   f.event_type = visualization_msgs::InteractiveMarkerFeedback::MENU_SELECT;
   f.control_name = "menu";
   f.menu_entry_id = 1;  // "Strike"
   feedback.publish(f);
+  const auto fired = [&] {
+    std::lock_guard<std::mutex> lock(shots_mutex);
+    for (const auto& s : shots)
+      if (s.source == "aim_marker" && s.header.stamp >= clicked)
+        return true;
+    return false;
+  };
+  for (int i = 0; i < 100 && !fired(); ++i)
+    ros::WallDuration(0.05).sleep();
+  ASSERT_TRUE(fired()) << "the aim marker's strike on /table/shots";
   table_.atRest(planned.time_to_rest + 10);
   expectSameEvents(eventsSince(clicked), planned.events, "the shot fired from the aim marker");
+  shots_sub.shutdown();
 }
 }  // namespace
