@@ -287,20 +287,26 @@ TEST_F(TableNodeTest, RosbagOfABreakHoldsAllSixteenBallFrames)
   bag.close();
   waitUntilAtRest(30);
 }
+/// Runs a table_node of its own (it must refuse to start), with private parameters `params`:
+/// its exit status and what it printed.
+std::pair<int, std::string> runTableNode(const std::string& name, const std::string& params)
+{
+  const std::string log = std::string(CUE_SIM_TEST_DIR) + "/" + name + ".log";
+  const std::string command = "rosrun cue_sim table_node __name:=" + name + " " + params + " > " + log + " 2>&1";
+  const int status = std::system(command.c_str());
+  std::ifstream in(log);
+  std::stringstream text;
+  text << in.rdbuf();
+  return {WEXITSTATUS(status), text.str()};
+}
+
 TEST_F(TableNodeTest, BrokenTableDescriptionStopsTheNodeWithAReason)
 {
   const std::string dir = CUE_SIM_TEST_DIR;
   const std::string no_cloth = dir + "/no_cloth.urdf";
   std::ofstream(no_cloth) << "<robot name='bad'><link name='table'/></robot>";
   const auto run = [&](const std::string& name, const std::string& file) {
-    const std::string log = dir + "/" + name + ".log";
-    const std::string command =
-        "rosrun cue_sim table_node __name:=" + name + " _urdf_file:=" + file + " > " + log + " 2>&1";
-    const int status = std::system(command.c_str());
-    std::ifstream in(log);
-    std::stringstream text;
-    text << in.rdbuf();
-    return std::make_pair(WEXITSTATUS(status), text.str());
+    return runTableNode(name, "_urdf_file:=" + file);
   };
   const auto missing_file = run("no_file", dir + "/does_not_exist.urdf");
   EXPECT_EQ(missing_file.first, 1);
@@ -312,16 +318,8 @@ TEST_F(TableNodeTest, BrokenTableDescriptionStopsTheNodeWithAReason)
 
 TEST_F(TableNodeTest, MisspelledOrMistypedParametersStopTheNodeWithAReason)
 {
-  const std::string dir = CUE_SIM_TEST_DIR;
-  const auto run = [&](const std::string& name, const std::string& params) {
-    const std::string log = dir + "/" + name + ".log";
-    const std::string command =
-        "rosrun cue_sim table_node __name:=" + name + " _table:=7ft " + params + " > " + log + " 2>&1";
-    const int status = std::system(command.c_str());
-    std::ifstream in(log);
-    std::stringstream text;
-    text << in.rdbuf();
-    return std::make_pair(WEXITSTATUS(status), text.str());
+  const auto run = [](const std::string& name, const std::string& params) {
+    return runTableNode(name, "_table:=7ft " + params);
   };
   const auto misspelled = run("misspelled", "_publish_rte:=50");
   EXPECT_EQ(misspelled.first, 1);
