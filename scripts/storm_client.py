@@ -151,12 +151,14 @@ def main():
     workers = [threading.Thread(target=storm.worker, args=(k,), daemon=True) for k in range(threads)]
     for w in workers:
         w.start()
-    start = time.time()
+    start = last = time.time()
     while any(w.is_alive() for w in workers):
-        time.sleep(min(10.0, max(0.1, storm.until - time.time())))
-        with storm.lock:
-            print("storm: %4.0f s of %.0f, %d calls, %d refused, %d failed" %
-                  (time.time() - start, seconds, storm.calls, storm.refused, storm.failed), file=sys.stderr)
+        time.sleep(0.5)
+        if time.time() - last >= 10.0:  # progress every 10 s, also while the last calls finish
+            last = time.time()
+            with storm.lock:
+                print("storm: %4.0f s of %.0f, %d calls, %d refused, %d failed" %
+                      (last - start, seconds, storm.calls, storm.refused, storm.failed), file=sys.stderr)
     print("%d calls, %d refused, %d failed" % (storm.calls, storm.refused, storm.failed))
     sys.exit(1 if storm.failed else 0)
 
