@@ -140,9 +140,10 @@ TEST(CueStrike, OutOfRangeFieldsAreNamed)
 
 TEST(CueStrike, SpeedAndSpinAgreeWithThePublishedFormulaForAnyOffset)
 {
-  // PHYSICS.md (Alciatore TP A-30): v = 2 V0 / (1 + m/M + 5/(2R^2) (a^2 + b^2 cos^2 t + c^2 sin^2 t
-  // - 2 b c cos t sin t)); the spin is (P - C) x d times v / (2/5 R^2), computed here as a cross
-  // product of the contact point and the cue direction.
+  // PHYSICS.md (Alciatore TP A-30), with a and b on the ball's face seen along the cue (pooltool's
+  // convention since 2025): the tip meets the ball at P - C = A right + B up - c d, so that
+  // v = 2 V0 / (1 + m/M + 5/(2R^2) (A^2 + B^2)) and the spin is (P - C) x d times v / (2/5 R^2),
+  // computed here as a cross product of the contact point and the cue direction.
   PhysicsParams<double> p;
   const double R = p.ball_radius;
   for (double theta : {0.0, 0.2, 0.7, 1.4})
@@ -159,14 +160,33 @@ TEST(CueStrike, SpeedAndSpinAgreeWithThePublishedFormulaForAnyOffset)
         applyCueStrike(ball, s, p);
         const double A = a * R, B = b * R, C = std::sqrt(R * R - A * A - B * B);
         const double ct = std::cos(theta), st = std::sin(theta);
-        const double v = 2 * s.speed /
-                         (1 + p.ball_mass / p.cue_mass +
-                          5 / (2 * R * R) * (A * A + B * B * ct * ct + C * C * st * st - 2 * B * C * ct * st));
+        const double v = 2 * s.speed / (1 + p.ball_mass / p.cue_mass + 5 / (2 * R * R) * (A * A + B * B));
         EXPECT_NEAR(ball.v.norm(), v * ct, 1e-12) << theta << " " << a << " " << b;
-        const Vec3<double> h(std::cos(s.phi), std::sin(s.phi), 0), side(h.y(), -h.x(), 0), z(0, 0, 1);
-        const Vec3<double> contact = A * side + B * z - C * h;
+        const Vec3<double> h(std::cos(s.phi), std::sin(s.phi), 0), z(0, 0, 1);
         const Vec3<double> cue_direction = ct * h - st * z;
+        const Vec3<double> right = cue_direction.cross(z).normalized();
+        const Vec3<double> up = right.cross(cue_direction);
+        const Vec3<double> contact = A * right + B * up - C * cue_direction;
+        EXPECT_NEAR(contact.norm(), R, 1e-15) << "on the ball's surface";
         const Vec3<double> w = v / (0.4 * R * R) * contact.cross(cue_direction);
         EXPECT_NEAR((ball.w - w).norm(), 0, 1e-9 * (1 + w.norm())) << theta << " " << a << " " << b;
       }
+}
+
+TEST(CueStrike, ACentreHitGivesNoSpinAtAnyElevation)
+{
+  const PhysicsParams<double> p;
+  for (double theta : {0.0, 0.1, 0.5, 1.0, 1.5})
+  {
+    CueStrike<double> s;
+    s.speed = 4.0;
+    s.phi = -0.7;
+    s.theta = theta;
+    Ball<double> ball;
+    applyCueStrike(ball, s, p);
+    EXPECT_EQ(ball.w.norm(), 0) << "theta " << theta;
+    // All of the cue's impulse along its axis: the horizontal part is cos(theta) of a level hit's.
+    const double level = 2 * s.speed / (1 + p.ball_mass / p.cue_mass);
+    EXPECT_NEAR(ball.v.norm(), level * std::cos(theta), 1e-12) << "theta " << theta;
+  }
 }

@@ -263,6 +263,41 @@ TEST(ShotPhysics, MasseCurvesWhileSliding)
   EXPECT_NEAR(turn(0.0), 0.0, 1e-12) << "a level cue's side spin does not curve it";
 }
 
+TEST(ShotPhysics, AMasseSlideFollowsTheClosedFormParabola)
+{
+  // While a ball slides, cloth friction mu_s g acts against the contact point's slip u, whose
+  // direction does not change (PHYSICS.md): the centre follows r0 + v0 t - mu_s g t^2 / 2 u/|u|,
+  // a parabola, until the slip is gone at t = 2 |u| / (7 mu_s g).
+  const PhysicsParams<double> p;
+  const Engine<double> engine(sevenFoot(), p);
+  for (double theta : {0.6, 1.2})
+  {
+    TableState<double> s;
+    s.balls.push_back(ballAt(0, -0.5, 0.0, p));
+    CueStrike<double> cue;
+    cue.speed = 1.5;
+    cue.phi = 0.2;
+    cue.theta = theta;
+    cue.a = 0.3;
+    cue.b = -0.2;
+    engine.strike(s, 0, cue);
+    const Ball<double> b0 = s.balls[0];
+    const Vec3<double> slip = b0.v - p.ball_radius * b0.w.cross(Vec3<double>::UnitZ());
+    const Vec3<double> along = slip.normalized();
+    const double g = p.mu_slide * p.gravity, slide_end = 2 * slip.norm() / (7 * g);
+    ASSERT_NEAR(timeToTransition(b0, p), slide_end, 1e-12);
+    for (double f : {0.1, 0.4, 0.7, 0.99})
+    {
+      const double t = f * slide_end;
+      const Vec3<double> want = b0.r + b0.v * t - 0.5 * g * t * t * along;
+      EXPECT_NEAR((engine.ballAt(s, 0, b0.time + t).r - want).norm(), 0, 1e-12) << theta << " " << f;
+    }
+    // It curves: the heading turns while it slides.
+    const double turn = headingOf(engine.ballAt(s, 0, b0.time + 0.99 * slide_end).v) - headingOf(b0.v);
+    EXPECT_GT(std::abs(turn), 5 * kDeg) << theta;
+  }
+}
+
 TEST(ShotPhysics, SquirtIsAboutTwoDegreesAtHalfTipOffset)
 {
   const PhysicsParams<double> p;

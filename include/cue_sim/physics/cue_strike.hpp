@@ -1,4 +1,5 @@
-// The cue's impulse on a ball (Alciatore TP A-30; Leckie and Greenspan 2005, eq. 1).
+// The cue's impulse on a ball (Alciatore TP A-30; Leckie and Greenspan 2005, eq. 1, with the tip
+// offsets measured on the ball's face seen along the cue, as pooltool measures them since 2025).
 #pragma once
 
 #include <string>
@@ -13,9 +14,13 @@ namespace physics
 /// A cue strike. Sign conventions (shooter behind the ball, looking along phi):
 ///  - phi: heading in the table frame, from +x towards +y [rad];
 ///  - theta: cue elevation above the cloth [rad], 0 = level, in [0, max_elevation];
-///  - a: tip offset to the shooter's right, b: tip offset up, both in units of R.
+///  - a: tip offset to the cue's right, b: tip offset along the cue's up, both in units of R and
+///    measured on the ball's face perpendicular to the cue's axis (the cue's right is horizontal;
+///    its up is perpendicular to the axis and to the right, tilted back by theta from vertical):
+///    a = b = 0 is a centre hit, no spin at any elevation.
 ///    b > 0 is follow (topspin), b < 0 draw; a > 0 (right English) hits right of centre and gives the
-///    ball w_z > 0 (counter-clockwise seen from above).
+///    ball w_z > 0 (counter-clockwise seen from above), and on an elevated cue spin about its
+///    heading too, which curves its path while it slides (masse).
 template <typename S>
 struct CueStrike
 {

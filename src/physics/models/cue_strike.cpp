@@ -41,13 +41,15 @@ void applyCueStrike(Ball<S>& ball, const CueStrike<S>& s, const PhysicsParams<S>
   const Vec3<S> side(h.y(), -h.x(), S(0));
   const Vec3<S> z = Vec3<S>::UnitZ();
   const S A = s.a * R, B = s.b * R;
-  const S C = std::sqrt(std::max(R * R - A * A - B * B, S(0)));
   const S sin_t = std::sin(s.theta), cos_t = std::cos(s.theta);
-  // The tip meets the ball at P - C = A side + B z - C h; the cue pushes along
-  // d = cos(theta) h - sin(theta) z. The angular impulse per unit linear impulse is (P - C) x d,
-  // written out in (side, h, z) so that a centre hit gives exactly no spin.
-  const Vec3<S> lever = (C * sin_t - B * cos_t) * side + (A * sin_t) * h + (A * cos_t) * z;
-  const S speed = S(2) * s.speed / (S(1) + p.ball_mass / p.cue_mass + lever.squaredNorm() / (S(0.4) * R * R));
+  // The offsets lie on the ball's face seen along the cue (pooltool's convention since 2025):
+  // a along the cue's right (side), b along its up, u = sin(theta) h + cos(theta) z. The cue
+  // pushes along d = cos(theta) h - sin(theta) z, and the tip meets the ball at
+  // P - C = A side + B u - sqrt(R^2 - A^2 - B^2) d. The angular impulse per unit linear impulse
+  // is (P - C) x d = A u - B side: a = b = 0 is a centre hit with no spin at any elevation, and
+  // the lever's length is sqrt(A^2 + B^2) whatever theta is.
+  const Vec3<S> lever = (A * sin_t) * h + (A * cos_t) * z - B * side;
+  const S speed = S(2) * s.speed / (S(1) + p.ball_mass / p.cue_mass + (A * A + B * B) / (S(0.4) * R * R));
   // Squirt (Alciatore TP A-31): the cue's end mass m_e is pushed aside with the ball, which
   // leaves away from the side struck, turned by alpha in the horizontal plane.
   const S heading = s.phi + squirtAngle(s.a, p);
