@@ -137,3 +137,41 @@ TEST(CueAim, RefusalsSayWhatIsWrong)
   fast.axis = Vec3<double>(-1, 0, 0);
   EXPECT_NE(aimCue(balls, kParams, fast, 13, aim).find("speed"), std::string::npos);
 }
+
+TEST(CueAim, AnElevatedCueSpinsTheBallAboutThePointItMeets)
+{
+  // The cue's pose gives the contact point: its axis passes o from the centre (o perpendicular to
+  // the axis u), and the curved tip meets the ball o / (1 + r_tip / R) from the centre on the face
+  // seen along u. The strike aimCue answers must spin the ball as a push along u at that point
+  // does: w parallel to (P - C) x u. A cue aimed at the centre, however steep, spins nothing.
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (int k = 0; k < 200; ++k)
+  {
+    const double theta = 1.4 * unit(random), phi = 6.28 * unit(random);
+    const Vec3<double> u(std::cos(theta) * std::cos(phi), std::cos(theta) * std::sin(phi), -std::sin(theta));
+    Vec3<double> o = Vec3<double>(unit(random) - 0.5, unit(random) - 0.5, unit(random) - 0.5) * R;
+    o -= o.dot(u) * u;  // perpendicular to the axis
+    if (k % 10 == 0)
+      o.setZero();
+    const Ball<double> ball = ballAt(0, 0, 0);
+    CueStick cue;
+    cue.axis = u;
+    cue.tip = ball.r + o - u * (2 * R);
+    CueAim aim;
+    if (!aimCue({ball}, kParams, cue, 2.0, aim).empty())
+      continue;  // a miscue
+    const Vec3<double> face = o / (1 + kParams.cue_tip_radius / R);
+    const Vec3<double> contact = face - std::sqrt(R * R - face.squaredNorm()) * u;
+    Ball<double> struck = ball;
+    applyCueStrike(struck, aim.strike, kParams);
+    const Vec3<double> lever = contact.cross(u);
+    if (lever.norm() < 1e-15)
+    {
+      // A centre hit: what spin is left comes from the rounding of the pose's offset (1e-16 R).
+      EXPECT_LT(struck.w.norm(), 1e-12) << "a centre hit at theta " << theta;
+      continue;
+    }
+    EXPECT_NEAR(struck.w.normalized().dot(lever.normalized()), 1, 1e-9) << "strike " << k;
+  }
+}
