@@ -21,7 +21,7 @@ TEST(FrictionlessBallBall, ReproducesTheArticleExample)
   a.r = Vec3<double>(0, 0, p.ball_radius);
   b.r = Vec3<double>(2 * p.ball_radius, 0, p.ball_radius);  // n = +x, t = +y
   a.v = 20.0 * Vec3<double>(std::cos(40 * deg), -std::sin(40 * deg), 0);
-  FrictionlessBallBall<double>().resolve(a, b, p);
+  makeBallBallModel<double>("frictionless")->resolve(a, b, p);
   EXPECT_NEAR(a.v.x(), 1.53, 0.005);
   EXPECT_NEAR(a.v.y(), -12.86, 0.005);
   EXPECT_NEAR(b.v.x(), 13.79, 0.005);
@@ -42,7 +42,7 @@ TEST(FrictionlessBallBall, ConservesMomentumAndNeverGainsEnergy)
     a.w = Vec3<double>(3, -4, 10);
     const Vec3<double> momentum = a.v + b.v;
     const double energy = kineticEnergy(a, p) + kineticEnergy(b, p);
-    FrictionlessBallBall<double>().resolve(a, b, p);
+    makeBallBallModel<double>("frictionless")->resolve(a, b, p);
     EXPECT_NEAR((a.v + b.v - momentum).norm(), 0, 1e-14) << "e = " << e;
     const double after = kineticEnergy(a, p) + kineticEnergy(b, p);
     EXPECT_LE(after, energy * (1 + 1e-14)) << "e = " << e;
@@ -60,7 +60,7 @@ TEST(SimpleCushion, ReflectsTheNormalVelocityWithRestitution)
   b.v = Vec3<double>(0.8, -1.5, 0);
   b.w = Vec3<double>(1, 2, 3);
   const Vec3<double> n(0, 1, 0);  // cushion along x, play at +y
-  SimpleCushion<double>().resolve(b, n, p);
+  makeCushionModel<double>("simple")->resolve(b, n, p);
   EXPECT_DOUBLE_EQ(b.v.x(), 0.8);
   EXPECT_NEAR(b.v.y(), 1.5 * p.e_cushion, 1e-15);
   EXPECT_EQ(b.w, Vec3<double>(1, 2, 3));

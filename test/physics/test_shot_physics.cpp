@@ -122,7 +122,8 @@ TEST(ShotPhysics, CutInducedThrowIsAFewDegreesLargestNearHalfBall)
   // Alciatore TP A-14: a stun shot throws the object ball a few degrees towards the cue
   // ball's travel, most near a half-ball hit and more at slow speed.
   const PhysicsParams<double> p;
-  const FrictionalBallBall<double> model;
+  const auto frictional = makeBallBallModel<double>("frictional");
+  const BallBallModel<double>& model = *frictional;
   double largest = 0, largest_at = 0;
   for (double fraction = 0.125; fraction < 0.9; fraction += 0.125)
   {
@@ -151,7 +152,7 @@ TEST(ShotPhysics, CutInducedThrowIsAFewDegreesLargestNearHalfBall)
   }
   EXPECT_GE(largest_at, 0.25);
   EXPECT_LE(largest_at, 0.625);
-  EXPECT_NEAR(throwAngle(FrictionlessBallBall<double>(), p, 30 * kDeg, 0.5), 0.0, 1e-12);
+  EXPECT_NEAR(throwAngle(*makeBallBallModel<double>("frictionless"), p, 30 * kDeg, 0.5), 0.0, 1e-12);
 }
 
 TEST(ShotPhysics, DrawComesBackAndFollowRollsOn)
@@ -321,7 +322,8 @@ TEST(ShotPhysics, SideSpinThrowsTheObjectBallAndGearsItsSpin)
   // A full hit with right English (w_z > 0): friction at the contact drags the object ball to
   // the left of the line of centres and spins it the other way (Alciatore TP A-14, "gear").
   const PhysicsParams<double> p;
-  const FrictionalBallBall<double> model;
+  const auto frictional = makeBallBallModel<double>("frictional");
+  const BallBallModel<double>& model = *frictional;
   for (const double spin : {40.0, -40.0})
   {
     Ball<double> cue = ballAt(0, 0, 0, p), object = ballAt(1, 2 * p.ball_radius, 0, p);

@@ -19,6 +19,7 @@ template <typename S>
 class BallBallModel
 {
 public:
+  using Scalar = S;
   virtual ~BallBallModel() = default;
   virtual void resolve(Ball<S>& a, Ball<S>& b, const PhysicsParams<S>& p) const = 0;
 };
@@ -29,60 +30,35 @@ template <typename S>
 class CushionModel
 {
 public:
+  using Scalar = S;
   virtual ~CushionModel() = default;
   virtual void resolve(Ball<S>& ball, const Vec3<S>& normal, const PhysicsParams<S>& p) const = 0;
 };
 
-/// Lander 1999, "Physics on the Back of a Cocktail Napkin", Eq. 1-5: an impulse along the line
-/// of centres with restitution e_ball; tangential velocities and spins are unchanged.
-template <typename S>
-class FrictionlessBallBall : public BallBallModel<S>
+/// One contact model as include/cue_sim/physics/contact_models.def declares it.
+struct ModelInfo
 {
-public:
-  void resolve(Ball<S>& a, Ball<S>& b, const PhysicsParams<S>& p) const override;
+  const char* kind;          ///< "ball_ball" or "cushion"
+  const char* name;          ///< the name physics.yaml, scene files and ~cushion_model take
+  const char* summary;       ///< what it does, in a line
+  const char* coefficients;  ///< the PhysicsParams it reads, space-separated
+  const char* reference;     ///< where the model is published
 };
 
-/// The normal velocity is reversed and scaled by e_cushion; tangential velocity and spin are
-/// kept (the article's restitution model applied to a fixed wall).
-template <typename S>
-class SimpleCushion : public CushionModel<S>
-{
-public:
-  void resolve(Ball<S>& ball, const Vec3<S>& normal, const PhysicsParams<S>& p) const override;
-};
-
-/// Frictional inelastic impacts of equal spheres (Alciatore, TP ): the normal
-/// impulse as in the frictionless model; at the contact point the surfaces slide past each
-/// other and a friction impulse mu_b(v) times the normal impulse opposes that slip, capped by
-/// the impulse that stops it. It changes both balls' velocities and spins: cut- and
-/// spin-induced throw and spin transfer.
-template <typename S>
-class FrictionalBallBall : public BallBallModel<S>
-{
-public:
-  void resolve(Ball<S>& a, Ball<S>& b, const PhysicsParams<S>& p) const override;
-};
-
-/// Han 2005 ("Dynamics in carom and three cushion billiards", J. Mech. Sci. Technol. 19(4)):
-/// one impulse where the cushion's nose, cushion_height above the cloth, touches the ball.
-/// Normal impulse from e_cushion along the contact normal; friction f_cushion times it against
-/// the contact point's slip, capped by the no-slip impulse. Spin changes the rebound.
-template <typename S>
-class HanCushion : public CushionModel<S>
-{
-public:
-  void resolve(Ball<S>& ball, const Vec3<S>& normal, const PhysicsParams<S>& p) const override;
-};
+/// Every contact model, in declaration order; the first of each kind is the default.
+const std::vector<ModelInfo>& contactModels();
 
 /// Which model to use for each contact kind, by name (see ballBallModelNames() and
-/// cushionModelNames()).
+/// cushionModelNames()). Default-constructed: the default of each kind.
 struct ModelChoice
 {
-  std::string ball_ball = "frictional";
-  std::string cushion = "han2005";
+  ModelChoice();
+  ModelChoice(std::string ball_ball_model, std::string cushion_model);
+  std::string ball_ball;
+  std::string cushion;
 };
 
-/// The names accepted for each kind.
+/// The names accepted for each kind, the default first.
 std::vector<std::string> ballBallModelNames();
 std::vector<std::string> cushionModelNames();
 

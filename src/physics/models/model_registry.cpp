@@ -1,23 +1,35 @@
+// The contact models by name, from their one declaration (contact_models.def).
 #include <stdexcept>
+#include <type_traits>
 
 #include "cue_sim/physics/collision_models.hpp"
+#include "physics/models/model_factories.hpp"
 
 namespace cue_sim
 {
 namespace physics
 {
-std::vector<std::string> ballBallModelNames()
+const std::vector<ModelInfo>& contactModels()
 {
-  return {"frictional", "frictionless"};
-}
-
-std::vector<std::string> cushionModelNames()
-{
-  return {"han2005", "simple"};
+  static const std::vector<ModelInfo> models = {
+#define CUE_SIM_MODEL(kind, name, summary, coefficients, reference) {#kind, #name, summary, coefficients, reference},
+#include "cue_sim/physics/contact_models.def"
+#undef CUE_SIM_MODEL
+  };
+  return models;
 }
 
 namespace
 {
+std::vector<std::string> namesOf(const std::string& kind)
+{
+  std::vector<std::string> names;
+  for (const ModelInfo& model : contactModels())
+    if (model.kind == kind)
+      names.push_back(model.name);
+  return names;
+}
+
 std::string joined(const std::vector<std::string>& names)
 {
   std::string out;
@@ -27,23 +39,63 @@ std::string joined(const std::vector<std::string>& names)
 }
 }  // namespace
 
+std::vector<std::string> ballBallModelNames()
+{
+  return namesOf("ball_ball");
+}
+
+std::vector<std::string> cushionModelNames()
+{
+  return namesOf("cushion");
+}
+
+ModelChoice::ModelChoice() : ball_ball(ballBallModelNames().front()), cushion(cushionModelNames().front())
+{
+}
+
+ModelChoice::ModelChoice(std::string ball_ball_model, std::string cushion_model)
+  : ball_ball(std::move(ball_ball_model)), cushion(std::move(cushion_model))
+{
+}
+
+namespace
+{
+/// Keeps a made model when it is of the kind asked for: the declarations' loop below makes only
+/// the one whose kind and name match, and this picks it up with its type.
+template <typename Base, typename Made>
+void keep(std::unique_ptr<Base>& out, std::unique_ptr<Made> made)
+{
+  if constexpr (std::is_same_v<Base, Made>)
+    out = std::move(made);
+}
+
+template <typename Base>
+std::unique_ptr<Base> madeByName(const std::string& kind, const std::string& name)
+{
+  using S = typename Base::Scalar;
+  std::unique_ptr<Base> out;
+#define CUE_SIM_MODEL(model_kind, model_name, ...)                                                                     \
+  if (kind == #model_kind && name == #model_name)                                                                      \
+    keep(out, make_##model_kind##_##model_name<S>());
+#include "cue_sim/physics/contact_models.def"
+#undef CUE_SIM_MODEL
+  return out;
+}
+}  // namespace
+
 template <typename S>
 std::unique_ptr<BallBallModel<S>> makeBallBallModel(const std::string& name)
 {
-  if (name == "frictional")
-    return std::make_unique<FrictionalBallBall<S>>();
-  if (name == "frictionless")
-    return std::make_unique<FrictionlessBallBall<S>>();
+  if (auto model = madeByName<BallBallModel<S>>("ball_ball", name))
+    return model;
   throw std::invalid_argument("unknown ball-ball model '" + name + "' (known: " + joined(ballBallModelNames()) + ")");
 }
 
 template <typename S>
 std::unique_ptr<CushionModel<S>> makeCushionModel(const std::string& name)
 {
-  if (name == "han2005")
-    return std::make_unique<HanCushion<S>>();
-  if (name == "simple")
-    return std::make_unique<SimpleCushion<S>>();
+  if (auto model = madeByName<CushionModel<S>>("cushion", name))
+    return model;
   throw std::invalid_argument("unknown cushion model '" + name + "' (known: " + joined(cushionModelNames()) + ")");
 }
 

@@ -1,0 +1,40 @@
+// Lander 1999, "Physics on the Back of a Cocktail Napkin", Eq. 1-5: an impulse along the line of
+// centres with restitution e_ball; tangential velocities and spins are unchanged.
+#include "physics/models/model_factories.hpp"
+
+namespace cue_sim
+{
+namespace physics
+{
+namespace
+{
+template <typename S>
+class FrictionlessBallBall : public BallBallModel<S>
+{
+public:
+  void resolve(Ball<S>& a, Ball<S>& b, const PhysicsParams<S>& p) const override
+  {
+    Vec3<S> n = b.r - a.r;
+    n.z() = S(0);
+    n.normalize();
+    const S approach = (a.v - b.v).dot(n);  // > 0 while closing
+    if (!(approach > S(0)))
+      return;
+    // Lander 1999, Eq. 5 with m_A = m_B: j = -(1 + e) (v_A - v_B).n / (2/m).
+    const S j = -(S(1) + p.e_ball) * approach * p.ball_mass / S(2);
+    a.v += (j / p.ball_mass) * n;
+    b.v -= (j / p.ball_mass) * n;
+  }
+};
+}  // namespace
+
+template <typename S>
+std::unique_ptr<BallBallModel<S>> make_ball_ball_frictionless()
+{
+  return std::make_unique<FrictionlessBallBall<S>>();
+}
+template std::unique_ptr<BallBallModel<double>> make_ball_ball_frictionless();
+template std::unique_ptr<BallBallModel<long double>> make_ball_ball_frictionless();
+
+}  // namespace physics
+}  // namespace cue_sim

@@ -1,0 +1,56 @@
+// Mathavan, Jackson and Parkin 2010, "A theoretical analysis of billiard ball dynamics under
+// cushion impacts", Proc. IMechE Part C 224(9), 1863-1873.
+//
+// The cushion is rigid and its nose touches the ball at I, alpha = asin(h/R - 1) above the
+// equator; the cloth touches it at C, straight below. The impact is followed in the normal
+// impulse P at I, which grows through compression (the ball closing on I) and restitution until
+// the normal force has given back e^2 of the work it took (the paper's work-done restitution,
+// Stronge's energetic coefficient). Along the way Coulomb friction mu_cushion acts against the
+// slip at I, the cloth pushes up with whatever keeps the ball on it (the paper's P_C), and
+// friction mu_slide acts against the slip at C. Written here with vectors, which gives the
+// paper's component equations (its Eq. 13-17) in its cushion frame.
+#include <algorithm>
+#include <cmath>
+
+#include "physics/models/cushion/cushion_impact.hpp"
+#include "physics/models/friction_impulse.hpp"
+#include "physics/models/model_factories.hpp"
+
+namespace cue_sim
+{
+namespace physics
+{
+namespace
+{
+template <typename S>
+class MathavanCushion : public CushionModel<S>
+{
+public:
+  void resolve(Ball<S>& ball, const Vec3<S>& normal, const PhysicsParams<S>& p) const override
+  {
+    CushionImpact<S> impact(ball, normal, p);
+    if (!(impact.approach() > S(0)))
+      return;
+    impact.integrate(p.e_cushion_work, p.mu_cushion, p.mu_slide, stepsOf(p.cushion_impact_steps));
+    ball.v = impact.velocity();
+    ball.w = impact.spin();
+  }
+
+private:
+  static int stepsOf(S steps)
+  {
+    return static_cast<int>(std::lround(std::clamp(static_cast<double>(steps), 2.0, 10000.0)));
+  }
+};
+}  // namespace
+
+template <typename S>
+std::unique_ptr<CushionModel<S>> make_cushion_mathavan2010()
+{
+  return std::make_unique<MathavanCushion<S>>();
+}
+template std::unique_ptr<CushionModel<double>> make_cushion_mathavan2010();
+template std::unique_ptr<CushionModel<long double>> make_cushion_mathavan2010();
+
+}  // namespace physics
+}  // namespace cue_sim
