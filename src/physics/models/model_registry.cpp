@@ -49,9 +49,7 @@ std::vector<std::string> cushionModelNames()
   return namesOf("cushion");
 }
 
-ModelChoice::ModelChoice() : ball_ball(ballBallModelNames().front()), cushion(cushionModelNames().front())
-{
-}
+ModelChoice::ModelChoice() : ball_ball(ballBallModelNames().front()), cushion(cushionModelNames().front()) {}
 
 ModelChoice::ModelChoice(std::string ball_ball_model, std::string cushion_model)
   : ball_ball(std::move(ball_ball_model)), cushion(std::move(cushion_model))

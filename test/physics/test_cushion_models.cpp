@@ -1,0 +1,207 @@
+// Cushion models: limits with a closed form, the invariants every model keeps, and the
+// integration of Mathavan, Jackson and Parkin 2010 against its own long-double limit.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "cue_sim/physics/collision_models.hpp"
+#include "cue_sim/physics/motion.hpp"
+
+using namespace cue_sim::physics;
+
+namespace
+{
+/// The paper's ball and cushion (Mathavan 2010, section 2 and Table 1: a snooker ball, the nose
+/// at 7R/5, e = 0.98, mu_w = 0.14 at the cushion, mu_s = 0.212 on the cloth).
+template <typename S = double>
+PhysicsParams<S> papersBall()
+{
+  PhysicsParams<S> p;
+  p.ball_mass = 0.1406;
+  p.ball_radius = 0.02625;
+  p.cushion_height = 0.02625 * 7 / 5;
+  p.e_cushion_work = 0.98;
+  p.mu_cushion = 0.14;
+  p.mu_slide = 0.212;
+  return p;
+}
+
+/// The paper's frame: the cushion along x at +y, so its normal into play is -y; the ball comes
+/// in at `alpha` to the cushion with speed V, topspin k_t V/R about its travel and side spin
+/// k_s V/R (the paper's omega_0T and omega_0S).
+template <typename S>
+Ball<S> incoming(S speed, S alpha, S k_top, S k_side, const PhysicsParams<S>& p)
+{
+  Ball<S> b;
+  b.r = Vec3<S>(0, 0, p.ball_radius);
+  b.v = speed * Vec3<S>(std::cos(alpha), std::sin(alpha), 0);
+  const S top = k_top * speed / p.ball_radius;
+  b.w = Vec3<S>(-top * std::sin(alpha), top * std::cos(alpha), k_side * speed / p.ball_radius);
+  return b;
+}
+
+const Vec3<double> kIntoPlay(0, -1, 0);
+const double kDeg = M_PI / 180;
+}  // namespace
+
+TEST(MathavanCushion, WithoutFrictionTheNormalVelocityComesBackTimesE)
+{
+  // With no friction the normal impulse is the only force: the closing speed falls linearly in
+  // it, and giving back e^2 of the compression's work is Newton's restitution. Spin and the
+  // velocity along the cushion are untouched, whatever the steps and the nose's height.
+  for (const double height : {1.05, 1.4, 1.95})
+    for (const int steps : {2, 7, 50})
+      for (const double alpha : {5.0, 45.0, 90.0})
+      {
+        PhysicsParams<double> p = papersBall();
+        p.mu_cushion = 0;
+        p.mu_slide = 0;
+        p.cushion_height = height * p.ball_radius;
+        p.cushion_impact_steps = steps;
+        p.e_cushion_work = 0.7;
+        Ball<double> b = incoming(1.3, alpha * kDeg, 1.0, -2.0, p);
+        const Ball<double> before = b;
+        makeCushionModel<double>("mathavan2010")->resolve(b, kIntoPlay, p);
+        SCOPED_TRACE(std::to_string(height) + " R, " + std::to_string(steps) + " steps, " + std::to_string(alpha));
+        EXPECT_NEAR(b.v.y(), -0.7 * before.v.y(), 1e-12);
+        EXPECT_NEAR(b.v.x(), before.v.x(), 1e-12);
+        EXPECT_NEAR((b.w - before.w).norm(), 0, 1e-9);
+        EXPECT_EQ(b.v.z(), 0.0);
+      }
+}
+
+TEST(MathavanCushion, SlidingThroughoutFollowsThePapersEquationsInClosedForm)
+{
+  // Head on with heavy topspin (20 V/R) and no cloth friction, the nose slips one way through
+  // the whole impact (phi = -90 degrees in the paper's Eq. 13-17). The equations are then linear
+  // in the impulse: v_y falls at (cos(t) + mu_w sin(t)) / M, so v_y' = -e V, the impulse is
+  // (1 + e) M V / (cos(t) + mu_w sin(t)), and w_x grows by 5 mu_w / (2 M R) times it.
+  PhysicsParams<double> p = papersBall();
+  p.mu_slide = 0;
+  const double V = 1.2, sin_t = 0.4, cos_t = std::sqrt(21.0) / 5;
+  for (const int steps : {2, 20})
+  {
+    p.cushion_impact_steps = steps;
+    Ball<double> b = incoming(V, 90 * kDeg, 20.0, 0.0, p);
+    const Ball<double> before = b;
+    makeCushionModel<double>("mathavan2010")->resolve(b, kIntoPlay, p);
+    const double impulse = (1 + p.e_cushion_work) * p.ball_mass * V / (cos_t + p.mu_cushion * sin_t);
+    EXPECT_NEAR(b.v.y(), -p.e_cushion_work * V, 1e-12);
+    EXPECT_NEAR(b.v.x(), 0, 1e-12);
+    EXPECT_NEAR(b.w.x(), before.w.x() + 5 * p.mu_cushion / (2 * p.ball_mass * p.ball_radius) * impulse, 1e-9);
+    EXPECT_NEAR(b.w.y(), 0, 1e-9);
+    EXPECT_NEAR(b.w.z(), 0, 1e-9);
+  }
+}
+
+TEST(MathavanCushion, TheIntegrationConvergesToItsLongDoubleLimitAtSecondOrderWhileItSlides)
+{
+  // The paper's rebounds at V = 1 m/s (its figures' speed), each against the same impact in
+  // long double with 10000 steps. Where the contacts slide throughout, the midpoint steps are
+  // second order: doubling the steps quarters the error. Where a contact sticks part way, the
+  // step that holds the change is resolved exactly but the change's place within it is not:
+  // the error still falls at least linearly.
+  struct Case
+  {
+    double alpha_deg, k_top, k_side;
+  };
+  for (const Case c :
+       {Case{30, -1, 0}, Case{11.5, 2, -1}, Case{45, 1, 0}, Case{60, 1, 2}, Case{90, 1, 1}, Case{90, 0, 0}})
+  {
+    SCOPED_TRACE(std::to_string(c.alpha_deg) + " deg, topspin " + std::to_string(c.k_top) + ", side " +
+                 std::to_string(c.k_side));
+    PhysicsParams<long double> pl = papersBall<long double>();
+    pl.cushion_impact_steps = 10000;
+    Ball<long double> reference = incoming<long double>(1, c.alpha_deg * kDeg, c.k_top, c.k_side, pl);
+    makeCushionModel<long double>("mathavan2010")->resolve(reference, kIntoPlay.cast<long double>(), pl);
+    const auto errorWith = [&](int steps) {
+      PhysicsParams<double> p = papersBall();
+      p.cushion_impact_steps = steps;
+      Ball<double> b = incoming(1.0, c.alpha_deg * kDeg, c.k_top, c.k_side, p);
+      makeCushionModel<double>("mathavan2010")->resolve(b, kIntoPlay, p);
+      return (b.v - reference.v.cast<double>()).norm();
+    };
+    const double coarse = errorWith(16), fine = errorWith(256);
+    EXPECT_LT(fine, coarse / 16 + 1e-12);  // at least first order over 16 times the steps
+    EXPECT_LT(fine, 5e-6);
+  }
+}
+
+TEST(CushionModels, NeverGainEnergyLeaveTheCushionAndStayOnTheCloth)
+{
+  // Every registered cushion model, random balls and coefficients: the ball leaves level, with
+  // no more kinetic energy (translation and spin) than it came with. The integrated impact and
+  // the reflection also leave it moving off the cushion (v.n >= 0); Han's single impulse may
+  // not (with a nose near the ball's top or little restitution, its push is mostly down), and
+  // the engine repeats it, then stops what is left (EventResolver::wallImpact).
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(0, 1), symmetric(-1, 1);
+  for (const std::string& name : cushionModelNames())
+  {
+    const auto model = makeCushionModel<double>(name);
+    for (int i = 0; i < 3000; ++i)
+    {
+      PhysicsParams<double> p;
+      p.e_cushion = unit(rng);
+      p.e_cushion_work = unit(rng);
+      p.f_cushion = 2 * unit(rng);
+      p.mu_cushion = 2 * unit(rng);
+      p.mu_slide = 2 * unit(rng);
+      p.cushion_height = p.ball_radius * (1.01 + 0.98 * unit(rng));
+      p.cushion_impact_steps = 2 + std::floor(60 * unit(rng));
+      const Vec3<double> n = Vec3<double>(symmetric(rng), symmetric(rng), 0).normalized();
+      Ball<double> b;
+      b.r = Vec3<double>(0, 0, p.ball_radius);
+      b.v = 3 * Vec3<double>(symmetric(rng), symmetric(rng), 0);
+      b.v -= std::max(0.0, b.v.dot(n)) * n * 1.5;  // into the cushion
+      b.w = 200 * Vec3<double>(symmetric(rng), symmetric(rng), symmetric(rng));
+      const double energy = kineticEnergy(b, p);
+      model->resolve(b, n, p);
+      SCOPED_TRACE(name + " #" + std::to_string(i));
+      ASSERT_LE(kineticEnergy(b, p), energy * (1 + 1e-12));
+      if (name != "han2005")
+      {
+        ASSERT_GE(b.v.dot(n), -1e-12 * b.v.norm());
+      }
+      ASSERT_EQ(b.v.z(), 0.0);
+      ASSERT_TRUE(b.v.allFinite() && b.w.allFinite());
+    }
+  }
+}
+
+TEST(CushionModels, ARigidCushionsReboundScalesWithTheSpeed)
+{
+  // None of the rigid models has a speed or time scale: three times the velocity and spin in
+  // gives three times out (the paper's reason to check its rigid cushion only below 2.5 m/s).
+  for (const std::string& name : cushionModelNames())
+  {
+    const PhysicsParams<double> p = papersBall();
+    const auto model = makeCushionModel<double>(name);
+    Ball<double> slow = incoming(0.8, 35 * kDeg, 1.5, -0.7, p), fast = incoming(2.4, 35 * kDeg, 1.5, -0.7, p);
+    model->resolve(slow, kIntoPlay, p);
+    model->resolve(fast, kIntoPlay, p);
+    EXPECT_NEAR((fast.v - 3 * slow.v).norm(), 0, 1e-12) << name;
+    EXPECT_NEAR((fast.w - 3 * slow.w).norm(), 0, 1e-9) << name;
+  }
+}
+
+TEST(CushionModels, AMirroredShotReboundsMirrored)
+{
+  // Reflecting the shot in the plane through the cushion's normal (x -> -x) reflects the
+  // rebound; spin is a pseudovector, so w_x keeps its sign and w_y, w_z change theirs.
+  const auto mirrored = [](Vec3<double> v) { return Vec3<double>(-v.x(), v.y(), v.z()); };
+  const auto mirroredSpin = [](Vec3<double> w) { return Vec3<double>(w.x(), -w.y(), -w.z()); };
+  for (const std::string& name : cushionModelNames())
+  {
+    const PhysicsParams<double> p = papersBall();
+    const auto model = makeCushionModel<double>(name);
+    Ball<double> a = incoming(1.1, 50 * kDeg, 0.6, 1.3, p), b = a;
+    b.v = mirrored(a.v);
+    b.w = mirroredSpin(a.w);
+    model->resolve(a, kIntoPlay, p);
+    model->resolve(b, kIntoPlay, p);
+    EXPECT_NEAR((b.v - mirrored(a.v)).norm(), 0, 1e-12) << name;
+    EXPECT_NEAR((b.w - mirroredSpin(a.w)).norm(), 0, 1e-9) << name;
+  }
+}
