@@ -36,13 +36,14 @@ inline std::shared_ptr<const TableModel> sevenFoot()
   return table;
 }
 
-/// Default models (frictional ball-ball, Han 2005 cushions, jaws) on `table`.
+/// Default coefficients and models (unless `models` says otherwise) on `table`.
 inline std::shared_ptr<const Engine<double>> defaultEngine(std::shared_ptr<const TableModel> table,
-                                                           long max_events = EngineLimits().max_events)
+                                                           long max_events = EngineLimits().max_events,
+                                                           const ModelChoice& models = ModelChoice())
 {
   EngineLimits limits;
   limits.max_events = max_events;
-  return std::make_shared<const Engine<double>>(std::move(table), PhysicsParams<double>(), ModelChoice(), limits);
+  return std::make_shared<const Engine<double>>(std::move(table), PhysicsParams<double>(), models, limits);
 }
 
 /// A real rack's uneven gaps: 0.2 mm nominal, each ball moved up to 0.1 mm (fixed seed).
@@ -199,6 +200,33 @@ inline const std::map<std::string, std::function<BenchScene()>>& benchScenes()
       {"scaling_1024", [] { return scaling(1024, 1024); }},
   };
   return scenes;
+}
+
+/// The 8-ball break with each cushion model (`eight_ball_break_<model>`): what a model costs a
+/// whole shot.
+inline BenchScene eightBallBreakWith(const std::string& cushion_model)
+{
+  auto engine =
+      defaultEngine(sevenFoot(), EngineLimits().max_events, ModelChoice(ModelChoice().ball_ball, cushion_model));
+  return sent(engine, rackLayout<double>("eight", engine->table(), engine->params().ball_radius, realRack()), 8.0, 0.0);
+}
+
+/// Balls meeting a cushion (normal -y) at 1 m/s: incidence 5 to 90 degrees, topspin -1 to 2 and
+/// side spin -2 to 2 times V/R (the ranges of Mathavan 2010's figures), 64 in all.
+inline std::vector<Ball<double>> cushionArrivals(const PhysicsParams<double>& p)
+{
+  std::vector<Ball<double>> balls;
+  for (int k = 0; k < 64; ++k)
+  {
+    const double alpha = (5.0 + 85.0 * (k % 8) / 7.0) * M_PI / 180, top = -1.0 + 3.0 * ((k / 8) % 4) / 3.0;
+    const double side = k < 32 ? 0.0 : -2.0 + 4.0 * ((k / 4) % 8) / 7.0;
+    Ball<double> b;
+    b.r = Vec3<double>(0, 0, p.ball_radius);
+    b.v = Vec3<double>(std::cos(alpha), std::sin(alpha), 0);
+    b.w = Vec3<double>(-top * std::sin(alpha), top * std::cos(alpha), side) / p.ball_radius;
+    balls.push_back(b);
+  }
+  return balls;
 }
 
 /// The stepped runs: a scene advanced in steps of 1/rate s until it rests, as the node's tick

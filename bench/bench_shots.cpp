@@ -107,6 +107,28 @@ const int registered = [] {
     benchmark::RegisterBenchmark(name.c_str(), [run = run](benchmark::State& s) {
       runInTurn(s, {benchScene(run.first)}, run.second);
     })->Unit(benchmark::kMicrosecond);
+  // Each cushion model: its cost per impact, and the break's cost with it.
+  for (const std::string& model : cushionModelNames())
+  {
+    benchmark::RegisterBenchmark(("cushion_impact_" + model).c_str(), [model](benchmark::State& s) {
+      const PhysicsParams<double> p;
+      const auto resolver = makeCushionModel<double>(model);
+      const std::vector<Ball<double>> arrivals = cushionArrivals(p);
+      const Vec3<double> normal(0, -1, 0);
+      for (auto _ : s)
+        for (Ball<double> b : arrivals)
+        {
+          resolver->resolve(b, normal, p);
+          benchmark::DoNotOptimize(b);
+        }
+      s.SetItemsProcessed(s.iterations() * static_cast<long>(arrivals.size()));
+      s.counters["ns_per_impact"] = benchmark::Counter(static_cast<double>(s.iterations() * arrivals.size()),
+                                                       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    })->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(("eight_ball_break_" + model).c_str(), [model](benchmark::State& s) {
+      runInTurn(s, {eightBallBreakWith(model)});
+    })->Unit(benchmark::kMicrosecond);
+  }
   return 0;
 }();
 }  // namespace

@@ -9,7 +9,10 @@ namespace physics
 {
 template <typename S>
 CushionImpact<S>::CushionImpact(const Ball<S>& ball, const Vec3<S>& normal, const PhysicsParams<S>& p)
-  : mass_(p.ball_mass), inertia_(S(0.4) * p.ball_mass * p.ball_radius * p.ball_radius), normal_(normal)
+  : mass_(p.ball_mass),
+    radius_(p.ball_radius),
+    inertia_(S(0.4) * p.ball_mass * p.ball_radius * p.ball_radius),
+    normal_(normal)
 {
   const S R = p.ball_radius;
   const S sin_a = std::clamp(p.cushion_height / R - S(1), S(-1), S(1));
@@ -48,6 +51,7 @@ CushionImpact<S>::CushionImpact(const Ball<S>& ball, const Vec3<S>& normal, cons
   }
   slip0_ << nose_plane_.transpose() * (v0_ + w0_.cross(nose_)), cloth_plane_.transpose() * (v0_ + w0_.cross(cloth_));
   approach0_ = -v0_.dot(contact_normal_);
+  speed_scale_ = v0_.norm() + R * w0_.norm();
   nose_stop_ = -slip_per_impulse_.template block<2, 2>(0, 1).inverse();
   cloth_stop_ = -slip_per_impulse_.template block<2, 2>(2, 3).inverse();
 }
@@ -66,41 +70,52 @@ Vec3<S> CushionImpact<S>::spin() const
 
 template <typename S>
 typename CushionImpact<S>::Vec2 CushionImpact<S>::friction(const Eigen::Matrix<S, 2, 2>& stop_per_slip,
-                                                           const Vec2& slip_without, const Vec2& sliding, S limit,
-                                                           bool& sticks)
+                                                           const Vec2& slip_from, const Vec2& slip_without,
+                                                           const Vec2& sliding, S limit, bool& sticks)
 {
+  // It sticks if friction within its limit can stop the slip by the step's end and then hold
+  // it against what drives it; a slip friction stops but cannot hold turns (reversalFraction
+  // ends the step there) and slides the other way.
   const Vec2 stopping = stop_per_slip * slip_without;
-  sticks = stopping.squaredNorm() <= limit * limit;
+  const Vec2 holding = stop_per_slip * (slip_without - slip_from);
+  sticks = stopping.squaredNorm() <= limit * limit && holding.squaredNorm() <= limit * limit;
   if (sticks)
     return stopping;
-  const S speed = sliding.norm();
+  // A slip that starts from (nearly) nothing heads where it would go without friction; any
+  // direction it has now is rounding.
+  const Vec2& heading = sliding.norm() > S(kUnsettledSlip) * slip_without.norm() ? sliding : slip_without;
+  const S speed = heading.norm();
   if (!(speed > zeroSpeed<S>()))
     return Vec2::Zero();
-  return -(limit / speed) * sliding;
+  return -(limit / speed) * heading;
 }
 
 template <typename S>
 typename CushionImpact<S>::Impulses CushionImpact<S>::pushed(const Impulses& from, S dp, const Slips& sliding) const
 {
   // The two frictions change each other's slips: each is found with the other's from the last
-  // sweep (Gauss-Seidel); when both slide neither depends on the other, and one sweep is all.
+  // sweep (Gauss-Seidel) until they settle; when both slide neither depends on the other, and
+  // one sweep is all.
   Impulses add = Impulses::Zero();
   add(0) = dp;
-  const Slips without_friction = slipsAt(from + add);
+  const Slips start = slipsAt(from), without_friction = slipsAt(from + add);
   const S nose_down = -dp * contact_normal_.z();
   bool nose_sticks = false, cloth_sticks = false;
-  for (int sweep = 0; sweep < 4; ++sweep)
+  for (int sweep = 0; sweep < kMaxFrictionSweeps; ++sweep)
   {
+    const Impulses before = add;
     const Slips nose_without = without_friction + slip_per_impulse_.template rightCols<2>() * add.template tail<2>();
-    add.template segment<2>(1) =
-        friction(nose_stop_, nose_without.template head<2>(), sliding.template head<2>(), mu_nose_ * dp, nose_sticks);
+    add.template segment<2>(1) = friction(nose_stop_, start.template head<2>(), nose_without.template head<2>(),
+                                          sliding.template head<2>(), mu_nose_ * dp, nose_sticks);
     // The cloth pushes up with what the nose pushes down, its friction's part included.
     const S cloth_normal = std::max(S(0), nose_down - (nose_plane_ * add.template segment<2>(1)).z());
     const Slips cloth_without =
         without_friction + slip_per_impulse_.template middleCols<2>(1) * add.template segment<2>(1);
-    add.template tail<2>() = friction(cloth_stop_, cloth_without.template tail<2>(), sliding.template tail<2>(),
-                                      mu_cloth_ * cloth_normal, cloth_sticks);
+    add.template tail<2>() = friction(cloth_stop_, start.template tail<2>(), cloth_without.template tail<2>(),
+                                      sliding.template tail<2>(), mu_cloth_ * cloth_normal, cloth_sticks);
     if (!nose_sticks && !cloth_sticks)
+      break;
+    if ((add - before).norm() <= S(kSweepSettled) * add.norm())
       break;
   }
   return add;
@@ -114,7 +129,74 @@ typename CushionImpact<S>::Impulses CushionImpact<S>::step(const Impulses& from,
 }
 
 template <typename S>
-void CushionImpact<S>::integrate(S e_work, S mu_nose, S mu_cloth, int steps)
+bool CushionImpact<S>::frictionWorksAgainstTheSlips(const Impulses& from, const Impulses& to) const
+{
+  // Along the straight way from one impulse state to the other every slip changes linearly, so
+  // a friction impulse's work is its dot product with the mean of the slip it met.
+  // A sticking contact's slips are rounding, and so is the sign of its work: work below
+  // kWorkRounding of the friction times the impact's speed counts as none.
+  const Impulses change = to - from;
+  const Slips mean = (slipsAt(from) + slipsAt(to)) / S(2);
+  const Vec2 at_nose = change.template segment<2>(1), at_cloth = change.template tail<2>();
+  const S rounding = S(kWorkRounding) * speed_scale_;
+  return at_nose.dot(mean.template head<2>()) <= rounding * at_nose.norm() &&
+         at_cloth.dot(mean.template tail<2>()) <= rounding * at_cloth.norm();
+}
+
+template <typename S>
+S CushionImpact<S>::reversalFraction(const Impulses& from, const Impulses& to) const
+{
+  // A slip that passes through zero and goes on the other way turns its friction round there:
+  // the step ends where the slip along its first direction has fallen to zero (it falls nearly
+  // linearly over a step), and the next step slides the new way.
+  const Slips start = slipsAt(from), end = slipsAt(to);
+  S fraction = 1;
+  for (int contact = 0; contact < 2; ++contact)
+  {
+    const Vec2 s0 = start.template segment<2>(2 * contact), s1 = end.template segment<2>(2 * contact);
+    const S along0 = s0.squaredNorm(), along1 = s1.dot(s0);
+    if (along1 < S(0) && along0 > S(kWorkRounding) * speed_scale_ * speed_scale_)
+      fraction = std::min(fraction, std::max(along0 / (along0 - along1), S(kShortestReversalStep)));
+  }
+  return fraction;
+}
+
+template <typename S>
+typename CushionImpact<S>::Impulses CushionImpact<S>::controlledStep(const Impulses& from, S& dp, S tolerance,
+                                                                     S& error) const
+{
+  // One step against two half steps: their difference is the step's error (step doubling). A
+  // step is halved until that is within the tolerance and neither friction works with its
+  // slip; the two half steps are taken. The shortest step is taken as it is, or without
+  // friction if that would work with a slip.
+  for (int halving = 0;; ++halving, dp /= S(2))
+  {
+    Impulses full = step(from, dp);
+    const S reversal = reversalFraction(from, full);
+    if (reversal < S(1))
+    {
+      dp *= reversal;
+      full = step(from, dp);
+    }
+    const Impulses halves = step(step(from, dp / S(2)), dp / S(2));
+    const Impulses difference = halves - full;
+    error = ((velocity_per_impulse_ * difference).norm() + radius_ * (spin_per_impulse_ * difference).norm()) /
+            speed_scale_;
+    const bool dissipative = frictionWorksAgainstTheSlips(from, halves);
+    if (dissipative && (error <= tolerance || halving >= kMaxHalvings))
+      return halves;
+    if (halving >= kMaxHalvings)
+    {
+      Impulses next = from;
+      next(0) += dp;
+      error = 0;
+      return next;
+    }
+  }
+}
+
+template <typename S>
+void CushionImpact<S>::integrate(S e_work, S mu_nose, S mu_cloth, S tolerance)
 {
   mu_nose_ = mu_nose;
   mu_cloth_ = mu_cloth;
@@ -122,58 +204,60 @@ void CushionImpact<S>::integrate(S e_work, S mu_nose, S mu_cloth, int steps)
   if (!(approach0 > S(0)))
     return;
   const S cos_a = contact_normal_.template head<2>().norm();
-  const S dp = (S(1) + e_work) * mass_ * approach0 / (cos_a * cos_a) / S(steps);
-  const int max_steps = 8 * steps + 8;
+  const S total = (S(1) + e_work) * mass_ * approach0 / (cos_a * cos_a);  // without friction
+  S next_step = total / S(kFirstSteps);
 
-  // Compression: the normal force takes work approach * dP until the ball stops closing.
-  S compression_work = 0;
-  S before = approach0;
-  for (int n = 0; n < max_steps && before > S(0); ++n)
+  // W, the work the normal force has taken: approach * dP summed. Each step goes straight from
+  // one impulse state to the next, along which the closing speed changes linearly, so the
+  // trapezoid is exact and the kinetic energy the ball ends with is exactly what W and the
+  // frictions' (never positive) work make it. Compression ends at W's peak W_c, where the
+  // closing speed is 0; restitution where W has fallen to (1 - e^2) W_c. A ball still closing
+  // after kJammedImpulse times the frictionless impulse is jammed: friction at the nose presses
+  // it on about as fast as the normal impulse pushes it back (rigid bodies with Coulomb friction
+  // have no answer there).
+  S work = 0, peak = -1, target = 0;
+  for (int n = 0; n < kMaxSteps; ++n)
   {
-    const Impulses next = step(impulses_, dp);
-    const S after = approachAt(next);
-    if (after > S(0))
+    S dp = next_step, error = 0;
+    const Impulses next = controlledStep(impulses_, dp, tolerance, error);
+    // A step well within the tolerance lets the next be twice as long, up to a quarter of the
+    // frictionless impulse.
+    next_step = std::min(total / S(4), error < tolerance / S(4) ? S(2) * dp : dp);
+    const S a0 = approach(), a1 = approachAt(next);
+    S from_fraction = 0;
+    if (peak < S(0))
     {
-      compression_work += dp * (before + after) / S(2);
+      if (a1 > S(0))
+      {
+        if (next(0) > S(kJammedImpulse) * total)
+          break;
+        work += dp * (a0 + a1) / S(2);
+        impulses_ = next;
+        continue;
+      }
+      from_fraction = a0 / (a0 - a1);  // the closing speed is 0 here
+      peak = work + from_fraction * dp * a0 / S(2);
+      target = (S(1) - e_work * e_work) * peak;
+    }
+    const S after = work + dp * (a0 + a1) / S(2);
+    if (after > target)
+    {
+      work = after;
       impulses_ = next;
-      before = after;
       continue;
     }
-    // The closing speed falls (nearly) linearly in P over a step: end where it reaches 0.
-    const S fraction = before / (before - after);
-    impulses_ = step(impulses_, fraction * dp);
-    compression_work += fraction * dp * before / S(2);
-    before = approach();
-  }
-  if (before > S(0))
-  {
-    leaveWithRestitution(e_work);
+    // Where on this step W falls to the target: dp (a0 f + (a1 - a0) f^2 / 2) = target - W,
+    // the root past the peak.
+    const S quadratic = dp * (a1 - a0) / S(2), linear = dp * a0, constant = work - target;
+    S fraction =
+        quadratic < S(0)
+            ? (-linear - std::sqrt(std::max(S(0), linear * linear - S(4) * quadratic * constant))) / (S(2) * quadratic)
+            : (linear < S(0) ? -constant / linear : S(1));
+    fraction = std::clamp(fraction, from_fraction, S(1));
+    impulses_ += fraction * (next - impulses_);
     return;
   }
-
-  // Restitution: the normal force gives back work -approach * dP until e^2 of it.
-  const S target = e_work * e_work * compression_work;
-  S released = 0;
-  for (int n = 0; n < max_steps && released < target; ++n)
-  {
-    const Impulses next = step(impulses_, dp);
-    const S a0 = approach(), a1 = approachAt(next);
-    const S work = -dp * (a0 + a1) / S(2);
-    if (released + work < target)
-    {
-      released += work;
-      impulses_ = next;
-      continue;
-    }
-    // Over a fraction f of the step the work is -dp (a0 f + (a1 - a0) f^2 / 2).
-    const S quadratic = -dp * (a1 - a0) / S(2), linear = -dp * a0, rest = target - released;
-    S fraction = quadratic > S(0)
-                     ? (-linear + std::sqrt(linear * linear + S(4) * quadratic * rest)) / (S(2) * quadratic)
-                     : (linear > S(0) ? rest / linear : S(1));
-    fraction = std::clamp(fraction, S(0), S(1));
-    impulses_ = step(impulses_, fraction * dp);
-    released = target;
-  }
+  leaveWithRestitution(e_work);
 }
 
 template <typename S>

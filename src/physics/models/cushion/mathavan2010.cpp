@@ -31,15 +31,9 @@ public:
     CushionImpact<S> impact(ball, normal, p);
     if (!(impact.approach() > S(0)))
       return;
-    impact.integrate(p.e_cushion_work, p.mu_cushion, p.mu_slide, stepsOf(p.cushion_impact_steps));
+    impact.integrate(p.e_cushion_work, p.mu_cushion, p.mu_slide, p.cushion_impact_tolerance);
     ball.v = impact.velocity();
     ball.w = impact.spin();
-  }
-
-private:
-  static int stepsOf(S steps)
-  {
-    return static_cast<int>(std::lround(std::clamp(static_cast<double>(steps), 2.0, 10000.0)));
   }
 };
 }  // namespace

@@ -1,0 +1,100 @@
+#include "cue_sim/evaluation/cushion_precision.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "physics/models/cushion/cushion_impact.hpp"
+
+namespace cue_sim
+{
+namespace evaluation
+{
+using physics::Ball;
+using physics::PhysicsParams;
+using physics::Vec3;
+
+std::vector<Ball<double>> cushionArrivals(const PhysicsParams<double>& p)
+{
+  std::vector<Ball<double>> balls;
+  for (const double alpha_deg : {5.0, 15.0, 30.0, 45.0, 60.0, 75.0, 90.0})
+  {
+    const double alpha = alpha_deg * M_PI / 180;
+    const auto arrive = [&](double top, double side) {
+      Ball<double> b;
+      b.r = Vec3<double>(0, 0, p.ball_radius);
+      b.v = Vec3<double>(std::cos(alpha), std::sin(alpha), 0);
+      b.w = Vec3<double>(-top * std::sin(alpha), top * std::cos(alpha), side) / p.ball_radius;
+      balls.push_back(b);
+    };
+    for (const double top : {-1.0, 0.0, 1.0, 2.0})
+      arrive(top, 0.0);
+    for (const double side : {-2.0, -1.0, 1.0, 2.0})
+      arrive(1.0, side);
+  }
+  return balls;
+}
+
+namespace
+{
+template <typename S>
+Ball<S> rebound(const Ball<S>& arrival, const PhysicsParams<S>& p, S tolerance)
+{
+  physics::CushionImpact<S> impact(arrival, Vec3<S>(0, -1, 0), p);
+  impact.integrate(p.e_cushion_work, p.mu_cushion, p.mu_slide, tolerance);
+  Ball<S> out = arrival;
+  out.v = impact.velocity();
+  out.w = impact.spin();
+  return out;
+}
+}  // namespace
+
+std::vector<CushionPrecision> cushionImpactPrecision(const std::vector<double>& tolerances, double reference_tolerance,
+                                                     int repeats)
+{
+  const PhysicsParams<double> p;
+  const PhysicsParams<long double> pl = p.cast<long double>();
+  const std::vector<Ball<double>> arrivals = cushionArrivals(p);
+  std::vector<Ball<double>> reference;
+  for (const Ball<double>& b : arrivals)
+  {
+    Ball<long double> bl;
+    bl.r = b.r.cast<long double>();
+    bl.v = b.v.cast<long double>();
+    bl.w = b.w.cast<long double>();
+    const Ball<long double> out = rebound(bl, pl, static_cast<long double>(reference_tolerance));
+    Ball<double> back = b;
+    back.v = out.v.cast<double>();
+    back.w = out.w.cast<double>();
+    reference.push_back(back);
+  }
+  std::vector<CushionPrecision> results;
+  for (const double tolerance : tolerances)
+  {
+    CushionPrecision r;
+    r.tolerance = tolerance;
+    std::vector<double> times;
+    for (int repeat = 0; repeat < std::max(1, repeats); ++repeat)
+    {
+      const auto start = std::chrono::steady_clock::now();
+      for (std::size_t k = 0; k < arrivals.size(); ++k)
+      {
+        const Ball<double> out = rebound(arrivals[k], p, tolerance);
+        if (repeat == 0)
+        {
+          r.max_velocity_error = std::max(r.max_velocity_error, (out.v - reference[k].v).norm());
+          r.max_spin_error = std::max(r.max_spin_error, p.ball_radius * (out.w - reference[k].w).norm());
+        }
+      }
+      const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
+      times.push_back(took.count() / static_cast<double>(arrivals.size()));
+    }
+    std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
+    r.seconds_per_impact = times[times.size() / 2];
+    results.push_back(r);
+  }
+  return results;
+}
+
+}  // namespace evaluation
+}  // namespace cue_sim
