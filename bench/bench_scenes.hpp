@@ -211,24 +211,6 @@ inline BenchScene eightBallBreakWith(const std::string& cushion_model)
   return sent(engine, rackLayout<double>("eight", engine->table(), engine->params().ball_radius, realRack()), 8.0, 0.0);
 }
 
-/// Balls meeting a cushion (normal -y) at 1 m/s: incidence 5 to 90 degrees, topspin -1 to 2 and
-/// side spin -2 to 2 times V/R (the ranges of Mathavan 2010's figures), 64 in all.
-inline std::vector<Ball<double>> cushionArrivals(const PhysicsParams<double>& p)
-{
-  std::vector<Ball<double>> balls;
-  for (int k = 0; k < 64; ++k)
-  {
-    const double alpha = (5.0 + 85.0 * (k % 8) / 7.0) * M_PI / 180, top = -1.0 + 3.0 * ((k / 8) % 4) / 3.0;
-    const double side = k < 32 ? 0.0 : -2.0 + 4.0 * ((k / 4) % 8) / 7.0;
-    Ball<double> b;
-    b.r = Vec3<double>(0, 0, p.ball_radius);
-    b.v = Vec3<double>(std::cos(alpha), std::sin(alpha), 0);
-    b.w = Vec3<double>(-top * std::sin(alpha), top * std::cos(alpha), side) / p.ball_radius;
-    balls.push_back(b);
-  }
-  return balls;
-}
-
 /// The stepped runs: a scene advanced in steps of 1/rate s until it rests, as the node's tick
 /// advances the live table (`<scene>_stepped_<rate>Hz`).
 inline const std::map<std::string, std::pair<std::string, double>>& steppedRuns()

@@ -3,6 +3,7 @@
 #include <benchmark/benchmark.h>
 
 #include "bench_scenes.hpp"
+#include "cue_sim/evaluation/cushion_precision.hpp"
 #include "cue_sim/physics/batch.hpp"
 
 namespace
@@ -113,7 +114,7 @@ const int registered = [] {
     benchmark::RegisterBenchmark(("cushion_impact_" + model).c_str(), [model](benchmark::State& s) {
       const PhysicsParams<double> p;
       const auto resolver = makeCushionModel<double>(model);
-      const std::vector<Ball<double>> arrivals = cushionArrivals(p);
+      const std::vector<Ball<double>> arrivals = cue_sim::evaluation::cushionArrivals(p);
       const Vec3<double> normal(0, -1, 0);
       for (auto _ : s)
         for (Ball<double> b : arrivals)
