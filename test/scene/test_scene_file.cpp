@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 #include "cue_sim/scene/scene_file.hpp"
@@ -47,6 +48,10 @@ TEST(SceneFile, ConfigPhysicsYamlHoldsTheBuiltInDefaults)
     EXPECT_NEAR(from_yaml.*field.member, defaults.*field.member, 1e-9 * std::abs(defaults.*field.member)) << field.name;
   EXPECT_EQ(models.ball_ball, physics::ModelChoice().ball_ball);
   EXPECT_EQ(models.cushion, physics::ModelChoice().cushion);
+  // rosparam reads the file as YAML 1.1, where a number with an exponent and no point (1e-5)
+  // is a string, and the node refuses a coefficient that is not a number.
+  const std::regex exponent_without_point("\\n[a-z_]+: *[-+]?[0-9]+[eE][-+]?[0-9]+");
+  EXPECT_FALSE(std::regex_search(readConfig(), exponent_without_point));
 }
 
 TEST(SceneFile, ReadsTableRackBallsAndShot)
@@ -79,9 +84,9 @@ TEST(SceneFile, BadScenesNameTheProblem)
   EXPECT_NE(errorOf("physics: {e_ball: 1.5}\n").find("e_ball must be in [0, 1]"), std::string::npos);
   EXPECT_NE(errorOf("table: 6ft\n").find("unknown table '6ft'"), std::string::npos);
   EXPECT_NE(errorOf("rack: ten\n").find("unknown rack 'ten'"), std::string::npos);
-  EXPECT_NE(
-      errorOf("physics: {cushion_model: rubber}\n").find("cushion_model 'rubber' is unknown (known: han2005, mathavan2010, simple)"),
-      std::string::npos);
+  EXPECT_NE(errorOf("physics: {cushion_model: rubber}\n")
+                .find("cushion_model 'rubber' is unknown (known: han2005, mathavan2010, simple)"),
+            std::string::npos);
   EXPECT_NE(errorOf("balls: [{id: 0, position: [1]}]\n").find("'balls[0].position' must be a list of 2"),
             std::string::npos);
   EXPECT_NE(errorOf("shot: {speed: -2}\n").find("speed must be in (0, 12]"), std::string::npos);

@@ -211,11 +211,12 @@ void CushionImpact<S>::integrate(S e_work, S mu_nose, S mu_cloth, S tolerance)
   // one impulse state to the next, along which the closing speed changes linearly, so the
   // trapezoid is exact and the kinetic energy the ball ends with is exactly what W and the
   // frictions' (never positive) work make it. Compression ends at W's peak W_c, where the
-  // closing speed is 0; restitution where W has fallen to (1 - e^2) W_c. A ball still closing
-  // after kJammedImpulse times the frictionless impulse is jammed: friction at the nose presses
-  // it on about as fast as the normal impulse pushes it back (rigid bodies with Coulomb friction
-  // have no answer there).
+  // closing speed is 0; restitution where W has fallen to (1 - e^2) W_c. A ball whose closing
+  // speed stops falling is jammed: friction at the nose presses it on about as fast as the
+  // normal impulse pushes it back (rigid bodies with Coulomb friction have no answer there).
   S work = 0, peak = -1, target = 0;
+  const S frictionless_rate = cos_a * cos_a / mass_;  // the closing speed's fall per unit impulse
+  int jammed_steps = 0;
   for (int n = 0; n < kMaxSteps; ++n)
   {
     S dp = next_step, error = 0;
@@ -229,19 +230,27 @@ void CushionImpact<S>::integrate(S e_work, S mu_nose, S mu_cloth, S tolerance)
     {
       if (a1 > S(0))
       {
-        if (next(0) > S(kJammedImpulse) * total)
+        // Closing no slower than a thousandth of the frictionless rate, step after step, or
+        // after many times the frictionless impulse: jammed.
+        jammed_steps = (a1 - a0) / dp > -S(kJammedRate) * frictionless_rate ? jammed_steps + 1 : 0;
+        if (jammed_steps >= kJammedSteps || next(0) > S(kJammedImpulse) * total)
           break;
         work += dp * (a0 + a1) / S(2);
         impulses_ = next;
         continue;
       }
       from_fraction = a0 / (a0 - a1);  // the closing speed is 0 here
+      jammed_steps = 0;
       peak = work + from_fraction * dp * a0 / S(2);
       target = (S(1) - e_work * e_work) * peak;
     }
     const S after = work + dp * (a0 + a1) / S(2);
     if (after > target)
     {
+      // Both contacts held by friction can keep the ball from moving off too: jammed again.
+      jammed_steps = (a1 - a0) / dp > -S(kJammedRate) * frictionless_rate ? jammed_steps + 1 : 0;
+      if (jammed_steps >= kJammedSteps)
+        break;
       work = after;
       impulses_ = next;
       continue;

@@ -35,9 +35,11 @@ public:
   /// impact's speed scale (|v| + R |w|); a step also ends where a slip turns, and is halved
   /// where a friction would work with its slip. A contact whose slip friction can stop and hold
   /// sticks (Coulomb); one that keeps slipping slides against its slip half way through the
-  /// step. After kMaxSteps, or when friction keeps pressing the ball on (mu_nose beyond about
-  /// cot(alpha): still closing after kJammedImpulse times the frictionless impulse), the ball leaves with its remaining
-  /// normal velocity reversed and scaled by e_work.
+  /// step. The ball is jammed when its closing speed stops changing for kJammedSteps steps
+  /// (friction pressing it on as fast as the normal impulse pushes it back, mu_nose beyond
+  /// about cot(alpha); or both contacts held so that it cannot move off), or when compression
+  /// has taken kJammedImpulse times the frictionless impulse. Jammed, or after kMaxSteps, it
+  /// leaves with its remaining normal velocity reversed and scaled by e_work.
   void integrate(S e_work, S mu_nose, S mu_cloth, S tolerance);
 
   Vec3<S> velocity() const;
@@ -50,9 +52,13 @@ private:
   /// at the nose can slow the normal push by (cos(alpha) - mu sin(alpha)) / cos(alpha), which is
   /// above 1/16 unless mu_nose is within 6 % of cot(alpha).
   static constexpr double kJammedImpulse = 16;
+  /// Steps in a row whose closing speed falls slower than kJammedRate of the frictionless rate
+  /// (cos^2(alpha) / m per unit impulse) that mark a jam sooner.
+  static constexpr int kJammedSteps = 4;
+  static constexpr double kJammedRate = 1e-3;
   /// Halvings of a step before it is taken whatever its error (frictionless if a friction would
-  /// work with its slip): 2^-20 of a step is far below any slip's turning.
-  static constexpr int kMaxHalvings = 20;
+  /// work with its slip): 2^-12 of a step.
+  static constexpr int kMaxHalvings = 12;
   /// Gauss-Seidel sweeps over the two frictions of a step at most, and the relative change at
   /// which they have settled (a sticking contact's impulse is linear in the other's: the
   /// sweeps contract, a few tens reach rounding).
