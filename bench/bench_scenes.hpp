@@ -129,16 +129,20 @@ inline std::vector<BenchScene> distinctScalingScenes(int count)
   return scenes;
 }
 
+/// The 8-ball break with a cushion model: `eight_ball_break` with the default, and
+/// `eight_ball_break_<model>` with each, what a model costs a whole shot.
+inline BenchScene eightBallBreakWith(const std::string& cushion_model)
+{
+  auto engine =
+      defaultEngine(sevenFoot(), EngineLimits().max_events, ModelChoice(ModelChoice().ball_ball, cushion_model));
+  return sent(engine, rackLayout<double>("eight", engine->table(), engine->params().ball_radius, realRack()), 8.0, 0.0);
+}
+
 /// Every scene by name, built on demand.
 inline const std::map<std::string, std::function<BenchScene()>>& benchScenes()
 {
   static const std::map<std::string, std::function<BenchScene()>> scenes = {
-      {"eight_ball_break",
-       [] {
-         auto engine = defaultEngine(sevenFoot());
-         return sent(engine, rackLayout<double>("eight", engine->table(), engine->params().ball_radius, realRack()),
-                     8.0, 0.0);
-       }},
+      {"eight_ball_break", [] { return eightBallBreakWith(ModelChoice().cushion); }},
       {"nine_ball_break",
        [] {
          auto engine = defaultEngine(sevenFoot());
@@ -200,15 +204,6 @@ inline const std::map<std::string, std::function<BenchScene()>>& benchScenes()
       {"scaling_1024", [] { return scaling(1024, 1024); }},
   };
   return scenes;
-}
-
-/// The 8-ball break with each cushion model (`eight_ball_break_<model>`): what a model costs a
-/// whole shot.
-inline BenchScene eightBallBreakWith(const std::string& cushion_model)
-{
-  auto engine =
-      defaultEngine(sevenFoot(), EngineLimits().max_events, ModelChoice(ModelChoice().ball_ball, cushion_model));
-  return sent(engine, rackLayout<double>("eight", engine->table(), engine->params().ball_radius, realRack()), 8.0, 0.0);
 }
 
 /// The stepped runs: a scene advanced in steps of 1/rate s until it rests, as the node's tick

@@ -4,7 +4,7 @@
 #include <chrono>
 #include <cmath>
 
-#include "physics/models/cushion/cushion_impact.hpp"
+#include "cue_sim/physics/collision_models.hpp"
 
 namespace cue_sim
 {
@@ -37,23 +37,23 @@ std::vector<Ball<double>> cushionArrivals(const PhysicsParams<double>& p)
 
 namespace
 {
+/// The ball after the mathavan2010 model's impact with a cushion of normal -y, at the
+/// tolerance `p` gives.
 template <typename S>
-Ball<S> rebound(const Ball<S>& arrival, const PhysicsParams<S>& p, S tolerance)
+Ball<S> rebound(Ball<S> ball, const PhysicsParams<S>& p)
 {
-  physics::CushionImpact<S> impact(arrival, Vec3<S>(0, -1, 0), p);
-  impact.integrate(p.e_cushion_work, p.mu_cushion, p.mu_slide, tolerance);
-  Ball<S> out = arrival;
-  out.v = impact.velocity();
-  out.w = impact.spin();
-  return out;
+  static const auto model = physics::makeCushionModel<S>("mathavan2010");
+  model->resolve(ball, Vec3<S>(0, -1, 0), p);
+  return ball;
 }
 }  // namespace
 
 std::vector<CushionPrecision> cushionImpactPrecision(const std::vector<double>& tolerances, double reference_tolerance,
                                                      int repeats)
 {
-  const PhysicsParams<double> p;
-  const PhysicsParams<long double> pl = p.cast<long double>();
+  PhysicsParams<double> p;
+  PhysicsParams<long double> pl = p.cast<long double>();
+  pl.cushion_impact_tolerance = reference_tolerance;
   const std::vector<Ball<double>> arrivals = cushionArrivals(p);
   std::vector<Ball<double>> reference;
   for (const Ball<double>& b : arrivals)
@@ -62,7 +62,7 @@ std::vector<CushionPrecision> cushionImpactPrecision(const std::vector<double>& 
     bl.r = b.r.cast<long double>();
     bl.v = b.v.cast<long double>();
     bl.w = b.w.cast<long double>();
-    const Ball<long double> out = rebound(bl, pl, static_cast<long double>(reference_tolerance));
+    const Ball<long double> out = rebound(bl, pl);
     Ball<double> back = b;
     back.v = out.v.cast<double>();
     back.w = out.w.cast<double>();
@@ -73,13 +73,14 @@ std::vector<CushionPrecision> cushionImpactPrecision(const std::vector<double>& 
   {
     CushionPrecision r;
     r.tolerance = tolerance;
+    p.cushion_impact_tolerance = tolerance;
     std::vector<double> times;
     for (int repeat = 0; repeat < std::max(1, repeats); ++repeat)
     {
       const auto start = std::chrono::steady_clock::now();
       for (std::size_t k = 0; k < arrivals.size(); ++k)
       {
-        const Ball<double> out = rebound(arrivals[k], p, tolerance);
+        const Ball<double> out = rebound(arrivals[k], p);
         if (repeat == 0)
         {
           r.max_velocity_error = std::max(r.max_velocity_error, (out.v - reference[k].v).norm());

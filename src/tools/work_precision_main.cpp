@@ -42,6 +42,14 @@ std::string notes(const MethodResult& r)
   return out.str();
 }
 
+/// Draws a plot script's PNG; says so if gnuplot is missing or fails.
+void runGnuplot(const std::filesystem::path& script)
+{
+  const std::string command = "gnuplot '" + script.string() + "' 2>&1";
+  if (std::system(command.c_str()) != 0)
+    std::cerr << "work_precision: gnuplot failed or is missing; the plot script is " << script << "\n";
+}
+
 void writePlot(const std::filesystem::path& dir, const std::vector<std::string>& scenes)
 {
   std::ofstream gp(dir / "work_precision.gp");
@@ -62,10 +70,7 @@ void writePlot(const std::filesystem::path& dir, const std::vector<std::string>&
   }
   gp << "unset multiplot\n";
   gp.close();
-  const std::string command = "gnuplot '" + (dir / "work_precision.gp").string() + "' 2>&1";
-  if (std::system(command.c_str()) != 0)
-    std::cerr << "work_precision: gnuplot failed or is missing; the plot script is " << (dir / "work_precision.gp")
-              << "\n";
+  runGnuplot(dir / "work_precision.gp");
 }
 /// The integrated cushion impact (mathavan2010): rebound error against its steps and run time.
 void cushionImpactSection(const std::filesystem::path& dir, bool quick)
@@ -104,10 +109,7 @@ void cushionImpactSection(const std::filesystem::path& dir, bool quick)
      << "' using 2:3 skip 1 with linespoints pointsize 1.5 title 'velocity', '' using 2:4 skip 1 with linespoints "
         "pointsize 1.5 title 'R x spin', '' using 2:3:1 skip 1 with labels offset 0,1 notitle\n";
   gp.close();
-  const std::string command = "gnuplot '" + (dir / "cushion_impact.gp").string() + "' 2>&1";
-  if (std::system(command.c_str()) != 0)
-    std::cerr << "work_precision: gnuplot failed or is missing; the plot script is " << (dir / "cushion_impact.gp")
-              << "\n";
+  runGnuplot(dir / "cushion_impact.gp");
 }
 }  // namespace
 

@@ -21,15 +21,5 @@ Vec3<S> frictionImpulse(const Vec3<S>& slip, S limit, S inverse_mass)
   return -(std::min(limit, speed / inverse_mass) / speed) * slip;
 }
 
-/// An impulse of `magnitude` against `slip`; none when the slip is below zeroSpeed.
-template <typename S>
-Vec3<S> frictionAlong(const Vec3<S>& slip, S magnitude)
-{
-  const S speed = slip.norm();
-  if (!(speed > zeroSpeed<S>()))
-    return Vec3<S>::Zero();
-  return -(magnitude / speed) * slip;
-}
-
 }  // namespace physics
 }  // namespace cue_sim

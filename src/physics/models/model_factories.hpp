@@ -21,5 +21,16 @@ using ModelBase_cushion = CushionModel<S>;
 #include "cue_sim/physics/contact_models.def"
 #undef CUE_SIM_MODEL
 
+/// Defines make_<kind>_<name>() for a model's class template, in double and long double: the
+/// last line of each model's file.
+#define CUE_SIM_MODEL_FACTORY(kind, name, Class)                                                                       \
+  template <typename S>                                                                                                \
+  std::unique_ptr<ModelBase_##kind<S>> make_##kind##_##name()                                                          \
+  {                                                                                                                    \
+    return std::make_unique<Class<S>>();                                                                               \
+  }                                                                                                                    \
+  template std::unique_ptr<ModelBase_##kind<double>> make_##kind##_##name();                                           \
+  template std::unique_ptr<ModelBase_##kind<long double>> make_##kind##_##name();
+
 }  // namespace physics
 }  // namespace cue_sim

@@ -50,13 +50,7 @@ public:
 };
 }  // namespace
 
-template <typename S>
-std::unique_ptr<BallBallModel<S>> make_ball_ball_frictional()
-{
-  return std::make_unique<FrictionalBallBall<S>>();
-}
-template std::unique_ptr<BallBallModel<double>> make_ball_ball_frictional();
-template std::unique_ptr<BallBallModel<long double>> make_ball_ball_frictional();
+CUE_SIM_MODEL_FACTORY(ball_ball, frictional, FrictionalBallBall)
 
 }  // namespace physics
 }  // namespace cue_sim

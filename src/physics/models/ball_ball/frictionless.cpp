@@ -28,13 +28,7 @@ public:
 };
 }  // namespace
 
-template <typename S>
-std::unique_ptr<BallBallModel<S>> make_ball_ball_frictionless()
-{
-  return std::make_unique<FrictionlessBallBall<S>>();
-}
-template std::unique_ptr<BallBallModel<double>> make_ball_ball_frictionless();
-template std::unique_ptr<BallBallModel<long double>> make_ball_ball_frictionless();
+CUE_SIM_MODEL_FACTORY(ball_ball, frictionless, FrictionlessBallBall)
 
 }  // namespace physics
 }  // namespace cue_sim

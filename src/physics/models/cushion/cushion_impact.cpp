@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/models/cushion/nose_contact.hpp"
+
 namespace cue_sim
 {
 namespace physics
@@ -15,12 +17,11 @@ CushionImpact<S>::CushionImpact(const Ball<S>& ball, const Vec3<S>& normal, cons
     normal_(normal)
 {
   const S R = p.ball_radius;
-  const S sin_a = std::clamp(p.cushion_height / R - S(1), S(-1), S(1));
-  const S cos_a = std::sqrt(S(1) - sin_a * sin_a);
-  const Vec3<S> z = Vec3<S>::UnitZ(), along = normal.cross(z);  // along the cushion
-  nose_ = -R * cos_a * normal + R * sin_a * z;
-  cloth_ = -R * z;
-  contact_normal_ = cos_a * normal - sin_a * z;  // nose -> centre
+  const NoseContact<S> nose(normal, p);
+  const Vec3<S> along = normal.cross(Vec3<S>::UnitZ());  // along the cushion
+  nose_ = nose.offset;
+  cloth_ = -R * Vec3<S>::UnitZ();
+  contact_normal_ = nose.normal;
   nose_plane_.col(0) = along;
   nose_plane_.col(1) = contact_normal_.cross(along);
   cloth_plane_.col(0) = along;
@@ -215,7 +216,6 @@ void CushionImpact<S>::integrate(S e_work, S mu_nose, S mu_cloth, S tolerance)
   // speed stops falling is jammed: friction at the nose presses it on about as fast as the
   // normal impulse pushes it back (rigid bodies with Coulomb friction have no answer there).
   S work = 0, peak = -1, target = 0;
-  const S frictionless_rate = cos_a * cos_a / mass_;  // the closing speed's fall per unit impulse
   int jammed_steps = 0;
   for (int n = 0; n < kMaxSteps; ++n)
   {
@@ -230,9 +230,7 @@ void CushionImpact<S>::integrate(S e_work, S mu_nose, S mu_cloth, S tolerance)
     {
       if (a1 > S(0))
       {
-        // Closing no slower than a thousandth of the frictionless rate, step after step, or
-        // after many times the frictionless impulse: jammed.
-        jammed_steps = (a1 - a0) / dp > -S(kJammedRate) * frictionless_rate ? jammed_steps + 1 : 0;
+        jammed_steps = closingStalls(a0, a1, dp) ? jammed_steps + 1 : 0;
         if (jammed_steps >= kJammedSteps || next(0) > S(kJammedImpulse) * total)
           break;
         work += dp * (a0 + a1) / S(2);
@@ -248,7 +246,7 @@ void CushionImpact<S>::integrate(S e_work, S mu_nose, S mu_cloth, S tolerance)
     if (after > target)
     {
       // Both contacts held by friction can keep the ball from moving off too: jammed again.
-      jammed_steps = (a1 - a0) / dp > -S(kJammedRate) * frictionless_rate ? jammed_steps + 1 : 0;
+      jammed_steps = closingStalls(a0, a1, dp) ? jammed_steps + 1 : 0;
       if (jammed_steps >= kJammedSteps)
         break;
       work = after;
@@ -267,6 +265,14 @@ void CushionImpact<S>::integrate(S e_work, S mu_nose, S mu_cloth, S tolerance)
     return;
   }
   leaveWithRestitution(e_work);
+}
+
+template <typename S>
+bool CushionImpact<S>::closingStalls(S before, S after, S dp) const
+{
+  // The closing speed falls by cos^2(alpha) / m per unit normal impulse without friction.
+  const S frictionless_rate = contact_normal_.template head<2>().squaredNorm() / mass_;
+  return (after - before) / dp > -S(kJammedRate) * frictionless_rate;
 }
 
 template <typename S>

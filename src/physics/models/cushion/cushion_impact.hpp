@@ -44,8 +44,6 @@ public:
 
   Vec3<S> velocity() const;
   Vec3<S> spin() const;
-  /// The normal impulse at the nose so far [N s].
-  S normalImpulse() const { return impulses_(0); }
 
 private:
   /// A compression that has taken this many times the frictionless impulse is jammed: friction
@@ -101,6 +99,9 @@ private:
   /// `limit` can stop it and then hold it, else `limit` against `sliding`. Sets `sticks`.
   static Vec2 friction(const Eigen::Matrix<S, 2, 2>& stop_per_slip, const Vec2& slip_from, const Vec2& slip_without,
                        const Vec2& sliding, S limit, bool& sticks);
+  /// Whether the closing speed, from `before` to `after` over normal impulse dp, fell slower than
+  /// kJammedRate of its frictionless rate.
+  bool closingStalls(S before, S after, S dp) const;
   void leaveWithRestitution(S e_work);
 
   S mass_, radius_, inertia_;

@@ -2,9 +2,7 @@
 // impulse where the cushion's nose, cushion_height above the cloth, touches the ball. Normal
 // impulse from e_cushion along the contact normal; friction f_cushion times it against the
 // contact point's slip, capped by the no-slip impulse. Spin changes the rebound.
-#include <algorithm>
-#include <cmath>
-
+#include "physics/models/cushion/nose_contact.hpp"
 #include "physics/models/friction_impulse.hpp"
 #include "physics/models/model_factories.hpp"
 
@@ -21,13 +19,9 @@ public:
   void resolve(Ball<S>& ball, const Vec3<S>& normal, const PhysicsParams<S>& p) const override
   {
     const S m = p.ball_mass, R = p.ball_radius, inertia = S(0.4) * m * R * R;
-    // The nose touches the ball theta_a = asin(h/R - 1) above its equator.
-    const S sin_a = std::clamp(p.cushion_height / R - S(1), S(-1), S(1));
-    const S cos_a = std::sqrt(S(1) - sin_a * sin_a);
-    const Vec3<S> z = Vec3<S>::UnitZ();
-    const Vec3<S> contact = -R * cos_a * normal + R * sin_a * z;  // from the centre
-    const Vec3<S> contact_normal = cos_a * normal - sin_a * z;    // cushion -> ball
-    const S approach = -ball.v.dot(contact_normal);               // a sphere's spin adds nothing along it
+    const NoseContact<S> nose(normal, p);
+    const Vec3<S>&contact = nose.offset, &contact_normal = nose.normal;
+    const S approach = -ball.v.dot(contact_normal);  // a sphere's spin adds nothing along it
     if (!(approach > S(0)))
       return;
     const S normal_impulse = (S(1) + p.e_cushion) * m * approach;
@@ -43,13 +37,7 @@ public:
 };
 }  // namespace
 
-template <typename S>
-std::unique_ptr<CushionModel<S>> make_cushion_han2005()
-{
-  return std::make_unique<HanCushion<S>>();
-}
-template std::unique_ptr<CushionModel<double>> make_cushion_han2005();
-template std::unique_ptr<CushionModel<long double>> make_cushion_han2005();
+CUE_SIM_MODEL_FACTORY(cushion, han2005, HanCushion)
 
 }  // namespace physics
 }  // namespace cue_sim

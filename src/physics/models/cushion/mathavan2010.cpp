@@ -9,11 +9,7 @@
 // slip at I, the cloth pushes up with whatever keeps the ball on it (the paper's P_C), and
 // friction mu_slide acts against the slip at C. Written here with vectors, which gives the
 // paper's component equations (its Eq. 13-17) in its cushion frame.
-#include <algorithm>
-#include <cmath>
-
 #include "physics/models/cushion/cushion_impact.hpp"
-#include "physics/models/friction_impulse.hpp"
 #include "physics/models/model_factories.hpp"
 
 namespace cue_sim
@@ -29,8 +25,6 @@ public:
   void resolve(Ball<S>& ball, const Vec3<S>& normal, const PhysicsParams<S>& p) const override
   {
     CushionImpact<S> impact(ball, normal, p);
-    if (!(impact.approach() > S(0)))
-      return;
     impact.integrate(p.e_cushion_work, p.mu_cushion, p.mu_slide, p.cushion_impact_tolerance);
     ball.v = impact.velocity();
     ball.w = impact.spin();
@@ -38,13 +32,7 @@ public:
 };
 }  // namespace
 
-template <typename S>
-std::unique_ptr<CushionModel<S>> make_cushion_mathavan2010()
-{
-  return std::make_unique<MathavanCushion<S>>();
-}
-template std::unique_ptr<CushionModel<double>> make_cushion_mathavan2010();
-template std::unique_ptr<CushionModel<long double>> make_cushion_mathavan2010();
+CUE_SIM_MODEL_FACTORY(cushion, mathavan2010, MathavanCushion)
 
 }  // namespace physics
 }  // namespace cue_sim

@@ -21,13 +21,7 @@ public:
 };
 }  // namespace
 
-template <typename S>
-std::unique_ptr<CushionModel<S>> make_cushion_simple()
-{
-  return std::make_unique<SimpleCushion<S>>();
-}
-template std::unique_ptr<CushionModel<double>> make_cushion_simple();
-template std::unique_ptr<CushionModel<long double>> make_cushion_simple();
+CUE_SIM_MODEL_FACTORY(cushion, simple, SimpleCushion)
 
 }  // namespace physics
 }  // namespace cue_sim
