@@ -85,7 +85,7 @@ TEST(SceneFile, BadScenesNameTheProblem)
   EXPECT_NE(errorOf("table: 6ft\n").find("unknown table '6ft'"), std::string::npos);
   EXPECT_NE(errorOf("rack: ten\n").find("unknown rack 'ten'"), std::string::npos);
   EXPECT_NE(errorOf("physics: {cushion_model: rubber}\n")
-                .find("cushion_model 'rubber' is unknown (known: han2005, mathavan2010, simple)"),
+                .find("cushion_model 'rubber' is unknown (known: han2005, mathavan2010, stronge2018, simple)"),
             std::string::npos);
   EXPECT_NE(errorOf("balls: [{id: 0, position: [1]}]\n").find("'balls[0].position' must be a list of 2"),
             std::string::npos);

@@ -1,7 +1,9 @@
-// Error against run time of an integrated cushion impact (Mathavan 2010): its tolerance against
-// the rebound's error, measured against the same impact in long double with a far tighter one.
+// Error against run time of the cushion models: the integrated impact's (Mathavan 2010)
+// tolerance against the rebound's error, measured against the same impact in long double with a
+// far tighter one; and every model's cost, rounding and distance from that integrated impact.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "cue_sim/physics/ball.hpp"
@@ -27,6 +29,19 @@ struct CushionPrecision
 /// long double with `reference_tolerance`.
 std::vector<CushionPrecision> cushionImpactPrecision(const std::vector<double>& tolerances, double reference_tolerance,
                                                      int repeats);
+
+struct CushionModelCost
+{
+  std::string model;
+  CushionPrecision own;            ///< at the default coefficients, against the same model in long double
+  double velocity_difference = 0;  ///< largest |v' - mathavan2010's| per unit speed: the model's difference
+  double spin_difference = 0;      ///< the same for R x spin
+};
+
+/// Every registered cushion model on every arrival at the default coefficients: its time per
+/// impact, its error against itself in long double (rounding, and its tolerance if it has one),
+/// and how far its rebound is from mathavan2010's in long double at `reference_tolerance`.
+std::vector<CushionModelCost> cushionModelCosts(double reference_tolerance, int repeats);
 
 }  // namespace evaluation
 }  // namespace cue_sim

@@ -1,0 +1,53 @@
+// Stronge's compliant frictional impact (W. J. Stronge, Impact Mechanics, 2nd ed., Cambridge
+// 2018: tangential compliance) at the cushion's nose, cushion_height above the cloth, where the
+// other cushion models touch the ball too. The normal velocity there comes back times e_cushion;
+// the slip along the nose's tangent plane follows from a tangential spring vibrating at
+// cushion_frequency_ratio times the normal one, whose far end sticks or slides with friction
+// f_cushion. It can stop, reverse, or keep the slip: the tangential restitution is an outcome.
+// For a ball the inverse masses at any point of its surface are 1/m along the normal and 7/(2m)
+// in every tangent, with no coupling, so the slip keeps its direction. The cloth takes the
+// vertical part of the impulse, as in han2005, which is this model's limit of a rigid tangent
+// (cushion_frequency_ratio -> infinity).
+#include "physics/models/cushion/nose_contact.hpp"
+#include "physics/models/cushion/tangential_compliance.hpp"
+#include "physics/models/model_factories.hpp"
+
+namespace cue_sim
+{
+namespace physics
+{
+namespace
+{
+template <typename S>
+class StrongeCushion : public CushionModel<S>
+{
+public:
+  void resolve(Ball<S>& ball, const Vec3<S>& normal, const PhysicsParams<S>& p) const override
+  {
+    const S m = p.ball_mass, R = p.ball_radius, inertia = S(0.4) * m * R * R;
+    const S tangential_inverse_mass = S(3.5);  // 1 + m R^2 / I, in units of 1/m
+    const NoseContact<S> nose(normal, p);
+    const S approach = -ball.v.dot(nose.normal);
+    if (!(approach > S(0)))
+      return;
+    Vec3<S> impulse = (S(1) + p.e_cushion) * m * approach * nose.normal;
+    Vec3<S> slip = ball.v + ball.w.cross(nose.offset);
+    slip -= slip.dot(nose.normal) * nose.normal;
+    const S speed = slip.norm();
+    if (speed > zeroSpeed<S>())
+    {
+      const S after = slipAfterCompliantImpact(speed, approach, p.f_cushion, tangential_inverse_mass, p.e_cushion,
+                                               p.cushion_frequency_ratio);
+      impulse += (m / tangential_inverse_mass) * (after - speed) / speed * slip;
+    }
+    ball.v += impulse / m;
+    ball.v.z() = S(0);  // the part pressing the ball into the cloth is taken by the cloth
+    ball.w += nose.offset.cross(impulse) / inertia;
+  }
+};
+}  // namespace
+
+CUE_SIM_MODEL_FACTORY(cushion, stronge2018, StrongeCushion)
+
+}  // namespace physics
+}  // namespace cue_sim
