@@ -131,10 +131,9 @@ inline std::vector<BenchScene> distinctScalingScenes(int count)
 
 /// The 8-ball break with a cushion model: `eight_ball_break` with the default, and
 /// `eight_ball_break_<model>` with each, what a model costs a whole shot.
-inline BenchScene eightBallBreakWith(const std::string& cushion_model)
+inline BenchScene eightBallBreakWith(const ModelChoice& models)
 {
-  auto engine =
-      defaultEngine(sevenFoot(), EngineLimits().max_events, ModelChoice(ModelChoice().ball_ball, cushion_model));
+  auto engine = defaultEngine(sevenFoot(), EngineLimits().max_events, models);
   return sent(engine, rackLayout<double>("eight", engine->table(), engine->params().ball_radius, realRack()), 8.0, 0.0);
 }
 
@@ -142,7 +141,7 @@ inline BenchScene eightBallBreakWith(const std::string& cushion_model)
 inline const std::map<std::string, std::function<BenchScene()>>& benchScenes()
 {
   static const std::map<std::string, std::function<BenchScene()>> scenes = {
-      {"eight_ball_break", [] { return eightBallBreakWith(ModelChoice().cushion); }},
+      {"eight_ball_break", [] { return eightBallBreakWith(ModelChoice()); }},
       {"nine_ball_break",
        [] {
          auto engine = defaultEngine(sevenFoot());

@@ -3,6 +3,7 @@
 #include <benchmark/benchmark.h>
 
 #include "bench_scenes.hpp"
+#include "cue_sim/evaluation/ball_impact_precision.hpp"
 #include "cue_sim/evaluation/cushion_precision.hpp"
 #include "cue_sim/physics/batch.hpp"
 
@@ -97,6 +98,29 @@ void ScalingCopiesOfOneScene(benchmark::State& bench)
 }
 BENCHMARK(ScalingCopiesOfOneScene)->ArgName("balls")->Arg(16)->Unit(benchmark::kMillisecond);
 
+/// A benchmark of one contact model's cost per impact over `arrivals`: `resolve` takes one and
+/// returns it resolved.
+template <typename Arrival, typename Resolve>
+void registerImpactCost(const std::string& name, std::vector<Arrival> arrivals, Resolve resolve)
+{
+  benchmark::RegisterBenchmark(name.c_str(), [arrivals, resolve](benchmark::State& s) {
+    for (auto _ : s)
+      for (const Arrival& arrival : arrivals)
+        benchmark::DoNotOptimize(resolve(arrival));
+    s.SetItemsProcessed(s.iterations() * static_cast<long>(arrivals.size()));
+    s.counters["ns_per_impact"] = benchmark::Counter(static_cast<double>(s.iterations() * arrivals.size()),
+                                                     benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  })->Unit(benchmark::kMicrosecond);
+}
+
+/// The 8-ball break with these models, as eight_ball_break_<model>.
+void registerBreak(const std::string& model, const ModelChoice& models)
+{
+  benchmark::RegisterBenchmark(("eight_ball_break_" + model).c_str(), [models](benchmark::State& s) {
+    runInTurn(s, {eightBallBreakWith(models)});
+  })->Unit(benchmark::kMicrosecond);
+}
+
 const int registered = [] {
   for (const auto& [name, build] : benchScenes())
     benchmark::RegisterBenchmark(name.c_str(), [name = name](benchmark::State& s) {
@@ -108,27 +132,26 @@ const int registered = [] {
     benchmark::RegisterBenchmark(name.c_str(), [run = run](benchmark::State& s) {
       runInTurn(s, {benchScene(run.first)}, run.second);
     })->Unit(benchmark::kMicrosecond);
-  // Each cushion model: its cost per impact, and the break's cost with it.
+  // Each cushion model: its cost per impact, and the break's cost with it (the default ball-ball
+  // model); then each ball-ball model with the default cushion model.
+  const PhysicsParams<double> p;
   for (const std::string& model : cushionModelNames())
   {
-    benchmark::RegisterBenchmark(("cushion_impact_" + model).c_str(), [model](benchmark::State& s) {
-      const PhysicsParams<double> p;
-      const auto resolver = makeCushionModel<double>(model);
-      const std::vector<Ball<double>> arrivals = cue_sim::evaluation::cushionArrivals(p);
-      const Vec3<double> normal(0, -1, 0);
-      for (auto _ : s)
-        for (Ball<double> b : arrivals)
-        {
-          resolver->resolve(b, normal, p);
-          benchmark::DoNotOptimize(b);
-        }
-      s.SetItemsProcessed(s.iterations() * static_cast<long>(arrivals.size()));
-      s.counters["ns_per_impact"] = benchmark::Counter(static_cast<double>(s.iterations() * arrivals.size()),
-                                                       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-    })->Unit(benchmark::kMicrosecond);
-    benchmark::RegisterBenchmark(("eight_ball_break_" + model).c_str(), [model](benchmark::State& s) {
-      runInTurn(s, {eightBallBreakWith(model)});
-    })->Unit(benchmark::kMicrosecond);
+    registerImpactCost("cushion_impact_" + model, cue_sim::evaluation::cushionArrivals(p),
+                       [resolver = std::shared_ptr(makeCushionModel<double>(model)), p](Ball<double> b) {
+                         resolver->resolve(b, Vec3<double>(0, -1, 0), p);
+                         return b;
+                       });
+    registerBreak(model, ModelChoice(ModelChoice().ball_ball, model));
+  }
+  for (const std::string& model : ballBallModelNames())
+  {
+    registerImpactCost("ball_impact_" + model, cue_sim::evaluation::ballArrivals(p),
+                       [resolver = std::shared_ptr(makeBallBallModel<double>(model)), p](auto pair) {
+                         resolver->resolve(pair.first, pair.second, p);
+                         return pair;
+                       });
+    registerBreak(model, ModelChoice(model, ModelChoice().cushion));
   }
   return 0;
 }();

@@ -6,6 +6,7 @@ catkin_add_gtest(physics_tests
   test/physics/test_motion.cpp
   test/physics/test_collisions.cpp
   test/physics/test_cushion_models.cpp
+  test/physics/test_ball_ball_models.cpp
   test/physics/test_tangential_compliance.cpp
   test/physics/test_engine.cpp
   test/physics/test_shot_physics.cpp

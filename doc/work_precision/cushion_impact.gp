@@ -5,7 +5,7 @@ set logscale xy
 set format x '10^{%L}'
 set format y '10^{%L}'
 set xlabel 'run time per impact [s]'
-set ylabel 'largest rebound error per unit speed'
+set ylabel 'largest error per unit speed'
 set grid
 set title 'mathavan2010 cushion impact: error against run time (labels: tolerance)'
 set key top right

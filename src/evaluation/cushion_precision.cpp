@@ -1,10 +1,9 @@
 #include "cue_sim/evaluation/cushion_precision.hpp"
 
-#include <algorithm>
-#include <chrono>
 #include <cmath>
 
 #include "cue_sim/physics/collision_models.hpp"
+#include "evaluation/impact_measurement.hpp"
 
 namespace cue_sim
 {
@@ -37,102 +36,52 @@ std::vector<Ball<double>> cushionArrivals(const PhysicsParams<double>& p)
 
 namespace
 {
-/// The ball after `model`'s impact with a cushion of normal -y, at the tolerance `p` gives.
-template <typename S>
-Ball<S> rebound(const physics::CushionModel<S>& model, Ball<S> ball, const PhysicsParams<S>& p)
+/// A ball meeting a cushion of normal -y.
+struct CushionKind
 {
-  model.resolve(ball, Vec3<S>(0, -1, 0), p);
-  return ball;
-}
-
-/// Each arrival's rebound from `model` in long double, with `p`'s coefficients.
-std::vector<Ball<double>> longDoubleRebounds(const std::string& model, const std::vector<Ball<double>>& arrivals,
-                                             const PhysicsParams<long double>& p)
-{
-  const auto resolver = physics::makeCushionModel<long double>(model);
-  std::vector<Ball<double>> rebounds;
-  for (const Ball<double>& b : arrivals)
+  using Arrival = Ball<double>;
+  static std::vector<std::string> models() { return physics::cushionModelNames(); }
+  template <typename S>
+  static auto make(const std::string& model)
   {
-    Ball<long double> bl;
-    bl.r = b.r.cast<long double>();
-    bl.v = b.v.cast<long double>();
-    bl.w = b.w.cast<long double>();
-    const Ball<long double> out = rebound(*resolver, bl, p);
-    Ball<double> back = b;
-    back.v = out.v.cast<double>();
-    back.w = out.w.cast<double>();
-    rebounds.push_back(back);
+    return physics::makeCushionModel<S>(model);
   }
-  return rebounds;
-}
-
-/// `model` in double on every arrival against `reference`: the largest errors, and the median
-/// over `repeats` of the time per impact.
-CushionPrecision measure(const std::string& model, const std::vector<Ball<double>>& arrivals,
-                         const std::vector<Ball<double>>& reference, const PhysicsParams<double>& p, int repeats)
-{
-  const auto resolver = physics::makeCushionModel<double>(model);
-  CushionPrecision r;
-  r.tolerance = p.cushion_impact_tolerance;
-  std::vector<double> times;
-  for (int repeat = 0; repeat < std::max(1, repeats); ++repeat)
+  template <typename S>
+  static Arrival resolve(const physics::CushionModel<S>& model, const Arrival& arrival, const PhysicsParams<S>& p)
   {
-    const auto start = std::chrono::steady_clock::now();
-    for (std::size_t k = 0; k < arrivals.size(); ++k)
-    {
-      const Ball<double> out = rebound(*resolver, arrivals[k], p);
-      if (repeat == 0)
-      {
-        r.max_velocity_error = std::max(r.max_velocity_error, (out.v - reference[k].v).norm());
-        r.max_spin_error = std::max(r.max_spin_error, p.ball_radius * (out.w - reference[k].w).norm());
-      }
-    }
-    const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
-    times.push_back(took.count() / static_cast<double>(arrivals.size()));
+    Ball<S> ball;
+    ball.r = arrival.r.cast<S>();
+    ball.v = arrival.v.cast<S>();
+    ball.w = arrival.w.cast<S>();
+    model.resolve(ball, Vec3<S>(0, -1, 0), p);
+    Arrival out = arrival;
+    out.v = ball.v.template cast<double>();
+    out.w = ball.w.template cast<double>();
+    return out;
   }
-  std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
-  r.seconds_per_impact = times[times.size() / 2];
-  return r;
-}
+  template <typename S>
+  static void setTolerance(PhysicsParams<S>& p, double tolerance)
+  {
+    p.cushion_impact_tolerance = S(tolerance);
+  }
+  static std::pair<double, double> errors(const Arrival& out, const Arrival& reference, double R)
+  {
+    return {(out.v - reference.v).norm(), R * (out.w - reference.w).norm()};
+  }
+};
 }  // namespace
 
 std::vector<CushionPrecision> cushionImpactPrecision(const std::vector<double>& tolerances, double reference_tolerance,
                                                      int repeats)
 {
-  PhysicsParams<double> p;
-  PhysicsParams<long double> pl = p.cast<long double>();
-  pl.cushion_impact_tolerance = reference_tolerance;
-  const std::vector<Ball<double>> arrivals = cushionArrivals(p);
-  const std::vector<Ball<double>> reference = longDoubleRebounds("mathavan2010", arrivals, pl);
-  std::vector<CushionPrecision> results;
-  for (const double tolerance : tolerances)
-  {
-    p.cushion_impact_tolerance = tolerance;
-    results.push_back(measure("mathavan2010", arrivals, reference, p, repeats));
-  }
-  return results;
+  return tolerancePrecision<CushionKind>("mathavan2010", cushionArrivals(PhysicsParams<double>()), tolerances,
+                                         reference_tolerance, repeats);
 }
 
 std::vector<CushionModelCost> cushionModelCosts(double reference_tolerance, int repeats)
 {
-  const PhysicsParams<double> p;
-  const PhysicsParams<long double> pl = p.cast<long double>();
-  PhysicsParams<long double> integrated = pl;
-  integrated.cushion_impact_tolerance = reference_tolerance;
-  const std::vector<Ball<double>> arrivals = cushionArrivals(p);
-  const std::vector<Ball<double>> mathavan = longDoubleRebounds("mathavan2010", arrivals, integrated);
-  std::vector<CushionModelCost> costs;
-  for (const std::string& model : physics::cushionModelNames())
-  {
-    CushionModelCost c;
-    c.model = model;
-    c.own = measure(model, arrivals, longDoubleRebounds(model, arrivals, pl), p, repeats);
-    const CushionPrecision against = measure(model, arrivals, mathavan, p, 1);
-    c.velocity_difference = against.max_velocity_error;
-    c.spin_difference = against.max_spin_error;
-    costs.push_back(c);
-  }
-  return costs;
+  return modelCosts<CushionKind>("mathavan2010", cushionArrivals(PhysicsParams<double>()), reference_tolerance,
+                                 repeats);
 }
 
 }  // namespace evaluation

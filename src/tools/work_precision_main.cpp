@@ -2,8 +2,8 @@
 //   rosrun cue_sim work_precision --out doc/work_precision        (full report, minutes)
 //   rosrun cue_sim work_precision --quick --out build/wp_quick     (single shots, coarse steps)
 // Writes results.csv, results.md and, with gnuplot installed, work_precision.png; and for the
-// integrated cushion impact cushion_impact.csv, cushion_impact.md and cushion_impact.png
-// (--cushion-only for these alone).
+// integrated impacts cushion_impact.{csv,md,png} and ball_impact.{csv,md,png} (--impacts-only
+// for these alone).
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +13,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "cue_sim/evaluation/ball_impact_precision.hpp"
 #include "cue_sim/evaluation/cushion_precision.hpp"
 #include "cue_sim/evaluation/work_precision.hpp"
 
@@ -72,26 +73,40 @@ void writePlot(const std::filesystem::path& dir, const std::vector<std::string>&
   gp.close();
   runGnuplot(dir / "work_precision.gp");
 }
-/// The integrated cushion impact (mathavan2010): rebound error against its steps and run time;
-/// then every cushion model's cost, rounding and difference from it.
-void cushionImpactSection(const std::filesystem::path& dir, bool quick)
+/// One integrated impact model's report: what it measures and on what.
+struct ImpactReport
 {
-  std::ofstream md(dir / "cushion_impact.md");
-  const std::vector<double> tolerances =
-      quick ? std::vector<double>{1e-3, 1e-6} : std::vector<double>{1e-2, 3e-3, 1e-3, 3e-4, 1e-4, 3e-5, 1e-5, 3e-6,
-                                                                    1e-6, 3e-7, 1e-7, 3e-8, 1e-8, 3e-9, 1e-9};
-  const double reference_tolerance = 1e-10;
-  std::cerr << "work_precision: cushion impact (mathavan2010), reference tolerance " << reference_tolerance << "\n";
-  const auto results = cue_sim::evaluation::cushionImpactPrecision(tolerances, reference_tolerance, quick ? 1 : 15);
-  std::ofstream csv(dir / "cushion_impact.csv");
+  std::string stem;      ///< file names: <stem>.csv, .md, .gp, .png
+  std::string model;     ///< the integrated model
+  std::string kind;      ///< "cushion" or "ball-ball"
+  std::string arrivals;  ///< what the test set is, for the table's caption
+  std::vector<cue_sim::evaluation::CushionPrecision> results;
+  std::vector<cue_sim::evaluation::CushionModelCost> costs;
+};
+
+/// The tolerances an impact report runs.
+std::vector<double> impactTolerances(bool quick)
+{
+  return quick ? std::vector<double>{1e-3, 1e-6} : std::vector<double>{1e-2, 3e-3, 1e-3, 3e-4, 1e-4, 3e-5, 1e-5, 3e-6,
+                                                                       1e-6, 3e-7, 1e-7, 3e-8, 1e-8, 3e-9, 1e-9};
+}
+
+/// The reference each impact report measures against: the same impact in long double at this
+/// tolerance.
+constexpr double kImpactReferenceTolerance = 1e-10;
+
+/// Writes an integrated impact's error against its tolerance and run time (table, csv, plot),
+/// then every model of its kind: cost, rounding and difference from it.
+void writeImpactReport(const std::filesystem::path& dir, const ImpactReport& report)
+{
+  std::ofstream md(dir / (report.stem + ".md"));
+  std::ofstream csv(dir / (report.stem + ".csv"));
   csv << "tolerance,seconds_per_impact,max_velocity_error,max_spin_error\n";
-  md << "### Integrated cushion impact (mathavan2010): rebound error against its tolerance\n\n"
-     << "56 balls meeting a cushion at 1 m/s (incidence 5 to 90 degrees, topspin -1 to 2 V/R, side spin -2 to 2 "
-        "V/R with rolling topspin), default coefficients; the reference is each impact in long double with "
-        "tolerance "
-     << reference_tolerance << ". Errors per unit of speed.\n\n"
+  md << "### Integrated " << report.kind << " impact (" << report.model << "): error against its tolerance\n\n"
+     << report.arrivals << ", default coefficients; the reference is each impact in long double with tolerance "
+     << kImpactReferenceTolerance << ". Errors per unit of speed.\n\n"
      << "| tolerance | time per impact [s] | largest velocity error | largest R x spin error |\n|---|---|---|---|\n";
-  for (const auto& r : results)
+  for (const auto& r : report.results)
   {
     csv << r.tolerance << "," << r.seconds_per_impact << "," << r.max_velocity_error << "," << r.max_spin_error << "\n";
     md << std::setprecision(3) << "| " << r.tolerance << " | " << r.seconds_per_impact << " | " << r.max_velocity_error
@@ -100,31 +115,54 @@ void cushionImpactSection(const std::filesystem::path& dir, bool quick)
               << r.max_velocity_error << "\n";
   }
   csv.close();
-  md << "\n### Every cushion model at the default coefficients\n\n"
+  md << "\n### Every " << report.kind << " model at the default coefficients\n\n"
      << "The same arrivals. Own error: against the same model in long double (rounding, and the tolerance for "
-        "mathavan2010). Difference: from mathavan2010's rebound in long double, which is what choosing a model "
-        "changes; it dwarfs every method's error.\n\n"
+     << report.model << "). Difference: from " << report.model
+     << "'s result in long double, which is what choosing a model changes.\n\n"
      << "| model | time per impact [s] | own velocity error | own R x spin error | velocity difference from "
-        "mathavan2010 | R x spin difference |\n|---|---|---|---|---|---|\n";
-  for (const auto& c : cue_sim::evaluation::cushionModelCosts(reference_tolerance, quick ? 1 : 15))
+     << report.model << " | R x spin difference |\n|---|---|---|---|---|---|\n";
+  for (const auto& c : report.costs)
   {
     md << std::setprecision(3) << "| " << c.model << " | " << c.own.seconds_per_impact << " | "
        << c.own.max_velocity_error << " | " << c.own.max_spin_error << " | " << c.velocity_difference << " | "
        << c.spin_difference << " |\n";
     std::cerr << "  " << c.model << ": " << c.own.seconds_per_impact * 1e9 << " ns, own error "
-              << c.own.max_velocity_error << ", from mathavan2010 " << c.velocity_difference << "\n";
+              << c.own.max_velocity_error << ", from " << report.model << " " << c.velocity_difference << "\n";
   }
-  std::ofstream gp(dir / "cushion_impact.gp");
+  std::ofstream gp(dir / (report.stem + ".gp"));
   gp << "set terminal pngcairo size 900,600 font ',10'\n"
-     << "set output '" << (dir / "cushion_impact.png").string() << "'\n"
+     << "set output '" << (dir / (report.stem + ".png")).string() << "'\n"
      << "set datafile separator ','\nset logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
-     << "set xlabel 'run time per impact [s]'\nset ylabel 'largest rebound error per unit speed'\nset grid\n"
-     << "set title 'mathavan2010 cushion impact: error against run time (labels: tolerance)'\nset key top right\n"
-     << "plot '" << (dir / "cushion_impact.csv").string()
+     << "set xlabel 'run time per impact [s]'\nset ylabel 'largest error per unit speed'\nset grid\n"
+     << "set title '" << report.model << " " << report.kind
+     << " impact: error against run time (labels: tolerance)'\nset key top right\n"
+     << "plot '" << (dir / (report.stem + ".csv")).string()
      << "' using 2:3 skip 1 with linespoints pointsize 1.5 title 'velocity', '' using 2:4 skip 1 with linespoints "
         "pointsize 1.5 title 'R x spin', '' using 2:3:1 skip 1 with labels offset 0,1 notitle\n";
   gp.close();
-  runGnuplot(dir / "cushion_impact.gp");
+  runGnuplot(dir / (report.stem + ".gp"));
+}
+
+/// The integrated impacts (mathavan2010 at the cushion, mathavan2014 between balls): each one's
+/// error against its tolerance and run time, and every model of its kind beside it.
+void impactSections(const std::filesystem::path& dir, bool quick)
+{
+  namespace ev = cue_sim::evaluation;
+  const int repeats = quick ? 1 : 15;
+  std::cerr << "work_precision: cushion impact (mathavan2010), reference tolerance " << kImpactReferenceTolerance
+            << "\n";
+  writeImpactReport(dir, {"cushion_impact", "mathavan2010", "cushion",
+                          "56 balls meeting a cushion at 1 m/s (incidence 5 to 90 degrees, topspin -1 to 2 V/R, side "
+                          "spin -2 to 2 V/R with rolling topspin)",
+                          ev::cushionImpactPrecision(impactTolerances(quick), kImpactReferenceTolerance, repeats),
+                          ev::cushionModelCosts(kImpactReferenceTolerance, repeats)});
+  std::cerr << "work_precision: ball-ball impact (mathavan2014), reference tolerance " << kImpactReferenceTolerance
+            << "\n";
+  writeImpactReport(dir, {"ball_impact", "mathavan2014", "ball-ball",
+                          "48 cue balls meeting an object ball at rest at 1 m/s (cut 0 to 75 degrees, topspin -1 to 2 "
+                          "V/R, side spin -2 to 2 V/R with rolling topspin); errors of both balls summed",
+                          ev::ballImpactPrecision(impactTolerances(quick), kImpactReferenceTolerance, repeats),
+                          ev::ballModelCosts(kImpactReferenceTolerance, repeats)});
 }
 }  // namespace
 
@@ -139,16 +177,16 @@ int main(int argc, char** argv)
   app.add_option("--budget", budget, "stop refining a method once one run takes longer [s]");
   bool plot_only = false;
   app.add_flag("--plot-only", plot_only, "only redraw the plot from the folder's results.csv");
-  bool cushion_only = false;
-  app.add_flag("--cushion-only", cushion_only,
-               "only the integrated cushion impact's error against its tolerance (cushion_impact.*)");
+  bool impacts_only = false;
+  app.add_flag("--impacts-only", impacts_only,
+               "only the integrated impacts' error against their tolerance (cushion_impact.*, ball_impact.*)");
   CLI11_PARSE(app, argc, argv);
 
   const std::filesystem::path dir(out_dir);
   std::filesystem::create_directories(dir);
-  if (cushion_only)
+  if (impacts_only)
   {
-    cushionImpactSection(dir, quick);
+    impactSections(dir, quick);
     return 0;
   }
   if (plot_only)
@@ -254,7 +292,7 @@ int main(int argc, char** argv)
   }
   md << "\nThe integrated cushion impact's error against its tolerance: cushion_impact.md, cushion_impact.png.\n";
   md.close();
-  cushionImpactSection(dir, quick);
+  impactSections(dir, quick);
   csv.close();
   std::cout << verdicts.str();
   writePlot(dir, scene_names);

@@ -116,13 +116,13 @@ TEST(Stability, TinyAndHugeSpeeds)
   runChecked(engine, thrown);
 }
 
-/// An 8-ball break with this ball-ball restitution, in both ball-ball models, checked at every
+/// An 8-ball break with this ball-ball restitution, in every ball-ball model, checked at every
 /// event.
 void breakWithBallRestitution(double e_ball)
 {
   PhysicsParams<double> p;
   p.e_ball = e_ball;
-  for (const std::string model : {"frictional", "frictionless"})
+  for (const std::string& model : ballBallModelNames())
   {
     const Engine<double> engine(sevenFoot(), p, {model, "han2005"});
     TableState<double> s = breakShot(engine, 8.0);
@@ -158,7 +158,7 @@ TEST(Stability, CushionRestitutionOne)
 TEST(Stability, CushionRestitutionZero)
 {
   for (const double e_ball : {0.95, 0.0})
-    for (const std::string ball_model : {"frictional", "frictionless"})
+    for (const std::string& ball_model : ballBallModelNames())
       for (const std::string& cushion_model : cushionModelNames())
       {
         SCOPED_TRACE("e_ball " + std::to_string(e_ball) + ", " + ball_model + ", " + cushion_model);
@@ -183,8 +183,8 @@ TEST(Stability, RandomBreaksWithLittleRestitutionEnd)
     PhysicsParams<double> p;
     p.e_ball = k % 3 == 0 ? 0.0 : 0.5 * unit(rng);
     p.e_cushion = p.e_cushion_work = k % 2 == 0 ? 0.0 : 0.5 * unit(rng);
-    const std::vector<std::string> cushions = cushionModelNames();
-    const ModelChoice models{k % 4 < 2 ? "frictional" : "frictionless", cushions[(k / 4) % cushions.size()]};
+    const std::vector<std::string> balls = ballBallModelNames(), cushions = cushionModelNames();
+    const ModelChoice models{balls[k % balls.size()], cushions[(k / balls.size()) % cushions.size()]};
     SCOPED_TRACE("shot " + std::to_string(k) + ": e_ball " + std::to_string(p.e_ball) + ", e_cushion " +
                  std::to_string(p.e_cushion) + ", " + models.ball_ball + ", " + models.cushion);
     const Engine<double> engine(sevenFoot(), p, models);

@@ -24,10 +24,10 @@ class MathavanCushion : public CushionModel<S>
 public:
   void resolve(Ball<S>& ball, const Vec3<S>& normal, const PhysicsParams<S>& p) const override
   {
-    CushionImpact<S> impact(ball, normal, p);
-    impact.integrate(p.e_cushion_work, p.mu_cushion, p.mu_slide, p.cushion_impact_tolerance);
-    ball.v = impact.velocity();
-    ball.w = impact.spin();
+    CushionImpact<S> impact(cushionImpact(ball, normal, p, p.mu_cushion, p.mu_slide));
+    impact.integrate(p.e_cushion_work, p.cushion_impact_tolerance);
+    ball.v = impact.velocities();
+    ball.w = impact.spins();
   }
 };
 }  // namespace
