@@ -299,6 +299,49 @@ TEST(ShotPhysics, AMasseSlideFollowsTheClosedFormParabola)
   }
 }
 
+TEST(ShotPhysics, AMasseEndsHeadingFromTheRestingPointToTheAimPoint)
+{
+  // Coriolis' masse aiming (Alciatore, "Coriolis was brilliant ... Part V: masse shot aiming",
+  // Principle 25, TP A.19): once the slide is over the ball heads along the line from where it
+  // rested on the cloth (R) to where the cue's line of action meets the cloth (A). Angular
+  // momentum about the cloth contact is all the strike gives it there, and the cloth's friction
+  // keeps it. The tip meets the ball at P - C = a R side + b R u - c d (a, b on the face seen along
+  // the cue), and the line of action runs from P along d. Squirt, which the principle leaves out,
+  // is kept below 1e-5 rad here by a cue end mass of 1e-6 kg.
+  PhysicsParams<double> p;
+  p.cue_end_mass = 1e-6;
+  const Engine<double> engine(sevenFoot(), p);
+  struct Case
+  {
+    double theta_deg, phi, a, b;
+  };
+  for (const Case c : {Case{30, 0.0, 0.4, 0.0}, Case{55, 0.7, -0.3, 0.2}, Case{80, -1.2, 0.2, -0.4},
+                       Case{70, 2.0, 0.0, 0.5}, Case{45, 0.3, 0.4, -0.3}})
+  {
+    TableState<double> s;
+    s.balls.push_back(ballAt(0, -0.3, 0.1, p));
+    const Vec3<double> rest(-0.3, 0.1, 0), centre = rest + p.ball_radius * Vec3<double>::UnitZ();
+    CueStrike<double> cue;
+    cue.speed = 2.0;
+    cue.phi = c.phi;
+    cue.theta = c.theta_deg * kDeg;
+    cue.a = c.a;
+    cue.b = c.b;
+    engine.strike(s, 0, cue);
+    const Vec3<double> h(std::cos(c.phi), std::sin(c.phi), 0), side(h.y(), -h.x(), 0);
+    const Vec3<double> up = std::sin(cue.theta) * h + std::cos(cue.theta) * Vec3<double>::UnitZ();
+    const Vec3<double> d = std::cos(cue.theta) * h - std::sin(cue.theta) * Vec3<double>::UnitZ();
+    const double depth = std::sqrt(1 - c.a * c.a - c.b * c.b);
+    const Vec3<double> tip = centre + p.ball_radius * (c.a * side + c.b * up - depth * d);
+    const Vec3<double> aim = tip + (tip.z() / std::sin(cue.theta)) * d;  // on the cloth, z = 0
+    const Ball<double> b0 = s.balls[0];
+    const Vec3<double> rolling = engine.ballAt(s, 0, b0.time + timeToTransition(b0, p)).v;
+    const double expected = std::atan2(aim.y() - rest.y(), aim.x() - rest.x());
+    EXPECT_NEAR(std::remainder(headingOf(rolling) - expected, 2 * M_PI), 0, 1e-5)
+        << c.theta_deg << " deg, a " << c.a << ", b " << c.b;
+  }
+}
+
 TEST(ShotPhysics, SquirtIsAboutTwoDegreesAtHalfTipOffset)
 {
   const PhysicsParams<double> p;
