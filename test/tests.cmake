@@ -24,6 +24,9 @@ target_link_libraries(physics_tests cue_sim_physics gtest_main)
 target_include_directories(physics_tests PRIVATE src)
 target_compile_definitions(physics_tests PRIVATE CUE_SIM_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 
+catkin_add_gtest(game_tests test/game/test_referee.cpp)
+target_link_libraries(game_tests cue_sim_game gtest_main)
+
 catkin_add_gtest(accuracy_tests test/physics/test_accuracy.cpp)
 target_link_libraries(accuracy_tests cue_sim_evaluation gtest_main)
 

@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "cue_sim/game/referee.hpp"
 #include "cue_sim/physics/motion.hpp"
 #include "cue_sim/physics/rack.hpp"
 #include "cue_sim/table_description/table_catalog.hpp"
@@ -162,6 +163,101 @@ void applyPhysicsYaml(const std::string& yaml_text, physics::PhysicsParams<doubl
   }
 }
 
+namespace
+{
+/// A value of `node[key]` among `names` (the enum's values in order).
+template <typename Enum>
+Enum choice(const YAML::Node& node, const std::string& key, const std::vector<std::string>& names)
+{
+  const std::string value = text(node, key);
+  for (std::size_t k = 0; k < names.size(); ++k)
+    if (names[k] == value)
+      return static_cast<Enum>(k);
+  std::string known;
+  for (const auto& n : names)
+    known += (known.empty() ? "" : ", ") + n;
+  throw SceneError(key + " must be one of " + known + ", got '" + value + "'");
+}
+
+/// Two values of a list of exactly two.
+YAML::Node pairOf(const YAML::Node& node, const std::string& key)
+{
+  if (!node.IsSequence() || node.size() != 2)
+    throw SceneError(key + " must be a list of two, one per player");
+  return node;
+}
+
+bool flag(const YAML::Node& node, const std::string& key)
+{
+  bool value = false;
+  if (!node.IsScalar() || !YAML::convert<bool>::decode(node, value))
+    throw SceneError(key + " must be true or false");
+  return value;
+}
+
+const std::vector<std::string> kGroupNames{"open", "solids", "stripes"};
+const std::vector<std::string> kBallInHandNames{"none", "anywhere", "behind_head_string"};
+
+/// The scene's `game:` block: the rules, then each field of the state with a game just started
+/// (player 0 to break, ball in hand behind the head string) as its default.
+game::GameState gameFrom(const YAML::Node& node)
+{
+  onlyKeys(node, "game",
+           {"rules", "players", "turn", "break", "groups", "called_ball", "called_pocket", "ball_in_hand", "fouls",
+            "push_out_allowed"});
+  game::GameState g;
+  if (!node["rules"])
+    throw SceneError("game needs 'rules' (one of eight_ball, nine_ball)");
+  g.rules = text(node["rules"], "game.rules");
+  try
+  {
+    game::makeRules(g.rules);
+  }
+  catch (const std::invalid_argument& e)
+  {
+    throw SceneError(std::string("game.rules: ") + e.what());
+  }
+  if (node["players"])
+    for (std::size_t k = 0; k < 2; ++k)
+      g.players[k] = text(pairOf(node["players"], "game.players")[k], "game.players[" + std::to_string(k) + "]");
+  if (node["turn"])
+  {
+    g.turn = integer(node["turn"], "game.turn");
+    if (g.turn != 0 && g.turn != 1)
+      throw SceneError("game.turn must be 0 or 1 (the player to shoot), got " + std::to_string(g.turn));
+  }
+  g.break_shot = node["break"] ? flag(node["break"], "game.break") : true;
+  g.ball_in_hand = node["ball_in_hand"]
+                       ? choice<game::BallInHand>(node["ball_in_hand"], "game.ball_in_hand", kBallInHandNames)
+                       : (g.break_shot ? game::BallInHand::BehindHeadString : game::BallInHand::None);
+  if (node["groups"])
+  {
+    for (std::size_t k = 0; k < 2; ++k)
+      g.groups[k] = choice<game::Group>(pairOf(node["groups"], "game.groups")[k],
+                                        "game.groups[" + std::to_string(k) + "]", kGroupNames);
+    const bool open = g.groups[0] == game::Group::Open, both_open = open && g.groups[1] == game::Group::Open;
+    if ((open || g.groups[1] == game::Group::Open) ? !both_open : g.groups[0] == g.groups[1])
+      throw SceneError("game.groups must be both open, or solids and stripes one each");
+  }
+  g.called_ball = node["called_ball"] ? integer(node["called_ball"], "game.called_ball") : -1;
+  g.called_pocket = node["called_pocket"] ? integer(node["called_pocket"], "game.called_pocket") : -1;
+  if (g.called_ball < -1 || g.called_ball > 15)
+    throw SceneError("game.called_ball must be an object ball 1-15, or -1 for none; got " +
+                     std::to_string(g.called_ball));
+  if (node["fouls"])
+    for (std::size_t k = 0; k < 2; ++k)
+    {
+      const int fouls = integer(pairOf(node["fouls"], "game.fouls")[k], "game.fouls[" + std::to_string(k) + "]");
+      if (fouls < 0 || fouls > 2)
+        throw SceneError("game.fouls[" + std::to_string(k) + "] must be 0, 1 or 2 (fouls in a row), got " +
+                         std::to_string(fouls));
+      g.consecutive_fouls[k] = fouls;
+    }
+  g.push_out_allowed = node["push_out_allowed"] ? flag(node["push_out_allowed"], "game.push_out_allowed") : false;
+  return g;
+}
+}  // namespace
+
 Scene loadScene(const std::string& yaml_text)
 {
   try
@@ -169,7 +265,7 @@ Scene loadScene(const std::string& yaml_text)
     const YAML::Node root = YAML::Load(yaml_text);
     if (!root.IsMap())
       throw SceneError("a scene is a YAML map");
-    onlyKeys(root, "the scene", {"table", "physics", "rack", "rack_gap", "balls", "shot", "duration"});
+    onlyKeys(root, "the scene", {"table", "physics", "rack", "rack_gap", "balls", "shot", "duration", "game"});
     Scene scene;
     if (root["physics"])
       applyPhysicsNode(root["physics"], scene.params, scene.models);
@@ -212,7 +308,7 @@ Scene loadScene(const std::string& yaml_text)
     if (root["shot"])
     {
       const YAML::Node s = root["shot"];
-      onlyKeys(s, "shot", {"ball", "speed", "phi", "theta", "a", "b"});
+      onlyKeys(s, "shot", {"ball", "speed", "phi", "theta", "a", "b", "push_out"});
       Shot shot;
       shot.ball = s["ball"] ? integer(s["ball"], "shot.ball") : 0;
       if (!s["speed"])
@@ -222,10 +318,24 @@ Scene loadScene(const std::string& yaml_text)
       shot.strike.theta = s["theta"] ? number(s["theta"], "shot.theta") : 0.0;
       shot.strike.a = s["a"] ? number(s["a"], "shot.a") : 0.0;
       shot.strike.b = s["b"] ? number(s["b"], "shot.b") : 0.0;
+      shot.push_out = s["push_out"] ? flag(s["push_out"], "shot.push_out") : false;
       const std::string why = physics::validateStrike(shot.strike);
       if (!why.empty())
         throw SceneError("shot: " + why);
       scene.shot = shot;
+    }
+    if (root["game"])
+    {
+      scene.game = gameFrom(root["game"]);
+      if (scene.game->called_pocket < -1 ||
+          scene.game->called_pocket >= static_cast<int>(scene.table->pockets().size()))
+        throw SceneError("game.called_pocket must be a pocket index in [0, " +
+                         std::to_string(scene.table->pockets().size() - 1) + "], or -1 for none; got " +
+                         std::to_string(scene.game->called_pocket));
+      if (scene.shot && scene.shot->ball != 0)
+        throw SceneError("shot.ball must be 0 in a game: only the cue ball is struck");
+      if (root["duration"])
+        throw SceneError("duration: a game's shot is ruled on at rest; drop duration");
     }
     if (root["duration"])
     {
@@ -277,10 +387,23 @@ std::string sceneYaml(const Scene& scene, const std::string& comment)
   {
     const auto& s = scene.shot->strike;
     out << "shot: {ball: " << scene.shot->ball << ", speed: " << exact(s.speed) << ", phi: " << exact(s.phi)
-        << ", theta: " << exact(s.theta) << ", a: " << exact(s.a) << ", b: " << exact(s.b) << "}\n";
+        << ", theta: " << exact(s.theta) << ", a: " << exact(s.a) << ", b: " << exact(s.b)
+        << (scene.shot->push_out ? ", push_out: true" : "") << "}\n";
   }
   if (scene.duration)
     out << "duration: " << exact(*scene.duration) << "\n";
+  if (scene.game)
+  {
+    const game::GameState& g = *scene.game;
+    const auto groups = [&](std::size_t k) { return kGroupNames[static_cast<std::size_t>(g.groups[k])]; };
+    out << "game:\n  rules: " << g.rules << "\n  players: [" << YAML::Node(g.players[0]) << ", "
+        << YAML::Node(g.players[1]) << "]\n  turn: " << g.turn << "\n  break: " << (g.break_shot ? "true" : "false")
+        << "\n  groups: [" << groups(0) << ", " << groups(1) << "]\n  called_ball: " << g.called_ball
+        << "\n  called_pocket: " << g.called_pocket
+        << "\n  ball_in_hand: " << kBallInHandNames[static_cast<std::size_t>(g.ball_in_hand)] << "\n  fouls: ["
+        << g.consecutive_fouls[0] << ", " << g.consecutive_fouls[1]
+        << "]\n  push_out_allowed: " << (g.push_out_allowed ? "true" : "false") << "\n";
+  }
   return out.str();
 }
 

@@ -53,4 +53,37 @@ json shotReport(const Engine<double>& engine, const TableState<double>& final_st
   return report;
 }
 
+json rulingJson(const game::Ruling& r)
+{
+  return {{"foul", r.foul},
+          {"rule", r.rule},
+          {"reason", r.reason},
+          {"ball_in_hand", game::ballInHandName(r.ball_in_hand)},
+          {"next_player", r.next_player},
+          {"continues", r.continues},
+          {"respot", r.respot},
+          {"rerack", r.rerack},
+          {"game_over", r.game_over},
+          {"winner", r.winner},
+          {"groups", {game::groupName(r.groups[0]), game::groupName(r.groups[1])}}};
+}
+
+json gameStateJson(const game::GameState& g)
+{
+  const std::string in_hand = game::ballInHandName(g.ball_in_hand);
+  return {{"rules", g.rules},
+          {"players", g.players},
+          {"turn", g.turn},
+          {"break", g.break_shot},
+          {"groups", {game::groupName(g.groups[0]), game::groupName(g.groups[1])}},
+          {"called_ball", g.called_ball},
+          {"called_pocket", g.called_pocket},
+          {"ball_in_hand", in_hand.empty() ? "none" : in_hand},
+          {"fouls", g.consecutive_fouls},
+          {"push_out_allowed", g.push_out_allowed},
+          {"shots", g.shots},
+          {"over", g.over},
+          {"winner", g.winner}};
+}
+
 }  // namespace cue_sim

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <optional>
 
+#include "cue_sim/game/referee.hpp"
 #include "cue_sim/physics/simulation.hpp"
 #include "cue_sim/scene/scene_file.hpp"
 #include "cue_sim/scene/shot_report.hpp"
@@ -57,6 +58,9 @@ int main(int argc, char** argv)
     const std::string invalid = engine.whyInvalid(scene.state);
     if (!invalid.empty())
       throw cue_sim::SceneError("balls: " + invalid);
+    if (scene.game && (!scene.shot || duration))
+      throw cue_sim::SceneError("game: a game's scene needs a shot, ruled on at rest (no --duration)");
+    const std::vector<int> on_table = cue_sim::game::objectBallsOnTable(scene.state);
     cue_sim::physics::Simulation<double> simulation(engine, scene.state);
     if (scene.shot)
     {
@@ -72,7 +76,17 @@ int main(int argc, char** argv)
       events = simulation.runToRest().events;
     scene.state = simulation.state();
     const bool at_rest = simulation.atRest();
-    std::cout << cue_sim::shotReport(engine, scene.state, events, at_rest).dump(indent) << std::endl;
+    nlohmann::json report = cue_sim::shotReport(engine, scene.state, events, at_rest);
+    if (scene.game)
+    {
+      // The referee rules on the shot, and the state the game goes on from follows the ruling.
+      const cue_sim::game::Ruling ruling =
+          cue_sim::game::judgeShot(*cue_sim::game::makeRules(scene.game->rules), *scene.game, on_table,
+                                   {cue_sim::game::readShot(events), scene.shot->push_out});
+      report["ruling"] = cue_sim::rulingJson(ruling);
+      report["game"] = cue_sim::gameStateJson(cue_sim::game::afterRuling(*scene.game, ruling));
+    }
+    std::cout << report.dump(indent) << std::endl;
     return kExitOk;
   }
   catch (const cue_sim::physics::EventLimitError& e)

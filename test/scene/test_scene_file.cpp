@@ -111,3 +111,44 @@ TEST(SceneFile, NonNumbersDuplicatesAndWrongTypesAreRefusedByKey)
             std::string::npos);
   EXPECT_NE(errorOf("balls: {id: 3}\n").find("balls must be a list"), std::string::npos);
 }
+
+TEST(SceneFile, AGameBlockDefaultsToAGameJustStartedAndRoundTrips)
+{
+  const cue_sim::Scene fresh = cue_sim::loadScene("rack: nine\ngame: {rules: nine_ball}\n");
+  ASSERT_TRUE(fresh.game);
+  EXPECT_EQ(fresh.game->rules, "nine_ball");
+  EXPECT_EQ(fresh.game->turn, 0);
+  EXPECT_TRUE(fresh.game->break_shot);
+  EXPECT_EQ(fresh.game->ball_in_hand, cue_sim::game::BallInHand::BehindHeadString);
+  EXPECT_EQ(fresh.game->called_ball, -1);
+  const cue_sim::Scene set = cue_sim::loadScene(
+      "rack: eight\nshot: {speed: 2, push_out: false}\n"
+      "game: {rules: eight_ball, players: [ann, bob], turn: 1, break: false, groups: [stripes, solids],\n"
+      "       called_ball: 3, called_pocket: 4, ball_in_hand: anywhere, fouls: [2, 1]}\n");
+  ASSERT_TRUE(set.game);
+  EXPECT_EQ(set.game->players[1], "bob");
+  EXPECT_EQ(set.game->groups[0], cue_sim::game::Group::Stripes);
+  EXPECT_EQ(set.game->ball_in_hand, cue_sim::game::BallInHand::Anywhere);
+  EXPECT_EQ(set.game->consecutive_fouls[0], 2);
+  const cue_sim::Scene back = cue_sim::loadScene(cue_sim::sceneYaml(set));
+  ASSERT_TRUE(back.game);
+  EXPECT_EQ(cue_sim::sceneYaml(back), cue_sim::sceneYaml(set));
+}
+
+TEST(SceneFile, BadGameBlocksNameTheKey)
+{
+  EXPECT_NE(errorOf("game: {turn: 0}\n").find("game needs 'rules'"), std::string::npos);
+  EXPECT_NE(errorOf("game: {rules: snooker}\n").find("unknown rules 'snooker'"), std::string::npos);
+  EXPECT_NE(errorOf("game: {rules: eight_ball, turn: 2}\n").find("game.turn must be 0 or 1"), std::string::npos);
+  EXPECT_NE(errorOf("game: {rules: eight_ball, groups: [solids, open]}\n").find("game.groups"), std::string::npos);
+  EXPECT_NE(errorOf("game: {rules: eight_ball, fouls: [3, 0]}\n").find("game.fouls[0] must be 0, 1 or 2"),
+            std::string::npos);
+  EXPECT_NE(errorOf("game: {rules: eight_ball, called_pocket: 6}\n").find("game.called_pocket"), std::string::npos);
+  EXPECT_NE(errorOf("game: {rules: eight_ball, ball_in_hand: kitchen}\n").find("game.ball_in_hand must be one of"),
+            std::string::npos);
+  EXPECT_NE(errorOf("game: {rules: eight_ball, break: maybe}\n").find("game.break must be true or false"),
+            std::string::npos);
+  EXPECT_NE(errorOf("rack: eight\nshot: {ball: 3, speed: 1}\ngame: {rules: eight_ball}\n").find("shot.ball must be 0"),
+            std::string::npos);
+  EXPECT_NE(errorOf("game: {rules: eight_ball, colour: red}\n").find("unknown key 'colour'"), std::string::npos);
+}

@@ -114,3 +114,25 @@ TEST(SimulateProgram, ExitCodesSayWhatWentWrong)
   const ProgramRun limited = simulate("rack: eight\nshot: {speed: 8}\n", "--max-events 5");
   EXPECT_EQ(limited.status, 3) << limited.out;
 }
+
+TEST(SimulateProgram, AGameSceneIsRuledOn)
+{
+  // A scratch: the cue ball alone rolled into a corner pocket, solids to shoot in 8-ball.
+  const ProgramRun run = simulate(
+      "table: 7ft\nballs: [{id: 0, position: [0.5, 0.2]}, {id: 3, position: [-0.5, -0.3]}, {id: 8, position: [0, 0]}]\n"
+      "shot: {speed: 1.5, phi: 0.5418}\n"
+      "game: {rules: eight_ball, break: false, groups: [solids, stripes]}\n");
+  ASSERT_EQ(run.status, 0) << run.out;
+  const auto report = nlohmann::json::parse(run.out);
+  const auto& ruling = report["ruling"];
+  ASSERT_TRUE(ruling.is_object()) << run.out;
+  EXPECT_TRUE(ruling["foul"].get<bool>()) << ruling.dump();
+  EXPECT_EQ(ruling["rule"], "WPA 6.1");
+  EXPECT_EQ(ruling["ball_in_hand"], "anywhere");
+  EXPECT_EQ(ruling["next_player"], 1);
+  EXPECT_FALSE(ruling["game_over"].get<bool>());
+  EXPECT_EQ(report["game"]["turn"], 1);
+  EXPECT_EQ(report["game"]["fouls"][0], 1);
+  // A game's shot is ruled on at rest: a duration is refused.
+  EXPECT_EQ(simulate("rack: eight\nshot: {speed: 8}\ngame: {rules: eight_ball}\n", "--duration 0.1").status, 1);
+}

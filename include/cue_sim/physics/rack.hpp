@@ -29,7 +29,7 @@ std::vector<std::string> rackNames();
 /// "eight": cue ball on the head string, balls 1-15 in a triangle with the apex on the foot
 /// spot (8 in the centre, a solid and a stripe in the back corners). "nine": balls 1-9 in a
 /// diamond, 1 at the apex, 9 in the centre. "empty": the cue ball alone on the head string.
-/// The head string and foot spot are a quarter of the cloth length from each end. Throws
+/// The cue ball stands on TableModel::headSpot(), the apex on footSpot(). Throws
 /// std::invalid_argument for another name.
 template <typename S>
 TableState<S> rackLayout(const std::string& name, const TableModel& table, S ball_radius,

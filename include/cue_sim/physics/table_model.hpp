@@ -66,6 +66,14 @@ public:
   /// Jaws and segment end caps.
   const std::vector<CircularCushion>& circles() const { return circles_; }
   const std::vector<Pocket>& pockets() const { return pockets_; }
+  /// The head string: the line across the cloth a quarter of its length from the head end
+  /// (-x), behind which the break is played (WPA Definitions). Its x [m].
+  double headStringX() const { return cloth_centre_.x() - cloth_length_ / 4; }
+  /// The foot spot, where the rack's apex stands and balls are spotted: on the long string, a
+  /// quarter of the cloth's length from the foot end (+x).
+  Eigen::Vector2d footSpot() const { return cloth_centre_ + Eigen::Vector2d(cloth_length_ / 4, 0); }
+  /// The head spot, where the cue ball starts: the head string's middle.
+  Eigen::Vector2d headSpot() const { return Eigen::Vector2d(headStringX(), cloth_centre_.y()); }
 
   /// Empty if a ball of radius R can stand with its centre at p: at least R from every cushion's
   /// face and every jaw, outside every pocket's capture circle, and on the playing area they

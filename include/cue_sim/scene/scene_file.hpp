@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "cue_sim/game/game_state.hpp"
 #include "cue_sim/physics/collision_models.hpp"
 #include "cue_sim/physics/cue_strike.hpp"
 #include "cue_sim/physics/physics_params.hpp"
@@ -26,6 +27,7 @@ struct Shot
 {
   int ball = 0;
   physics::CueStrike<double> strike;
+  bool push_out = false;  ///< declared a push-out (a game of nine_ball, the shot after the break)
 };
 
 struct Scene
@@ -37,6 +39,8 @@ struct Scene
   physics::TableState<double> state;
   std::optional<Shot> shot;
   std::optional<double> duration;  ///< [s]; absent: run to rest
+  /// A game the shot is played in (the scene's `game:` block): `simulate` then rules on the shot.
+  std::optional<game::GameState> game;
 };
 
 /// Reads physics coefficients and model names from a YAML map (keys of config/physics.yaml);

@@ -40,10 +40,9 @@ TableState<S> rackLayout(const std::string& name, const TableModel& table, S bal
   else if (name != "empty")
     throw std::invalid_argument("unknown rack '" + name + "' (known: eight, nine, empty)");
 
-  const Eigen::Vector2d centre = table.clothCentre();
-  const double quarter = table.clothLength() / 4;
+  const Eigen::Vector2d head = table.headSpot(), foot = table.footSpot();
   TableState<S> state;
-  state.balls.push_back(restingBall<S>(0, centre.x() - quarter, centre.y(), ball_radius));
+  state.balls.push_back(restingBall<S>(0, head.x(), head.y(), ball_radius));
   if (!rows)
     return state;
   if (!(options.jitter >= 0 && options.jitter <= options.gap / 2))
@@ -59,8 +58,8 @@ TableState<S> rackLayout(const std::string& name, const TableModel& table, S bal
     const auto& row = (*rows)[k];
     for (std::size_t j = 0; j < row.size(); ++j)
     {
-      double x = centre.x() + quarter + k * row_step;
-      double y = centre.y() + (static_cast<double>(j) - (row.size() - 1) / 2.0) * spacing;
+      double x = foot.x() + k * row_step;
+      double y = foot.y() + (static_cast<double>(j) - (row.size() - 1) / 2.0) * spacing;
       if (options.jitter > 0 && !(k == 0 && j == 0))  // the apex stays on the foot spot
       {
         double dx, dy;  // uniform in the disc of radius jitter, by rejection (no libm)

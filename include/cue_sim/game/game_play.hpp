@@ -1,0 +1,78 @@
+// A game played on the physics engine: the table, the game's state, and turns taken by placing
+// the cue ball, calling and striking. Each strike runs the shot to rest, the referee rules on
+// it, and the table is made ready for the next (balls spotted, a new rack, the cue ball back in
+// hand). What the node, `simulate` and self-play share. No ROS.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cue_sim/game/game_state.hpp"
+#include "cue_sim/game/referee.hpp"
+#include "cue_sim/physics/cue_strike.hpp"
+#include "cue_sim/physics/engine.hpp"
+#include "cue_sim/physics/rack.hpp"
+
+namespace cue_sim
+{
+namespace game
+{
+/// One shot of a game: what was played and what the referee said.
+struct Turn
+{
+  int player = 0;
+  physics::CueStrike<double> strike;
+  bool push_out = false;
+  int called_ball = -1, called_pocket = -1;
+  std::vector<physics::Event<double>> events;
+  ShotFacts facts;
+  Ruling ruling;
+  GameState after;
+};
+
+/// How games rack: 0.1 mm gaps with each ball off by up to 0.05 mm, as a real rack is. A
+/// perfect rack is symmetric, and a full-ball break into it sends only 2 object balls to a rail
+/// at 8 m/s (an illegal break); these racks send 7 to 10. Each new rack of a game takes the next
+/// seed.
+physics::RackOptions gameRack(unsigned seed = 0);
+
+class GamePlay
+{
+public:
+  /// A new game of `rules` on `engine`'s table, racked, the cue ball on the head spot and in
+  /// hand behind the head string for player 0's break. Throws std::invalid_argument for unknown
+  /// rules or a table without pockets. The engine must outlive the game.
+  GamePlay(const physics::Engine<double>& engine, const std::string& rules,
+           const std::array<std::string, 2>& players = {"player 1", "player 2"},
+           const physics::RackOptions& rack_options = gameRack());
+
+  const GameState& state() const { return state_; }
+  const physics::TableState<double>& table() const { return table_; }
+  const Rules& rules() const { return *rules_; }
+  /// The object balls the player to shoot may hit first.
+  std::vector<int> legalFirst() const;
+
+  /// Moves the cue ball in hand to p; empty, or why not (and nothing changes).
+  std::string placeCueBall(const Eigen::Vector2d& p);
+  /// Calls a ball and pocket for the next shot (-1 for none); empty, or why not.
+  std::string call(int ball, int pocket);
+  /// Strikes the cue ball, runs the shot to rest and rules on it; throws std::invalid_argument
+  /// (and changes nothing) if the game is over or the strike cannot be played.
+  Turn shoot(const physics::CueStrike<double>& strike, bool push_out = false);
+
+private:
+  void rack();
+  /// The cue ball back on the cloth after a scratch: on the head spot, or the nearest free
+  /// place behind it along the head string.
+  void returnCueBall();
+
+  const physics::Engine<double>& engine_;
+  std::unique_ptr<Rules> rules_;
+  physics::RackOptions rack_;
+  GameState state_;
+  physics::TableState<double> table_;
+};
+
+}  // namespace game
+}  // namespace cue_sim

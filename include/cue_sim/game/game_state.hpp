@@ -1,0 +1,69 @@
+// A game of pool between two players, as data: whose turn it is, what each may hit, where the
+// cue ball may be placed, and what the last shot's ruling said. The referee (referee.hpp)
+// takes it with a shot's events and gives the ruling and the next state. No ROS.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace cue_sim
+{
+namespace game
+{
+/// 8-ball's groups (WPA 3.4): solids 1-7, stripes 9-15; open until a player legally pockets a
+/// called ball after the break.
+enum class Group
+{
+  Open,
+  Solids,
+  Stripes,
+};
+
+/// Where the incoming player may place the cue ball before the next shot.
+enum class BallInHand
+{
+  None,              ///< play it where it lies
+  Anywhere,          ///< anywhere on the cloth (WPA 1.5), after a standard foul
+  BehindHeadString,  ///< its centre behind the head string (WPA Definitions), on a break
+};
+
+const char* groupName(Group group);
+const char* ballInHandName(BallInHand place);
+
+struct GameState
+{
+  std::string rules;  ///< "eight_ball" or "nine_ball" (rulesNames())
+  std::array<std::string, 2> players{"player 1", "player 2"};
+  int turn = 0;                                           ///< whose shot is next: 0 or 1
+  bool break_shot = true;                                 ///< the next shot breaks the rack
+  bool push_out_allowed = false;                          ///< 9-ball: the shot after a legal break may be a push-out
+  std::array<Group, 2> groups{Group::Open, Group::Open};  ///< 8-ball
+  int called_ball = -1;                                   ///< the ball called for the next shot, -1 for none
+  int called_pocket = -1;  ///< the pocket called (TableModel::pockets index), -1 for none
+  std::array<int, 2> consecutive_fouls{0, 0};
+  BallInHand ball_in_hand = BallInHand::BehindHeadString;
+  int shots = 0;  ///< shots played in this game
+  bool over = false;
+  int winner = -1;  ///< 0 or 1 once over; -1 for none (a game stopped by the shot cap)
+};
+
+/// What the referee decided about one shot.
+struct Ruling
+{
+  bool foul = false;
+  std::string rule;        ///< the rule the ruling rests on, e.g. "WPA 6.1"
+  std::string reason;      ///< the rule and why, in a sentence
+  bool continues = false;  ///< the shooter plays again
+  int next_player = 0;
+  BallInHand ball_in_hand = BallInHand::None;
+  std::vector<int> respot;  ///< balls to spot on the long string (WPA 1.4), in this order
+  bool rerack = false;      ///< rack again and break (an illegal 8-ball break)
+  bool game_over = false;
+  int winner = -1;
+  std::array<Group, 2> groups{Group::Open, Group::Open};  ///< each player's group after the shot (8-ball)
+  bool push_out_next = false;  ///< the next shot may be a push-out (9-ball, after a legal break)
+};
+
+}  // namespace game
+}  // namespace cue_sim

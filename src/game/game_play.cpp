@@ -1,0 +1,137 @@
+#include "cue_sim/game/game_play.hpp"
+
+#include <stdexcept>
+
+#include "cue_sim/physics/rack.hpp"
+
+namespace cue_sim
+{
+namespace game
+{
+physics::RackOptions gameRack(unsigned seed)
+{
+  physics::RackOptions rack;
+  rack.gap = 1e-4;
+  rack.jitter = 5e-5;
+  rack.seed = seed;
+  return rack;
+}
+
+GamePlay::GamePlay(const physics::Engine<double>& engine, const std::string& rules,
+                   const std::array<std::string, 2>& players, const physics::RackOptions& rack_options)
+  : engine_(engine), rules_(makeRules(rules)), rack_(rack_options)
+{
+  if (engine.table().pockets().empty())
+    throw std::invalid_argument("a game of " + rules + " needs a table with pockets; '" + engine.table().name() +
+                                "' has none");
+  state_.rules = rules;
+  state_.players = players;
+  rack();
+}
+
+void GamePlay::rack()
+{
+  table_ = physics::rackLayout<double>(rules_->rack(), engine_.table(), engine_.params().ball_radius, rack_);
+  ++rack_.seed;
+  state_.break_shot = true;
+  state_.ball_in_hand = BallInHand::BehindHeadString;
+}
+
+std::vector<int> GamePlay::legalFirst() const
+{
+  return rules_->legalFirst(state_, objectBallsOnTable(table_));
+}
+
+std::string GamePlay::placeCueBall(const Eigen::Vector2d& p)
+{
+  if (state_.over)
+    return "the game is over";
+  const double R = engine_.params().ball_radius;
+  const int cue = table_.indexOf(0);
+  physics::TableState<double> without = table_;
+  without.balls.erase(without.balls.begin() + cue);
+  const std::string why = whyNotInHand(engine_.table(), R, without, p, state_.ball_in_hand);
+  if (!why.empty())
+    return why;
+  auto& ball = table_.balls[static_cast<std::size_t>(cue)];
+  ball.r = physics::Vec3<double>(p.x(), p.y(), R);
+  ball.time = table_.time;
+  return "";
+}
+
+std::string GamePlay::call(int ball, int pocket)
+{
+  const std::vector<int> on_table = objectBallsOnTable(table_);
+  if (ball != -1 && std::find(on_table.begin(), on_table.end(), ball) == on_table.end())
+    return "called ball " + std::to_string(ball) + " is not on the table";
+  if (pocket < -1 || pocket >= static_cast<int>(engine_.table().pockets().size()))
+    return "called pocket " + std::to_string(pocket) + " must be in [0, " +
+           std::to_string(engine_.table().pockets().size() - 1) + "], or -1 for none";
+  state_.called_ball = ball;
+  state_.called_pocket = pocket;
+  return "";
+}
+
+Turn GamePlay::shoot(const physics::CueStrike<double>& strike, bool push_out)
+{
+  if (state_.over)
+    throw std::invalid_argument("the game is over: " +
+                                std::string(state_.winner >= 0
+                                                ? state_.players[static_cast<std::size_t>(state_.winner)] + " won"
+                                                : "no winner"));
+  if (const std::string why = engine_.whyNotStrikable(table_, 0, strike); !why.empty())
+    throw std::invalid_argument(why);
+  Turn turn;
+  turn.player = state_.turn;
+  turn.strike = strike;
+  turn.push_out = push_out;
+  turn.called_ball = state_.called_ball;
+  turn.called_pocket = state_.called_pocket;
+  const std::vector<int> on_table = objectBallsOnTable(table_);
+  physics::TableState<double> shot = table_;
+  engine_.strike(shot, 0, strike);
+  turn.events = engine_.simulateToRest(shot).events;
+  turn.facts = readShot(turn.events);
+  turn.ruling = judgeShot(*rules_, state_, on_table, Shot{turn.facts, push_out});
+  table_ = shot;
+  state_ = afterRuling(state_, turn.ruling);
+  if (turn.ruling.rerack)
+    rack();
+  else if (!state_.over)
+  {
+    spotBalls(engine_.table(), engine_.params().ball_radius, turn.ruling.respot, table_);
+    if (!table_.balls[static_cast<std::size_t>(table_.indexOf(0))].inPlay())
+      returnCueBall();
+  }
+  turn.after = state_;
+  return turn;
+}
+
+void GamePlay::returnCueBall()
+{
+  const double R = engine_.params().ball_radius;
+  auto& cue = table_.balls[static_cast<std::size_t>(table_.indexOf(0))];
+  cue.motion = physics::Motion::Stationary;
+  cue.pocket = -1;
+  cue.v.setZero();
+  cue.w.setZero();
+  cue.time = table_.time;
+  const Eigen::Vector2d head = engine_.table().headSpot();
+  physics::TableState<double> others = table_;
+  others.balls.erase(others.balls.begin() + others.indexOf(0));
+  // Behind the head string, stepping back from the head spot until it stands.
+  for (double back = R; back < engine_.table().clothLength() / 4; back += R)
+    for (const double side : {0.0, 2.0 * R, -2.0 * R, 4.0 * R, -4.0 * R})
+    {
+      const Eigen::Vector2d p(head.x() - back, head.y() + side);
+      if (whyNotInHand(engine_.table(), R, others, p, BallInHand::BehindHeadString).empty())
+      {
+        cue.r = physics::Vec3<double>(p.x(), p.y(), R);
+        return;
+      }
+    }
+  throw std::runtime_error("no room behind the head string for the cue ball");
+}
+
+}  // namespace game
+}  // namespace cue_sim

@@ -1,0 +1,433 @@
+// The referee: every rule it applies, on shots played by the engine (scenes) where a shot can
+// show it, on a shot's facts where only the ruleset's logic is at stake; spotting and ball in
+// hand on the table's geometry; and thousands of random shots through whole games.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "cue_sim/game/game_play.hpp"
+#include "cue_sim/game/referee.hpp"
+
+using namespace cue_sim;
+using namespace cue_sim::game;
+using physics::Ball;
+using physics::CueStrike;
+using physics::Engine;
+using physics::PhysicsParams;
+using physics::TableModel;
+using physics::TableState;
+using physics::Vec3;
+
+namespace
+{
+std::shared_ptr<const TableModel> sevenFoot()
+{
+  static const auto table = std::make_shared<const TableModel>(TableModel::pool("7ft", 1.9812, 0.9906, 0.118, 0.137));
+  return table;
+}
+
+const Engine<double>& engine()
+{
+  static const Engine<double> e(sevenFoot(), PhysicsParams<double>());
+  return e;
+}
+
+double R()
+{
+  return engine().params().ball_radius;
+}
+
+Ball<double> ball(int id, double x, double y)
+{
+  Ball<double> b;
+  b.id = id;
+  b.r = Vec3<double>(x, y, R());
+  return b;
+}
+
+/// The pocket nearest to p.
+int pocketNear(const Eigen::Vector2d& p)
+{
+  const auto& pockets = engine().table().pockets();
+  int best = 0;
+  for (std::size_t k = 1; k < pockets.size(); ++k)
+    if ((pockets[k].centre - p).norm() < (pockets[static_cast<std::size_t>(best)].centre - p).norm())
+      best = static_cast<int>(k);
+  return best;
+}
+
+/// Plays `balls` (the cue ball among them) with a level centre-ball strike at `speed` towards
+/// `target`, and reads the shot.
+ShotFacts play(const std::vector<Ball<double>>& balls, const Eigen::Vector2d& target, double speed)
+{
+  TableState<double> s;
+  s.balls = balls;
+  const Eigen::Vector2d from = balls.front().r.head<2>();
+  CueStrike<double> cue;
+  cue.speed = speed;
+  cue.phi = std::atan2(target.y() - from.y(), target.x() - from.x());
+  engine().strike(s, 0, cue);
+  return readShot(engine().simulateToRest(s).events);
+}
+
+GameState eightBallAfterBreak(Group shooter_group)
+{
+  GameState s;
+  s.rules = "eight_ball";
+  s.break_shot = false;
+  s.ball_in_hand = BallInHand::None;
+  s.groups = {shooter_group, shooter_group == Group::Open     ? Group::Open
+                             : shooter_group == Group::Solids ? Group::Stripes
+                                                              : Group::Solids};
+  return s;
+}
+
+Ruling judge(const GameState& state, const std::vector<int>& on_table, const ShotFacts& facts, bool push_out = false)
+{
+  return judgeShot(*makeRules(state.rules), state, on_table, Shot{facts, push_out});
+}
+}  // namespace
+
+TEST(Referee, AScratchIsAFoulWithBallInHandAnywhere)
+{
+  // WPA 6.1: the cue ball rolled into the corner pocket it was aimed at.
+  const Eigen::Vector2d corner = engine().table().pockets()[static_cast<std::size_t>(pocketNear({1, 0.5}))].centre;
+  const ShotFacts f = play({ball(0, 0.5, 0.2), ball(3, -0.5, -0.3), ball(12, -0.6, 0.3)}, corner, 1.5);
+  ASSERT_TRUE(f.scratch);
+  const Ruling r = judge(eightBallAfterBreak(Group::Solids), {3, 8, 12}, f);
+  EXPECT_TRUE(r.foul);
+  EXPECT_EQ(r.rule, "WPA 6.1");
+  EXPECT_EQ(r.ball_in_hand, BallInHand::Anywhere);
+  EXPECT_EQ(r.next_player, 1);
+  EXPECT_FALSE(r.continues);
+}
+
+TEST(Referee, HittingTheOpponentsBallFirstIsAFoul)
+{
+  // WPA 6.2: solids to shoot; the cue ball goes straight into the 12.
+  const ShotFacts f = play({ball(0, -0.4, 0.0), ball(12, 0.0, 0.0), ball(3, 0.3, 0.3)}, {0.0, 0.0}, 1.0);
+  ASSERT_EQ(f.first_contact, 12);
+  const Ruling r = judge(eightBallAfterBreak(Group::Solids), {3, 8, 12}, f);
+  EXPECT_TRUE(r.foul);
+  EXPECT_EQ(r.rule, "WPA 6.2");
+  EXPECT_NE(r.reason.find("ball 12"), std::string::npos) << r.reason;
+  // On an open table the 8-ball may not be hit first either.
+  ShotFacts eight;
+  eight.first_contact = 8;
+  eight.rail_after_contact = true;
+  EXPECT_EQ(judge(eightBallAfterBreak(Group::Open), {3, 8, 12}, eight).rule, "WPA 6.2");
+}
+
+TEST(Referee, NoRailAfterContactIsAFoul)
+{
+  // WPA 6.3: a soft stun shot full on the 3, which stops short of every cushion.
+  const ShotFacts f = play({ball(0, -0.3, 0.0), ball(3, -0.1, 0.0)}, {-0.1, 0.0}, 0.5);
+  ASSERT_EQ(f.first_contact, 3);
+  ASSERT_FALSE(f.rail_after_contact);
+  ASSERT_TRUE(f.pocketed.empty());
+  const Ruling r = judge(eightBallAfterBreak(Group::Solids), {3, 8}, f);
+  EXPECT_TRUE(r.foul);
+  EXPECT_EQ(r.rule, "WPA 6.3");
+  // Harder, the 3 reaches the foot cushion: a legal miss, and the turn passes without a foul.
+  const ShotFacts hard = play({ball(0, -0.3, 0.0), ball(3, -0.1, 0.0)}, {-0.1, 0.0}, 2.0);
+  ASSERT_TRUE(hard.rail_after_contact);
+  const Ruling miss = judge(eightBallAfterBreak(Group::Solids), {3, 8}, hard);
+  EXPECT_FALSE(miss.foul) << miss.reason;
+  EXPECT_EQ(miss.next_player, 1);
+}
+
+TEST(Referee, PottingAnOwnBallContinuesAndOnAnOpenTableChoosesTheGroup)
+{
+  // A straight pot of the 11 into the foot-right corner, on an open table: the shooter takes the
+  // stripes (WPA 3.4) and shoots again.
+  const Eigen::Vector2d corner = engine().table().pockets()[static_cast<std::size_t>(pocketNear({1, 0.5}))].centre;
+  const Eigen::Vector2d object(0.6, 0.3);
+  const Eigen::Vector2d from = object - 0.4 * (corner - object).normalized();
+  const ShotFacts f = play({ball(0, from.x(), from.y()), ball(11, object.x(), object.y())}, object, 1.5);
+  ASSERT_EQ(f.pocketed, std::vector<int>{11});
+  ASSERT_FALSE(f.scratch);
+  const Ruling r = judge(eightBallAfterBreak(Group::Open), {3, 8, 11}, f);
+  EXPECT_FALSE(r.foul) << r.reason;
+  EXPECT_TRUE(r.continues);
+  EXPECT_EQ(r.next_player, 0);
+  EXPECT_EQ(r.groups[0], Group::Stripes);
+  EXPECT_EQ(r.groups[1], Group::Solids);
+  EXPECT_EQ(r.rule, "WPA 3.4");
+  // Called on another pocket, the same shot pockets the ball but not as called: the turn passes.
+  GameState called = eightBallAfterBreak(Group::Open);
+  called.called_ball = 11;
+  called.called_pocket = (f.pockets[0] + 1) % 6;
+  const Ruling off = judge(called, {3, 8, 11}, f);
+  EXPECT_FALSE(off.foul);
+  EXPECT_FALSE(off.continues);
+  EXPECT_EQ(off.groups[0], Group::Open);
+}
+
+TEST(Referee, TheEightBallEarlyLosesAndLastLegallyWins)
+{
+  // The 8 potted straight while the shooter (solids) still has the 3: loss of the rack.
+  const Eigen::Vector2d corner = engine().table().pockets()[static_cast<std::size_t>(pocketNear({1, 0.5}))].centre;
+  const Eigen::Vector2d object(0.6, 0.3);
+  const Eigen::Vector2d from = object - 0.4 * (corner - object).normalized();
+  const ShotFacts f =
+      play({ball(0, from.x(), from.y()), ball(8, object.x(), object.y()), ball(3, -0.6, -0.3)}, object, 1.5);
+  ASSERT_EQ(f.pocketed, std::vector<int>{8});
+  const Ruling early = judge(eightBallAfterBreak(Group::Solids), {3, 8}, f);
+  EXPECT_TRUE(early.game_over);
+  EXPECT_EQ(early.winner, 1);
+  // With the solids cleared the same shot wins, called in that pocket or uncalled; called in
+  // another pocket it loses.
+  GameState cleared = eightBallAfterBreak(Group::Solids);
+  const Ruling win = judge(cleared, {8}, f);
+  EXPECT_TRUE(win.game_over);
+  EXPECT_EQ(win.winner, 0) << win.reason;
+  cleared.called_ball = 8;
+  cleared.called_pocket = f.pockets[0];
+  EXPECT_EQ(judge(cleared, {8}, f).winner, 0);
+  cleared.called_pocket = (f.pockets[0] + 1) % 6;
+  EXPECT_EQ(judge(cleared, {8}, f).winner, 1);
+  // Pocketing the 8 with a scratch loses even when it was the object ball.
+  ShotFacts scratch = f;
+  scratch.scratch = true;
+  const Ruling foul = judge(eightBallAfterBreak(Group::Solids), {8}, scratch);
+  EXPECT_TRUE(foul.game_over);
+  EXPECT_EQ(foul.winner, 1);
+}
+
+TEST(Referee, ALegalBreakAndAnIllegalOne)
+{
+  for (const std::string rules : {"eight_ball", "nine_ball"})
+  {
+    SCOPED_TRACE(rules);
+    GamePlay hard(engine(), rules);
+    CueStrike<double> cue;
+    cue.speed = 8;
+    const Turn legal = hard.shoot(cue);
+    EXPECT_TRUE(legal.facts.object_balls_to_rail >= 4 || !legal.facts.pocketed.empty());
+    EXPECT_FALSE(legal.ruling.foul) << legal.ruling.reason;
+    EXPECT_FALSE(legal.after.break_shot);
+
+    GamePlay soft(engine(), rules);
+    cue.speed = 0.6;  // into the rack's apex, too soft to drive four balls to a rail
+    const Turn illegal = soft.shoot(cue);
+    EXPECT_LT(illegal.facts.object_balls_to_rail, 4);
+    EXPECT_TRUE(illegal.facts.pocketed.empty());
+    EXPECT_EQ(illegal.ruling.next_player, 1);
+    if (rules == "eight_ball")
+    {
+      // WPA 3.3(d): not a foul; re-racked, the incoming player breaks.
+      EXPECT_FALSE(illegal.ruling.foul);
+      EXPECT_TRUE(illegal.ruling.rerack);
+      EXPECT_TRUE(illegal.after.break_shot);
+      EXPECT_EQ(illegal.after.ball_in_hand, BallInHand::BehindHeadString);
+      EXPECT_EQ(objectBallsOnTable(soft.table()).size(), 15u);
+    }
+    else
+    {
+      // WPA 2.3: a foul, ball in hand anywhere.
+      EXPECT_TRUE(illegal.ruling.foul);
+      EXPECT_EQ(illegal.ruling.rule, "WPA 2.3");
+      EXPECT_EQ(illegal.after.ball_in_hand, BallInHand::Anywhere);
+    }
+  }
+}
+
+TEST(Referee, APushOutSuspendsWrongBallAndNoRail)
+{
+  // 9-ball, the shot after a legal break: rolling the cue ball away from every ball is a foul
+  // (6.3) as a normal shot, and legal as a declared push-out; the other player then shoots.
+  GameState s;
+  s.rules = "nine_ball";
+  s.break_shot = false;
+  s.push_out_allowed = true;
+  s.ball_in_hand = BallInHand::None;
+  const ShotFacts nothing = play({ball(0, -0.5, 0.0), ball(1, 0.5, 0.3), ball(9, 0.6, -0.3)}, {-0.5, -0.4}, 0.5);
+  ASSERT_LT(nothing.first_contact, 0);
+  EXPECT_EQ(judge(s, {1, 9}, nothing).rule, "WPA 6.3");
+  const Ruling push = judge(s, {1, 9}, nothing, true);
+  EXPECT_FALSE(push.foul) << push.reason;
+  EXPECT_EQ(push.rule, "WPA 2.4");
+  EXPECT_EQ(push.next_player, 1);
+  EXPECT_FALSE(push.push_out_next);
+  // Not allowed (not the shot after the break), the same declaration is a normal shot.
+  s.push_out_allowed = false;
+  EXPECT_TRUE(judge(s, {1, 9}, nothing, true).foul);
+  // A scratch on a push-out is still a foul; a 9 it pockets is spotted.
+  ShotFacts scratch;
+  scratch.scratch = true;
+  scratch.pocketed = {9};
+  scratch.pockets = {2};
+  s.push_out_allowed = true;
+  const Ruling foul = judge(s, {1, 9}, scratch, true);
+  EXPECT_TRUE(foul.foul);
+  EXPECT_EQ(foul.respot, std::vector<int>{9});
+}
+
+TEST(Referee, NineBallWinsOnTheNineAndSpotsItAfterAFoul)
+{
+  GameState s;
+  s.rules = "nine_ball";
+  s.break_shot = false;
+  ShotFacts combo;  // the 1 first, then the 9 drops: a win (WPA 2.5)
+  combo.first_contact = 1;
+  combo.pocketed = {9};
+  combo.pockets = {0};
+  const Ruling win = judge(s, {1, 9}, combo);
+  EXPECT_TRUE(win.game_over);
+  EXPECT_EQ(win.winner, 0);
+  ShotFacts wrong = combo;  // the 9 first: foul 6.2, the 9 spotted (2.6)
+  wrong.first_contact = 9;
+  const Ruling foul = judge(s, {1, 9}, wrong);
+  EXPECT_TRUE(foul.foul);
+  EXPECT_FALSE(foul.game_over);
+  EXPECT_EQ(foul.respot, std::vector<int>{9});
+}
+
+TEST(Referee, AThirdFoulInARowLoses)
+{
+  for (const std::string rules : {"eight_ball", "nine_ball"})
+  {
+    GameState s;
+    s.rules = rules;
+    s.break_shot = false;
+    ShotFacts scratch;
+    scratch.scratch = true;
+    s.consecutive_fouls = {1, 0};
+    EXPECT_FALSE(judge(s, {1, 3, 9}, scratch).game_over) << rules;
+    s.consecutive_fouls = {2, 0};
+    const Ruling third = judge(s, {1, 3, 9}, scratch);
+    EXPECT_TRUE(third.game_over) << rules;
+    EXPECT_EQ(third.winner, 1) << rules;
+    EXPECT_EQ(third.rule, "WPA 6.14") << rules;
+    // The count: a foul adds one, a legal shot clears it.
+    GameState after = afterRuling(s, judge(s, {1, 3, 9}, ShotFacts{}));
+    EXPECT_EQ(after.consecutive_fouls[0], 3) << rules;
+  }
+}
+
+TEST(Referee, BallInHandBehindTheHeadStringIsOnlyThere)
+{
+  GamePlay game(engine(), "eight_ball");  // the break: behind the head string
+  const double head = engine().table().headStringX();
+  EXPECT_EQ(game.placeCueBall({head - 0.1, 0.2}), "");
+  const std::string ahead = game.placeCueBall({head + 0.05, 0.2});
+  EXPECT_NE(ahead.find("behind the head string"), std::string::npos) << ahead;
+  EXPECT_NE(game.placeCueBall({head - 0.1, 0.9}), "");  // off the cloth
+  EXPECT_NEAR(game.table().balls[static_cast<std::size_t>(game.table().indexOf(0))].r.x(), head - 0.1, 1e-15);
+  // Anywhere after a foul, but never on another ball.
+  TableState<double> s;
+  s.balls = {ball(0, -0.5, 0), ball(5, 0.3, 0.1)};
+  EXPECT_EQ(whyNotInHand(engine().table(), R(), s, {0.5, 0.1}, BallInHand::Anywhere), "");
+  EXPECT_NE(whyNotInHand(engine().table(), R(), s, {0.3 + R(), 0.1}, BallInHand::Anywhere), "");
+  EXPECT_NE(whyNotInHand(engine().table(), R(), s, {0.5, 0.1}, BallInHand::None), "");
+}
+
+TEST(Referee, SpottingOnAnOccupiedFootSpotFreezesBehindTheBallThere)
+{
+  // WPA 1.4: on the long string, as near the foot spot as it stands, behind it first.
+  const Eigen::Vector2d spot = engine().table().footSpot();
+  TableState<double> s;
+  s.balls = {ball(0, -0.5, 0), ball(3, spot.x(), spot.y()), ball(9, 0, 0)};
+  s.balls[2].motion = physics::Motion::Pocketed;
+  s.balls[2].pocket = 1;
+  spotBalls(engine().table(), R(), {9}, s);
+  const Ball<double>& nine = s.balls[2];
+  EXPECT_TRUE(nine.inPlay());
+  EXPECT_EQ(nine.pocket, -1);
+  EXPECT_NEAR(nine.r.y(), spot.y(), 1e-15);
+  EXPECT_GT(nine.r.x(), spot.x());
+  EXPECT_NEAR((nine.r - s.balls[1].r).norm(), 2 * R(), 1e-9);  // frozen to the 3
+  // A free spot takes the ball on it.
+  TableState<double> free;
+  free.balls = {ball(0, -0.5, 0), ball(8, 0, 0)};
+  spotBalls(engine().table(), R(), {8}, free);
+  EXPECT_NEAR((free.balls[1].r.head<2>() - spot).norm(), 0, 1e-15);
+}
+
+TEST(Referee, UnknownRulesAreRefusedWithTheKnownOnes)
+{
+  try
+  {
+    makeRules("snooker");
+    FAIL() << "no throw";
+  }
+  catch (const std::invalid_argument& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("eight_ball, nine_ball"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(GamePlay(Engine<double>(std::make_shared<const TableModel>(TableModel::carom("carom", 2.84, 1.42)),
+                                       PhysicsParams<double>()),
+                        "nine_ball"),
+               std::invalid_argument);
+}
+
+TEST(Referee, RandomGamesConserveBallsStayValidAndEnd)
+{
+  // Random strikes (ball in hand placed at random where allowed, half of them aimed at a legal
+  // ball) through 150 whole games of each ruleset: after every shot each ball is on the table or
+  // pocketed, exactly once; the cue ball is back on the cloth; the state is valid; and every game
+  // ends within 300 shots.
+  std::mt19937 rng(42);
+  std::uniform_real_distribution<double> unit(0, 1);
+  int games = 0, shots = 0, fouls = 0;
+  for (const std::string rules : {"eight_ball", "nine_ball"})
+    for (int g = 0; g < 150; ++g, ++games)
+    {
+      GamePlay game(engine(), rules);
+      const std::size_t total = game.table().balls.size();
+      int n = 0;
+      for (; n < 300 && !game.state().over; ++n, ++shots)
+      {
+        const TableModel& t = engine().table();
+        if (game.state().ball_in_hand != BallInHand::None)
+          for (int attempt = 0; attempt < 50; ++attempt)
+          {
+            const Eigen::Vector2d p = t.clothCentre() + Eigen::Vector2d((unit(rng) - 0.5) * t.clothLength(),
+                                                                        (unit(rng) - 0.5) * t.clothWidth());
+            if (game.placeCueBall(p).empty())
+              break;
+          }
+        CueStrike<double> cue;
+        cue.speed = 0.5 + 5 * unit(rng);
+        cue.phi = 2 * M_PI * unit(rng);
+        // Aim at a legal ball half the time, so that balls go down.
+        const std::vector<int> legal = game.legalFirst();
+        const auto& cue_ball = game.table().balls[static_cast<std::size_t>(game.table().indexOf(0))];
+        if (!legal.empty() && unit(rng) < 0.5)
+        {
+          const auto& target = game.table().balls[static_cast<std::size_t>(game.table().indexOf(legal.front()))];
+          cue.phi = std::atan2(target.r.y() - cue_ball.r.y(), target.r.x() - cue_ball.r.x()) + 0.05 * (unit(rng) - 0.5);
+        }
+        const Turn turn = game.shoot(cue, game.state().push_out_allowed && unit(rng) < 0.3);
+        fouls += turn.ruling.foul;
+        ASSERT_FALSE(turn.ruling.reason.empty());
+        ASSERT_FALSE(turn.ruling.rule.empty());
+        ASSERT_EQ(game.table().balls.size(), total);
+        std::size_t on = 0, down = 0;
+        for (const auto& b : game.table().balls)
+          (b.inPlay() ? on : down) += 1;
+        ASSERT_EQ(on + down, total);
+        if (!game.state().over)
+        {
+          ASSERT_TRUE(game.table().balls[static_cast<std::size_t>(game.table().indexOf(0))].inPlay());
+          ASSERT_FALSE(game.table().anyMoving());
+        }
+        const GameState& st = game.state();
+        ASSERT_TRUE(st.turn == 0 || st.turn == 1);
+        ASSERT_TRUE((st.groups[0] == Group::Open) == (st.groups[1] == Group::Open));
+        ASSERT_TRUE(st.groups[0] == Group::Open || st.groups[0] != st.groups[1]);
+        for (const int count : st.consecutive_fouls)
+          ASSERT_TRUE(count < 3 || (count == 3 && st.over));
+        if (st.over)
+        {
+          ASSERT_TRUE(st.winner == 0 || st.winner == 1);
+        }
+      }
+      EXPECT_TRUE(game.state().over) << rules << " game " << g << " still going after " << n << " shots";
+    }
+  EXPECT_EQ(games, 300);
+  EXPECT_GT(shots, 2000);
+  EXPECT_GT(fouls, 0);
+  std::cout << games << " games, " << shots << " shots, " << fouls << " fouls\n";
+}
