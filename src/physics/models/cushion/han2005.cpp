@@ -18,21 +18,15 @@ class HanCushion : public CushionModel<S>
 public:
   void resolve(Ball<S>& ball, const Vec3<S>& normal, const PhysicsParams<S>& p) const override
   {
-    const S m = p.ball_mass, R = p.ball_radius, inertia = S(0.4) * m * R * R;
     const NoseContact<S> nose(normal, p);
-    const Vec3<S>&contact = nose.offset, &contact_normal = nose.normal;
-    const S approach = -ball.v.dot(contact_normal);  // a sphere's spin adds nothing along it
+    const S approach = nose.approach(ball);
     if (!(approach > S(0)))
       return;
-    const S normal_impulse = (S(1) + p.e_cushion) * m * approach;
-    Vec3<S> impulse = normal_impulse * contact_normal;
-    Vec3<S> slip = ball.v + ball.w.cross(contact);
-    slip -= slip.dot(contact_normal) * contact_normal;
+    const S m = p.ball_mass, normal_impulse = (S(1) + p.e_cushion) * m * approach;
     // Tangential inverse mass at the contact: 1/m + R^2/I = 7/(2m).
-    impulse += frictionImpulse(slip, p.f_cushion * normal_impulse, S(3.5) / m);
-    ball.v += impulse / m;
-    ball.v.z() = S(0);  // the part pressing the ball into the cloth is taken by the cloth
-    ball.w += contact.cross(impulse) / inertia;
+    const Vec3<S> impulse =
+        normal_impulse * nose.normal + frictionImpulse(nose.slip(ball), p.f_cushion * normal_impulse, S(3.5) / m);
+    nose.push(ball, impulse, p);
   }
 };
 }  // namespace

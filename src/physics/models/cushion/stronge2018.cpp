@@ -24,15 +24,13 @@ class StrongeCushion : public CushionModel<S>
 public:
   void resolve(Ball<S>& ball, const Vec3<S>& normal, const PhysicsParams<S>& p) const override
   {
-    const S m = p.ball_mass, R = p.ball_radius, inertia = S(0.4) * m * R * R;
-    const S tangential_inverse_mass = S(3.5);  // 1 + m R^2 / I, in units of 1/m
+    const S m = p.ball_mass, tangential_inverse_mass = S(3.5);  // 1 + m R^2 / I, in units of 1/m
     const NoseContact<S> nose(normal, p);
-    const S approach = -ball.v.dot(nose.normal);
+    const S approach = nose.approach(ball);
     if (!(approach > S(0)))
       return;
     Vec3<S> impulse = (S(1) + p.e_cushion) * m * approach * nose.normal;
-    Vec3<S> slip = ball.v + ball.w.cross(nose.offset);
-    slip -= slip.dot(nose.normal) * nose.normal;
+    const Vec3<S> slip = nose.slip(ball);
     const S speed = slip.norm();
     if (speed > zeroSpeed<S>())
     {
@@ -40,9 +38,7 @@ public:
                                                p.cushion_frequency_ratio);
       impulse += (m / tangential_inverse_mass) * (after - speed) / speed * slip;
     }
-    ball.v += impulse / m;
-    ball.v.z() = S(0);  // the part pressing the ball into the cloth is taken by the cloth
-    ball.w += nose.offset.cross(impulse) / inertia;
+    nose.push(ball, impulse, p);
   }
 };
 }  // namespace
