@@ -44,8 +44,9 @@ catkin_add_gtest(scene_tests
 target_link_libraries(scene_tests cue_sim_table_description gtest_main)
 target_compile_definitions(scene_tests PRIVATE
   CUE_SIM_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
-  CUE_SIM_SIMULATE="$<TARGET_FILE:simulate>")
-add_dependencies(scene_tests simulate)
+  CUE_SIM_SIMULATE="$<TARGET_FILE:simulate>"
+  CUE_SIM_SELF_PLAY="$<TARGET_FILE:self_play>")
+add_dependencies(scene_tests simulate self_play)
 
 catkin_add_gtest(session_tests test/session/test_live_table.cpp)
 target_link_libraries(session_tests cue_sim_session cue_sim_table_description gtest_main)

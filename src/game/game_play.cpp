@@ -18,9 +18,12 @@ physics::RackOptions gameRack(unsigned seed)
 }
 
 GamePlay::GamePlay(const physics::Engine<double>& engine, const std::string& rules,
-                   const std::array<std::string, 2>& players, const physics::RackOptions& rack_options)
+                   const std::array<std::string, 2>& players, const physics::RackOptions& rack_options, int breaker)
   : engine_(engine), rules_(makeRules(rules)), rack_(rack_options)
 {
+  if (breaker != 0 && breaker != 1)
+    throw std::invalid_argument("breaker must be 0 or 1, got " + std::to_string(breaker));
+  state_.turn = breaker;
   if (engine.table().pockets().empty())
     throw std::invalid_argument("a game of " + rules + " needs a table with pockets; '" + engine.table().name() +
                                 "' has none");
@@ -94,6 +97,13 @@ Turn GamePlay::shoot(const physics::CueStrike<double>& strike, bool push_out)
   turn.facts = readShot(turn.events);
   turn.ruling = judgeShot(*rules_, state_, on_table, Shot{turn.facts, push_out});
   table_ = shot;
+  if (max_shots_ > 0 && state_.shots + 1 >= max_shots_ && !turn.ruling.game_over)
+  {
+    turn.ruling.game_over = true;
+    turn.ruling.winner = -1;
+    turn.ruling.reason +=
+        "; the game is stopped at the cap of " + std::to_string(max_shots_) + " shots, without a winner";
+  }
   state_ = afterRuling(state_, turn.ruling);
   if (turn.ruling.rerack)
     rack();

@@ -8,6 +8,7 @@
 
 #include "cue_sim/game/game_play.hpp"
 #include "cue_sim/game/referee.hpp"
+#include "cue_sim/game/self_play.hpp"
 
 using namespace cue_sim;
 using namespace cue_sim::game;
@@ -430,4 +431,54 @@ TEST(Referee, RandomGamesConserveBallsStayValidAndEnd)
   EXPECT_GT(shots, 2000);
   EXPECT_GT(fouls, 0);
   std::cout << games << " games, " << shots << " shots, " << fouls << " fouls\n";
+}
+
+TEST(SelfPlay, PlannersFinishTheirGamesWithNoise)
+{
+  // The potting planner on both sides, the tournaments' execution noise: every game ends, by a
+  // win far more often than by the shot cap, and the tallies add up.
+  for (const std::string rules : {"eight_ball", "nine_ball"})
+  {
+    SelfPlayOptions options;
+    options.rules = rules;
+    options.games = 10;
+    options.seed = 3;
+    int reported = 0;
+    const SelfPlaySummary s = selfPlay(engine(), options, [&](const GameRecord& r) {
+      ++reported;
+      EXPECT_TRUE(r.end.over);
+      EXPECT_EQ(r.turns.size(), r.before.size());
+      EXPECT_EQ(static_cast<int>(r.turns.size()), r.end.shots);
+    });
+    EXPECT_EQ(reported, 10) << rules;
+    EXPECT_EQ(s.games, 10);
+    EXPECT_EQ(s.finished + s.capped, 10);
+    EXPECT_EQ(s.wins[0] + s.wins[1], s.finished);
+    EXPECT_GE(s.finished, 9) << rules;
+    int shots = 0;
+    for (const auto& r : s.records)
+      shots += static_cast<int>(r.turns.size());
+    EXPECT_EQ(shots, s.shots);
+    // The same seed plays the same games.
+    const SelfPlaySummary again = selfPlay(engine(), options);
+    EXPECT_EQ(again.shots, s.shots) << rules;
+    EXPECT_EQ(again.wins, s.wins) << rules;
+  }
+}
+
+TEST(SelfPlay, TheShotCapEndsAGameWithoutAWinnerAndSaysSo)
+{
+  GamePlay game(engine(), "nine_ball");
+  game.setShotCap(2);
+  CueStrike<double> soft;
+  soft.speed = 0.6;
+  game.shoot(soft);  // an illegal break: a foul, the game goes on
+  const auto& cue = game.table().balls[static_cast<std::size_t>(game.table().indexOf(0))];
+  soft.phi = std::atan2(-cue.r.y(), -1 - cue.r.x());  // away from the balls: another foul
+  const Turn capped = game.shoot(soft);
+  EXPECT_TRUE(capped.ruling.game_over);
+  EXPECT_EQ(capped.ruling.winner, -1);
+  EXPECT_NE(capped.ruling.reason.find("cap of 2 shots"), std::string::npos) << capped.ruling.reason;
+  EXPECT_TRUE(game.state().over);
+  EXPECT_THROW(game.shoot(soft), std::invalid_argument);
 }

@@ -136,3 +136,24 @@ TEST(SimulateProgram, AGameSceneIsRuledOn)
   // A game's shot is ruled on at rest: a duration is refused.
   EXPECT_EQ(simulate("rack: eight\nshot: {speed: 8}\ngame: {rules: eight_ball}\n", "--duration 0.1").status, 1);
 }
+
+TEST(SimulateProgram, ASelfPlayRecordReplaysShotByShot)
+{
+  // Each shot of a recorded game, written as a scene, gives the same ruling through `simulate`.
+  const std::string dir = ::testing::TempDir() + "/self_play_record";
+  const std::string command =
+      std::string(CUE_SIM_SELF_PLAY) + " --rules nine_ball --games 1 --seed 5 --out " + dir + " 2>/dev/null";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  std::ifstream summary_file(dir + "/nine_ball_0/game.json");
+  ASSERT_TRUE(summary_file) << dir;
+  const auto summary = nlohmann::json::parse(summary_file);
+  ASSERT_GT(summary["shots"].size(), 1u);
+  for (const auto& shot : summary["shots"])
+  {
+    std::ifstream scene(dir + "/nine_ball_0/" + shot["file"].get<std::string>());
+    const std::string text((std::istreambuf_iterator<char>(scene)), std::istreambuf_iterator<char>());
+    const ProgramRun run = simulate(text);
+    ASSERT_EQ(run.status, 0) << run.out;
+    EXPECT_EQ(nlohmann::json::parse(run.out)["ruling"], shot["ruling"]) << shot["file"];
+  }
+}

@@ -37,15 +37,16 @@ struct Turn
 /// seed.
 physics::RackOptions gameRack(unsigned seed = 0);
 
+/// Copyable: a copy plays on from the same position (what a planner tries shots on).
 class GamePlay
 {
 public:
   /// A new game of `rules` on `engine`'s table, racked, the cue ball on the head spot and in
-  /// hand behind the head string for player 0's break. Throws std::invalid_argument for unknown
+  /// hand behind the head string for `breaker`'s break (0 or 1). Throws std::invalid_argument for unknown
   /// rules or a table without pockets. The engine must outlive the game.
   GamePlay(const physics::Engine<double>& engine, const std::string& rules,
            const std::array<std::string, 2>& players = {"player 1", "player 2"},
-           const physics::RackOptions& rack_options = gameRack());
+           const physics::RackOptions& rack_options = gameRack(), int breaker = 0);
 
   const GameState& state() const { return state_; }
   const physics::TableState<double>& table() const { return table_; }
@@ -58,8 +59,12 @@ public:
   /// Calls a ball and pocket for the next shot (-1 for none); empty, or why not.
   std::string call(int ball, int pocket);
   /// Strikes the cue ball, runs the shot to rest and rules on it; throws std::invalid_argument
-  /// (and changes nothing) if the game is over or the strike cannot be played.
+  /// (and changes nothing) if the game is over or the strike cannot be played. At the shot cap
+  /// a game not yet over ends without a winner, and the ruling says so.
   Turn shoot(const physics::CueStrike<double>& strike, bool push_out = false);
+  /// Shots a game may take before it is stopped (0: no cap).
+  void setShotCap(int max_shots) { max_shots_ = max_shots; }
+  const physics::Engine<double>& engine() const { return engine_; }
 
 private:
   void rack();
@@ -68,8 +73,9 @@ private:
   void returnCueBall();
 
   const physics::Engine<double>& engine_;
-  std::unique_ptr<Rules> rules_;
+  std::shared_ptr<const Rules> rules_;
   physics::RackOptions rack_;
+  int max_shots_ = 0;
   GameState state_;
   physics::TableState<double> table_;
 };

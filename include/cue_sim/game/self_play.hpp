@@ -1,0 +1,77 @@
+// Self-play: whole games between two shot planners on the engine, with execution noise, each
+// game recorded shot by shot. No ROS.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cue_sim/game/game_play.hpp"
+#include "cue_sim/physics/execution_noise.hpp"
+
+namespace cue_sim
+{
+namespace game
+{
+/// What a player does on its turn: where it places the cue ball in hand, what it calls, and the
+/// strike it plans (execution noise comes on top).
+struct Choice
+{
+  std::optional<Eigen::Vector2d> cue_ball;
+  int ball = -1, pocket = -1;
+  physics::CueStrike<double> strike;
+};
+
+/// Chooses a shot by trying them. On a break: the cue ball on the head spot, 8 m/s at the apex.
+/// Otherwise, for every ball it may hit first and every pocket, the ghost-ball aim (cut at most
+/// kMaxCut) at two speeds; with the cue ball in hand it is placed straight behind the ghost ball.
+/// Each candidate is played on a copy of the game without noise, and the best ruling wins: a won
+/// game, then a legal pot (the shooter continues), then a shot without a foul; among equals the
+/// slower. With no candidate it hits its first legal ball full at 2 m/s.
+class PottingPlanner
+{
+public:
+  Choice choose(const GamePlay& game) const;
+
+  static constexpr double kMaxCut = 70 * 3.14159265358979323846 / 180;  ///< [rad]
+  static constexpr double kBreakSpeed = 8.0;                            ///< [m/s]
+};
+
+/// One game as played: the table before each shot (the cue ball placed), the turn, and how it
+/// ended.
+struct GameRecord
+{
+  std::string rules;
+  int index = 0;
+  std::vector<physics::TableState<double>> before;
+  std::vector<GameState> state_before;  ///< the game as each shot found it (its calls included)
+  std::vector<Turn> turns;
+  GameState end;
+};
+
+struct SelfPlayOptions
+{
+  std::string rules = "eight_ball";
+  int games = 10;
+  std::uint64_t seed = 0;
+  int max_shots = 150;            ///< the cap: a game not over by then ends without a winner
+  physics::ExecutionNoise noise;  ///< the tournaments' deviations by default
+};
+
+struct SelfPlaySummary
+{
+  int games = 0, finished = 0, capped = 0;
+  std::array<int, 2> wins{0, 0};
+  int shots = 0, fouls = 0;
+  std::vector<GameRecord> records;
+};
+
+/// Plays options.games games, the PottingPlanner on both sides, the break alternating (player 0
+/// breaks the even games). Each game racks with seeds of its own; the noise's seed is options.seed. `progress` is
+/// called after each game.
+SelfPlaySummary selfPlay(const physics::Engine<double>& engine, const SelfPlayOptions& options,
+                         const std::function<void(const GameRecord&)>& progress = {});
+
+}  // namespace game
+}  // namespace cue_sim

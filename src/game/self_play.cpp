@@ -1,0 +1,162 @@
+#include "cue_sim/game/self_play.hpp"
+
+#include <cmath>
+
+namespace cue_sim
+{
+namespace game
+{
+namespace
+{
+/// A candidate's worth from its ruling: a won game, then a legal pot, then no foul; the slower
+/// of equals (more control).
+double score(const Ruling& r, int shooter, double speed)
+{
+  double s = -0.01 * speed;
+  if (r.game_over)
+    s += r.winner == shooter ? 1000 : -1000;
+  else if (r.foul)
+    s -= 100;
+  else if (r.continues)
+    s += 100;
+  return s;
+}
+
+physics::CueStrike<double> aimedAt(const Eigen::Vector2d& from, const Eigen::Vector2d& at, double speed)
+{
+  physics::CueStrike<double> strike;
+  strike.speed = speed;
+  strike.phi = std::atan2(at.y() - from.y(), at.x() - from.x());
+  return strike;
+}
+
+Eigen::Vector2d positionOf(const GamePlay& game, int id)
+{
+  return game.table().balls[static_cast<std::size_t>(game.table().indexOf(id))].r.head<2>();
+}
+
+Choice breakChoice(const GamePlay& game)
+{
+  Choice c;
+  const auto& table = game.engine().table();
+  if (game.state().ball_in_hand != BallInHand::None)
+    c.cue_ball = table.headSpot();
+  const Eigen::Vector2d from = c.cue_ball.value_or(positionOf(game, 0));
+  c.strike = aimedAt(from, table.footSpot(), PottingPlanner::kBreakSpeed);
+  return c;
+}
+}  // namespace
+
+Choice PottingPlanner::choose(const GamePlay& game) const
+{
+  if (game.state().break_shot)
+    return breakChoice(game);
+  const auto& table = game.engine().table();
+  const double R = game.engine().params().ball_radius;
+  const bool in_hand = game.state().ball_in_hand != BallInHand::None;
+  const bool calls = game.state().rules == "eight_ball";
+  const int shooter = game.state().turn;
+  std::optional<Choice> best;
+  double best_score = -1e300;
+  const std::vector<int> legal = game.legalFirst();
+  for (const int ball : legal)
+    for (int pocket = 0; pocket < static_cast<int>(table.pockets().size()); ++pocket)
+    {
+      const Eigen::Vector2d object = positionOf(game, ball);
+      const Eigen::Vector2d to_pocket =
+          (table.pockets()[static_cast<std::size_t>(pocket)].centre - object).normalized();
+      const Eigen::Vector2d ghost = object - 2 * R * to_pocket;
+      for (const double back : {0.3, 0.15})
+      {
+        Choice c;
+        if (calls)
+        {
+          c.ball = ball;
+          c.pocket = pocket;
+        }
+        GamePlay trial = game;
+        if (in_hand)
+        {
+          c.cue_ball = ghost - back * to_pocket;
+          if (!trial.placeCueBall(*c.cue_ball).empty())
+            continue;
+        }
+        const Eigen::Vector2d cue = positionOf(trial, 0);
+        if ((ghost - cue).norm() < 1e-6 ||
+            std::acos(std::clamp((ghost - cue).normalized().dot(to_pocket), -1.0, 1.0)) > kMaxCut)
+          continue;
+        if (calls && !trial.call(c.ball, c.pocket).empty())
+          continue;
+        for (const double speed : {1.5, 3.0})
+        {
+          c.strike = aimedAt(cue, ghost, speed);
+          GamePlay play = trial;
+          const Turn t = play.shoot(c.strike);
+          const double s = score(t.ruling, shooter, speed);
+          if (s > best_score)
+          {
+            best_score = s;
+            best = c;
+          }
+        }
+        if (!in_hand)
+          break;  // the placement distance matters only with the ball in hand
+      }
+    }
+  if (best)
+    return *best;
+  Choice fallback;
+  if (!legal.empty())
+    fallback.strike = aimedAt(positionOf(game, 0), positionOf(game, legal.front()), 2.0);
+  else
+    fallback.strike = aimedAt(positionOf(game, 0), table.clothCentre(), 2.0);
+  return fallback;
+}
+
+SelfPlaySummary selfPlay(const physics::Engine<double>& engine, const SelfPlayOptions& options,
+                         const std::function<void(const GameRecord&)>& progress)
+{
+  SelfPlaySummary summary;
+  physics::NoisyCue cue(options.noise, options.seed);
+  const PottingPlanner planner;
+  for (int g = 0; g < options.games; ++g)
+  {
+    // Each game racks with seeds of its own, and the break alternates.
+    GamePlay game(engine, options.rules, {"planner A", "planner B"},
+                  gameRack(static_cast<unsigned>(options.seed * 1000 + static_cast<std::uint64_t>(g) * 10)), g % 2);
+    game.setShotCap(options.max_shots);
+    GameRecord record;
+    record.rules = options.rules;
+    record.index = g;
+    while (!game.state().over)
+    {
+      Choice choice = planner.choose(game);
+      if (choice.cue_ball && !game.placeCueBall(*choice.cue_ball).empty())
+        choice.cue_ball.reset();
+      game.call(choice.ball, choice.pocket);
+      record.before.push_back(game.table());
+      record.state_before.push_back(game.state());
+      const physics::CueStrike<double> executed = cue.execute(choice.strike, engine.params().ball_radius);
+      const Turn turn = game.shoot(executed);
+      summary.shots += 1;
+      summary.fouls += turn.ruling.foul;
+      record.turns.push_back(turn);
+    }
+    record.end = game.state();
+    summary.games += 1;
+    if (record.end.winner >= 0)
+    {
+      summary.finished += 1;
+      summary.wins[static_cast<std::size_t>(record.end.winner)] += 1;
+    }
+    else
+      summary.capped += 1;
+    if (progress)
+      progress(record);
+    summary.records.push_back(std::move(record));
+  }
+  return summary;
+}
+
+}  // namespace game
+}  // namespace cue_sim

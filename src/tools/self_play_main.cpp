@@ -1,0 +1,67 @@
+// self_play: whole games between two shot planners, with execution noise (README, "Games").
+//   rosrun cue_sim self_play --rules nine_ball --games 100 --seed 7 --out self_play_records
+// Prints progress, then games finished, who won, shots and fouls per game; with --out, each game
+// as scene files that `simulate` replays shot by shot.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <iostream>
+
+#include "cue_sim/game/self_play.hpp"
+#include "cue_sim/scene/game_record.hpp"
+#include "cue_sim/table_description/table_catalog.hpp"
+#include "cue_sim/table_description/urdf_table_loader.hpp"
+
+int main(int argc, char** argv)
+{
+  CLI::App app{"Self-play: whole games of 8-ball or 9-ball between two shot planners, refereed."};
+  std::vector<std::string> rules{"eight_ball", "nine_ball"};
+  int games = 10, max_shots = 150;
+  std::uint64_t seed = 0;
+  bool no_noise = false;
+  std::string table_name = "7ft", out_dir;
+  app.add_option("--rules", rules, "rulesets to play, each N games")->check(CLI::IsMember({"eight_ball", "nine_ball"}));
+  app.add_option("--games", games, "games of each ruleset")->check(CLI::Range(1, 1000000));
+  app.add_option("--seed", seed, "seed of the racks and the execution noise");
+  app.add_option("--max-shots", max_shots, "the shot cap: a game not over by then ends without a winner")
+      ->check(CLI::Range(1, 100000));
+  app.add_option("--table", table_name, "a bundled table with pockets (7ft, 9ft) or a URDF file");
+  app.add_flag("--no-noise", no_noise, "strike exactly as planned");
+  app.add_option("--out", out_dir, "write each game's shots as scene files here (<rules>_<game>/shot_NNN.yaml)");
+  CLI11_PARSE(app, argc, argv);
+  try
+  {
+    const auto table = std::make_shared<const cue_sim::physics::TableModel>(
+        cue_sim::tableFromUrdfFile(cue_sim::tableUrdfPath(table_name)));
+    const cue_sim::physics::Engine<double> engine(table, cue_sim::physics::PhysicsParams<double>());
+    for (const std::string& ruleset : rules)
+    {
+      cue_sim::game::SelfPlayOptions options;
+      options.rules = ruleset;
+      options.games = games;
+      options.seed = seed;
+      options.max_shots = max_shots;
+      if (no_noise)
+        options.noise = cue_sim::physics::ExecutionNoise::none();
+      int done = 0;
+      const auto summary = cue_sim::game::selfPlay(engine, options, [&](const cue_sim::game::GameRecord& record) {
+        ++done;
+        std::fprintf(stderr, "\rself_play: %s %d/%d games   ", ruleset.c_str(), done, games);
+        if (!out_dir.empty())
+          cue_sim::writeGameRecord(record, out_dir + "/" + ruleset + "_" + std::to_string(record.index), table_name,
+                                   engine);
+      });
+      std::fprintf(stderr, "\n");
+      std::printf(
+          "%s: %d games, %d finished, %d stopped at the cap of %d shots; planner A won %d, planner B %d; "
+          "%.1f shots and %.1f fouls per game\n",
+          ruleset.c_str(), summary.games, summary.finished, summary.capped, max_shots, summary.wins[0], summary.wins[1],
+          static_cast<double>(summary.shots) / summary.games, static_cast<double>(summary.fouls) / summary.games);
+    }
+    return 0;
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "self_play: " << e.what() << std::endl;
+    return 1;
+  }
+}
