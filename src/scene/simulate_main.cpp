@@ -3,6 +3,7 @@
 // Exit codes: 0 the scene ran; 1 the scene is refused (the message names the key and the value);
 // 2 the command line is wrong; 3 the engine gave up (--max-events reached).
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <iostream>
 #include <optional>
 
@@ -61,6 +62,10 @@ int main(int argc, char** argv)
     if (scene.game && (!scene.shot || duration))
       throw cue_sim::SceneError("game: a game's scene needs a shot, ruled on at rest (no --duration)");
     const std::vector<int> on_table = cue_sim::game::objectBallsOnTable(scene.state);
+    if (scene.game && scene.game->called_ball >= 0 &&
+        std::find(on_table.begin(), on_table.end(), scene.game->called_ball) == on_table.end())
+      throw cue_sim::SceneError("game.called_ball: ball " + std::to_string(scene.game->called_ball) +
+                                " is not on the table");
     cue_sim::physics::Simulation<double> simulation(engine, scene.state);
     if (scene.shot)
     {

@@ -7,6 +7,7 @@
 #include <memory>
 #include <random>
 
+#include "cue_sim/game/self_play.hpp"
 #include "cue_sim/physics/motion.hpp"
 #include "cue_sim/physics/simulation.hpp"
 #include "cue_sim/table_description/table_catalog.hpp"
@@ -189,4 +190,34 @@ TEST(BundledTables, BehindAPocketsMouthIsOffTheCloth)
   b.r = Eigen::Vector3d(0.12, 0.51, R);
   s.balls.push_back(b);
   EXPECT_NE(engine.whyInvalid(s).find("off the cloth"), std::string::npos);
+}
+
+TEST(BundledTables, EveryTableWithPocketsHostsAGame)
+{
+  // The head string, foot spot and rack come from the table: on each bundled table with pockets
+  // both rulesets rack, break legally and play to the end; a table without pockets is refused.
+  for (const std::string& name : tableNames())
+  {
+    const Engine<double> engine(bundled(name), PhysicsParams<double>());
+    if (engine.table().pockets().empty())
+    {
+      EXPECT_THROW(game::GamePlay(engine, "eight_ball"), std::invalid_argument) << name;
+      continue;
+    }
+    for (const std::string rules : {"eight_ball", "nine_ball"})
+    {
+      game::SelfPlayOptions options;
+      options.rules = rules;
+      options.games = 2;
+      options.seed = 11;
+      const game::SelfPlaySummary s = game::selfPlay(engine, options);
+      EXPECT_EQ(s.finished, 2) << name << " " << rules;
+      for (const auto& record : s.records)
+      {
+        ASSERT_FALSE(record.turns.empty());
+        EXPECT_FALSE(record.turns.front().ruling.rerack)
+            << name << " " << rules << ": " << record.turns.front().ruling.reason;
+      }
+    }
+  }
 }

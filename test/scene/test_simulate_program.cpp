@@ -133,6 +133,10 @@ TEST(SimulateProgram, AGameSceneIsRuledOn)
   EXPECT_FALSE(ruling["game_over"].get<bool>());
   EXPECT_EQ(report["game"]["turn"], 1);
   EXPECT_EQ(report["game"]["fouls"][0], 1);
+  // A called ball must be on the table.
+  const ProgramRun missing = simulate("rack: nine\nshot: {speed: 8}\ngame: {rules: nine_ball, called_ball: 12}\n");
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_NE(missing.out.find("game.called_ball: ball 12 is not on the table"), std::string::npos) << missing.out;
   // A game's shot is ruled on at rest: a duration is refused.
   EXPECT_EQ(simulate("rack: eight\nshot: {speed: 8}\ngame: {rules: eight_ball}\n", "--duration 0.1").status, 1);
 }
