@@ -45,6 +45,21 @@ std::vector<int> GamePlay::legalFirst() const
   return rules_->legalFirst(state_, objectBallsOnTable(table_));
 }
 
+std::string GamePlay::setPosition(const physics::TableState<double>& balls, bool break_shot)
+{
+  if (balls.indexOf(0) < 0)
+    return "a position needs the cue ball (id 0)";
+  if (const std::string why = engine_.whyInvalid(balls); !why.empty())
+    return why;
+  if (balls.anyMoving())
+    return "a position is played from rest: every ball must be at rest";
+  table_ = balls;
+  state_.break_shot = break_shot;
+  state_.ball_in_hand = break_shot ? BallInHand::BehindHeadString : BallInHand::None;
+  state_.push_out_allowed = false;
+  return "";
+}
+
 std::string GamePlay::placeCueBall(const Eigen::Vector2d& p)
 {
   if (state_.over)

@@ -1,5 +1,6 @@
 #include "cue_sim/game/self_play.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace cue_sim
@@ -8,18 +9,43 @@ namespace game
 {
 namespace
 {
-/// A candidate's worth from its ruling: a won game, then a legal pot, then no foul; the slower
-/// of equals (more control).
-double score(const Ruling& r, int shooter, double speed)
+/// A candidate's worth from its ruling and the table it leaves: a won game, then a legal pot,
+/// then no foul; a pot that leaves the shooter open shots is worth more (position), a miss that
+/// leaves the opponent none is worth more (safety); the slower of equals (more control).
+double score(const Ruling& r, int shooter, double speed, int open_after)
 {
+  const double position = PottingPlanner::kPositionWeight * std::min(open_after, PottingPlanner::kOpenShotsCounted);
   double s = -0.01 * speed;
   if (r.game_over)
     s += r.winner == shooter ? 1000 : -1000;
   else if (r.foul)
     s -= 100;
   else if (r.continues)
-    s += 100;
+    s += 100 + position;
+  else
+    s -= position;
   return s;
+}
+
+/// Whether a ball of radius R travelling from a to b would touch a ball in play other than
+/// those in `ignore` (the straight path's corridor of width 4R).
+bool blocked(const physics::TableState<double>& table, const Eigen::Vector2d& a, const Eigen::Vector2d& b, double R,
+             std::initializer_list<int> ignore)
+{
+  const Eigen::Vector2d d = b - a;
+  const double length = d.norm();
+  if (!(length > 0))
+    return false;
+  for (const auto& ball : table.balls)
+  {
+    if (!ball.inPlay() || std::find(ignore.begin(), ignore.end(), ball.id) != ignore.end())
+      continue;
+    const Eigen::Vector2d p = ball.r.head<2>() - a;
+    const double along = std::clamp(p.dot(d) / length, 0.0, length);
+    if ((p - along * d / length).norm() < 2 * R)
+      return true;
+  }
+  return false;
 }
 
 physics::CueStrike<double> aimedAt(const Eigen::Vector2d& from, const Eigen::Vector2d& at, double speed)
@@ -35,6 +61,39 @@ Eigen::Vector2d positionOf(const GamePlay& game, int id)
   return game.table().balls[static_cast<std::size_t>(game.table().indexOf(id))].r.head<2>();
 }
 
+}  // namespace
+
+int openShots(const GamePlay& game)
+{
+  if (game.state().over)
+    return 0;
+  const auto& table = game.engine().table();
+  const double R = game.engine().params().ball_radius;
+  const bool in_hand = game.state().ball_in_hand != BallInHand::None;
+  const Eigen::Vector2d cue = game.table().balls[static_cast<std::size_t>(game.table().indexOf(0))].r.head<2>();
+  int open = 0;
+  for (const int ball : game.legalFirst())
+  {
+    const Eigen::Vector2d object = game.table().balls[static_cast<std::size_t>(game.table().indexOf(ball))].r.head<2>();
+    for (const auto& pocket : table.pockets())
+    {
+      const Eigen::Vector2d to_pocket = (pocket.centre - object).normalized();
+      const Eigen::Vector2d ghost = object - 2 * R * to_pocket;
+      if (blocked(game.table(), object, pocket.centre, R, {0, ball}))
+        continue;
+      if (!in_hand &&
+          ((ghost - cue).norm() < 1e-9 ||
+           std::acos(std::clamp((ghost - cue).normalized().dot(to_pocket), -1.0, 1.0)) > PottingPlanner::kMaxCut ||
+           blocked(game.table(), cue, ghost, R, {0, ball})))
+        continue;
+      ++open;
+    }
+  }
+  return open;
+}
+
+namespace
+{
 Choice breakChoice(const GamePlay& game)
 {
   Choice c;
@@ -92,7 +151,7 @@ Choice PottingPlanner::choose(const GamePlay& game) const
           c.strike = aimedAt(cue, ghost, speed);
           GamePlay play = trial;
           const Turn t = play.shoot(c.strike);
-          const double s = score(t.ruling, shooter, speed);
+          const double s = score(t.ruling, shooter, speed, openShots(play));
           if (s > best_score)
           {
             best_score = s;

@@ -482,3 +482,25 @@ TEST(SelfPlay, TheShotCapEndsAGameWithoutAWinnerAndSaysSo)
   EXPECT_TRUE(game.state().over);
   EXPECT_THROW(game.shoot(soft), std::invalid_argument);
 }
+
+TEST(SelfPlay, OpenShotsCountClearPotsAndNotBlockedOnes)
+{
+  // 9-ball after the break, the 1 alone with the cue ball straight behind it on the line to the
+  // foot-right corner: that pot is open. A ball on the line to the pocket closes it, and so does
+  // one between the cue ball and the ghost ball.
+  const Eigen::Vector2d pocket = engine().table().pockets()[static_cast<std::size_t>(pocketNear({1, 0.5}))].centre;
+  const Eigen::Vector2d object(0.5, 0.2), along = (pocket - object).normalized();
+  const auto openWith = [&](std::vector<Ball<double>> extra) {
+    TableState<double> s;
+    s.balls = {ball(0, object.x() - 0.4 * along.x(), object.y() - 0.4 * along.y()), ball(1, object.x(), object.y())};
+    s.balls.insert(s.balls.end(), extra.begin(), extra.end());
+    GamePlay game(engine(), "nine_ball");
+    EXPECT_EQ(game.setPosition(s, false), "");
+    return openShots(game);
+  };
+  const int open = openWith({});
+  EXPECT_GE(open, 1);
+  const Eigen::Vector2d on_line = object + 0.2 * along, in_front = object - 0.2 * along;
+  EXPECT_EQ(openWith({ball(5, on_line.x(), on_line.y())}), open - 1);
+  EXPECT_LT(openWith({ball(5, in_front.x(), in_front.y())}), open);
+}

@@ -54,6 +54,9 @@ public:
   /// The object balls the player to shoot may hit first.
   std::vector<int> legalFirst() const;
 
+  /// Sets up a position to play from: these balls at rest (the cue ball among them), the break
+  /// already played or not, the cue ball where it lies. Empty, or why not (and nothing changes).
+  std::string setPosition(const physics::TableState<double>& balls, bool break_shot);
   /// Moves the cue ball in hand to p; empty, or why not (and nothing changes).
   std::string placeCueBall(const Eigen::Vector2d& p);
   /// Calls a ball and pocket for the next shot (-1 for none); empty, or why not.

@@ -23,12 +23,19 @@ struct Choice
   physics::CueStrike<double> strike;
 };
 
+/// The open shots of the player to shoot: pairs of a ball it may hit first and a pocket whose
+/// ghost-ball shot is cut at most PottingPlanner::kMaxCut with clear paths for the cue ball and the
+/// object ball (with the cue ball in hand, a clear path for the object ball is enough).
+int openShots(const GamePlay& game);
+
 /// Chooses a shot by trying them. On a break: the cue ball on the head spot, 8 m/s at the apex.
 /// Otherwise, for every ball it may hit first and every pocket, the ghost-ball aim (cut at most
 /// kMaxCut) at two speeds; with the cue ball in hand it is placed straight behind the ghost ball.
 /// Each candidate is played on a copy of the game without noise, and the best ruling wins: a won
-/// game, then a legal pot (the shooter continues), then a shot without a foul; among equals the
-/// slower. With no candidate it hits its first legal ball full at 2 m/s.
+/// game, then a legal pot (the shooter continues), then a shot without a foul. A pot that leaves
+/// the shooter open shots (position) and a miss that leaves the opponent none (safety) count
+/// kPositionWeight for each, up to kOpenShotsCounted; among equals the slower. With no candidate
+/// it hits its first legal ball full at 2 m/s.
 class PottingPlanner
 {
 public:
@@ -36,6 +43,8 @@ public:
 
   static constexpr double kMaxCut = 70 * 3.14159265358979323846 / 180;  ///< [rad]
   static constexpr double kBreakSpeed = 8.0;                            ///< [m/s]
+  static constexpr double kPositionWeight = 5;                          ///< per open shot, against 100 for a pot
+  static constexpr int kOpenShotsCounted = 10;                          ///< more open shots than this add nothing
 };
 
 /// One game as played: the table before each shot (the cue ball placed), the turn, and how it
