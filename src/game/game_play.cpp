@@ -19,7 +19,7 @@ physics::RackOptions gameRack(unsigned seed)
 
 GamePlay::GamePlay(const physics::Engine<double>& engine, const std::string& rules,
                    const std::array<std::string, 2>& players, const physics::RackOptions& rack_options, int breaker)
-  : engine_(engine), rules_(makeRules(rules)), rack_(rack_options)
+  : engine_(&engine), rules_(makeRules(rules)), rack_(rack_options)
 {
   if (breaker != 0 && breaker != 1)
     throw std::invalid_argument("breaker must be 0 or 1, got " + std::to_string(breaker));
@@ -34,7 +34,7 @@ GamePlay::GamePlay(const physics::Engine<double>& engine, const std::string& rul
 
 void GamePlay::rack()
 {
-  table_ = physics::rackLayout<double>(rules_->rack(), engine_.table(), engine_.params().ball_radius, rack_);
+  table_ = physics::rackLayout<double>(rules_->rack(), engine_->table(), engine_->params().ball_radius, rack_);
   ++rack_.seed;
   state_.break_shot = true;
   state_.ball_in_hand = BallInHand::BehindHeadString;
@@ -49,7 +49,7 @@ std::string GamePlay::setPosition(const physics::TableState<double>& balls, bool
 {
   if (balls.indexOf(0) < 0)
     return "a position needs the cue ball (id 0)";
-  if (const std::string why = engine_.whyInvalid(balls); !why.empty())
+  if (const std::string why = engine_->whyInvalid(balls); !why.empty())
     return why;
   if (balls.anyMoving())
     return "a position is played from rest: every ball must be at rest";
@@ -64,11 +64,11 @@ std::string GamePlay::placeCueBall(const Eigen::Vector2d& p)
 {
   if (state_.over)
     return "the game is over";
-  const double R = engine_.params().ball_radius;
+  const double R = engine_->params().ball_radius;
   const int cue = table_.indexOf(0);
   physics::TableState<double> without = table_;
   without.balls.erase(without.balls.begin() + cue);
-  const std::string why = whyNotInHand(engine_.table(), R, without, p, state_.ball_in_hand);
+  const std::string why = whyNotInHand(engine_->table(), R, without, p, state_.ball_in_hand);
   if (!why.empty())
     return why;
   auto& ball = table_.balls[static_cast<std::size_t>(cue)];
@@ -82,9 +82,9 @@ std::string GamePlay::call(int ball, int pocket)
   const std::vector<int> on_table = objectBallsOnTable(table_);
   if (ball != -1 && std::find(on_table.begin(), on_table.end(), ball) == on_table.end())
     return "called ball " + std::to_string(ball) + " is not on the table";
-  if (pocket < -1 || pocket >= static_cast<int>(engine_.table().pockets().size()))
+  if (pocket < -1 || pocket >= static_cast<int>(engine_->table().pockets().size()))
     return "called pocket " + std::to_string(pocket) + " must be in [0, " +
-           std::to_string(engine_.table().pockets().size() - 1) + "], or -1 for none";
+           std::to_string(engine_->table().pockets().size() - 1) + "], or -1 for none";
   state_.called_ball = ball;
   state_.called_pocket = pocket;
   return "";
@@ -93,25 +93,38 @@ std::string GamePlay::call(int ball, int pocket)
 Turn GamePlay::shoot(const physics::CueStrike<double>& strike, bool push_out)
 {
   if (state_.over)
-    throw std::invalid_argument("the game is over: " +
-                                std::string(state_.winner >= 0
-                                                ? state_.players[static_cast<std::size_t>(state_.winner)] + " won"
-                                                : "no winner"));
-  if (const std::string why = engine_.whyNotStrikable(table_, 0, strike); !why.empty())
+    throw std::invalid_argument(whyOver());
+  if (const std::string why = engine_->whyNotStrikable(table_, 0, strike); !why.empty())
     throw std::invalid_argument(why);
+  physics::TableState<double> shot = table_;
+  engine_->strike(shot, 0, strike);
+  std::vector<physics::Event<double>> events = engine_->simulateToRest(shot).events;
+  Turn turn = judge(strike, push_out, std::move(events));
+  finish(turn, shot);
+  return turn;
+}
+
+std::string GamePlay::whyOver() const
+{
+  if (!state_.over)
+    return "";
+  return "the game is over: " + std::string(state_.winner >= 0
+                                                ? state_.players[static_cast<std::size_t>(state_.winner)] + " won"
+                                                : "stopped without a winner");
+}
+
+Turn GamePlay::judge(const physics::CueStrike<double>& strike, bool push_out,
+                     std::vector<physics::Event<double>> events) const
+{
   Turn turn;
   turn.player = state_.turn;
   turn.strike = strike;
   turn.push_out = push_out;
   turn.called_ball = state_.called_ball;
   turn.called_pocket = state_.called_pocket;
-  const std::vector<int> on_table = objectBallsOnTable(table_);
-  physics::TableState<double> shot = table_;
-  engine_.strike(shot, 0, strike);
-  turn.events = engine_.simulateToRest(shot).events;
+  turn.events = std::move(events);
   turn.facts = readShot(turn.events);
-  turn.ruling = judgeShot(*rules_, state_, on_table, Shot{turn.facts, push_out});
-  table_ = shot;
+  turn.ruling = judgeShot(*rules_, state_, objectBallsOnTable(table_), Shot{turn.facts, push_out});
   if (max_shots_ > 0 && state_.shots + 1 >= max_shots_ && !turn.ruling.game_over)
   {
     turn.ruling.game_over = true;
@@ -119,37 +132,42 @@ Turn GamePlay::shoot(const physics::CueStrike<double>& strike, bool push_out)
     turn.ruling.reason +=
         "; the game is stopped at the cap of " + std::to_string(max_shots_) + " shots, without a winner";
   }
-  state_ = afterRuling(state_, turn.ruling);
+  turn.after = afterRuling(state_, turn.ruling);
+  return turn;
+}
+
+void GamePlay::finish(const Turn& turn, const physics::TableState<double>& at_rest)
+{
+  table_ = at_rest;
+  state_ = turn.after;
   if (turn.ruling.rerack)
     rack();
   else if (!state_.over)
   {
-    spotBalls(engine_.table(), engine_.params().ball_radius, turn.ruling.respot, table_);
+    spotBalls(engine_->table(), engine_->params().ball_radius, turn.ruling.respot, table_);
     if (!table_.balls[static_cast<std::size_t>(table_.indexOf(0))].inPlay())
       returnCueBall();
   }
-  turn.after = state_;
-  return turn;
 }
 
 void GamePlay::returnCueBall()
 {
-  const double R = engine_.params().ball_radius;
+  const double R = engine_->params().ball_radius;
   auto& cue = table_.balls[static_cast<std::size_t>(table_.indexOf(0))];
   cue.motion = physics::Motion::Stationary;
   cue.pocket = -1;
   cue.v.setZero();
   cue.w.setZero();
   cue.time = table_.time;
-  const Eigen::Vector2d head = engine_.table().headSpot();
+  const Eigen::Vector2d head = engine_->table().headSpot();
   physics::TableState<double> others = table_;
   others.balls.erase(others.balls.begin() + others.indexOf(0));
   // Behind the head string, stepping back from the head spot until it stands.
-  for (double back = R; back < engine_.table().clothLength() / 4; back += R)
+  for (double back = R; back < engine_->table().clothLength() / 4; back += R)
     for (const double side : {0.0, 2.0 * R, -2.0 * R, 4.0 * R, -4.0 * R})
     {
       const Eigen::Vector2d p(head.x() - back, head.y() + side);
-      if (whyNotInHand(engine_.table(), R, others, p, BallInHand::BehindHeadString).empty())
+      if (whyNotInHand(engine_->table(), R, others, p, BallInHand::BehindHeadString).empty())
       {
         cue.r = physics::Vec3<double>(p.x(), p.y(), R);
         return;

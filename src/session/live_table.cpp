@@ -102,6 +102,8 @@ void LiveTable::advanceTo(Stamp now, std::vector<StampedEvent>* events)
     if (events)
       for (const auto& e : happened)
         events->push_back({e, clock_.stampOf(e.time, now)});
+    if (pending_turn_ && live_.atRest())
+      finishGameShot(now);
   }
   applyPendingPhysics();
   if (!live_.atRest() || !balls_at_rest_)
@@ -138,6 +140,8 @@ void LiveTable::applyPendingPhysics()
   engine_ = std::move(engine);
   live_ = physics::Simulation<double>(engine_, resting);
   last_rack_ = onCloth(last_rack_, engine_->params().ball_radius);
+  if (game_)
+    game_->setEngine(*engine_);
   ++layout_version_;  // the ball radius or cushion height may have changed
 }
 
@@ -212,7 +216,9 @@ StrikeOutcome LiveTable::strike(const Shot& shot, Stamp now)
   StrikeOutcome outcome;
   outcome.executed = shot;
   advanceTo(now);
-  std::string why = live_.whyNotStrikable(shot.ball_id, shot.strike);
+  std::string why = game_ ? whyNotGameShot(shot) : "";
+  if (why.empty())
+    why = live_.whyNotStrikable(shot.ball_id, shot.strike);
   if (why.empty() && !live_.atRest() && !options_.allow_strike_while_moving)
     why = "balls are still moving (set ~allow_strike_while_moving to strike anyway)";
   if (!why.empty())
@@ -246,6 +252,14 @@ StrikeOutcome LiveTable::strike(const Shot& shot, Stamp now)
   outcome.time_to_rest = prediction.time_to_rest;
   outcome.num_events = prediction.events.size();
   outcome.message = "struck ball " + std::to_string(shot.ball_id) + " at " + seconds(now) + "; " + prediction.message;
+  if (game_)
+  {
+    pending_turn_ = game_->judge(outcome.executed.strike, push_out_called_, prediction.events);
+    outcome.refereed = true;
+    outcome.ruling = pending_turn_->ruling;
+    outcome.message += "; " + std::string(outcome.ruling.foul ? "foul: " : "") + outcome.ruling.reason;
+    ++game_version_;
+  }
   advanceTo(now);
   return outcome;
 }

@@ -64,6 +64,8 @@ std::string LiveTable::whyNotRack(const RackRequest& request, physics::TableStat
 
 Outcome LiveTable::rack(const RackRequest& request, Stamp now)
 {
+  if (const std::string why = whyNotFreeEdit(); !why.empty())
+    return Outcome::refused(why);
   advanceTo(now);
   physics::TableState<double> layout;
   const std::string why = whyNotRack(request, layout);
@@ -76,6 +78,8 @@ Outcome LiveTable::rack(const RackRequest& request, Stamp now)
 
 Outcome LiveTable::reset(Stamp now)
 {
+  if (const std::string why = whyNotFreeEdit(); !why.empty())
+    return Outcome::refused(why);
   advanceTo(now);
   const std::string why = engine_->whyInvalid(last_rack_);
   if (!why.empty())
@@ -86,6 +90,8 @@ Outcome LiveTable::reset(Stamp now)
 
 Outcome LiveTable::setState(const std::vector<BallInput>& balls, Stamp now)
 {
+  if (const std::string why = whyNotFreeEdit(); !why.empty())
+    return Outcome::refused(why);
   physics::TableState<double> state;
   std::string why = stateFromInputs(balls, table(), engine_->params().ball_radius, state);
   if (why.empty() && state.balls.empty())
@@ -106,6 +112,8 @@ Outcome LiveTable::setState(const std::vector<BallInput>& balls, Stamp now)
 
 Outcome LiveTable::placeBall(const BallInput& input, Stamp now)
 {
+  if (const std::string why = whyNotFreeEdit(); !why.empty())
+    return Outcome::refused(why);
   physics::Ball<double> ball;
   const std::string why = ballFromInput(input, "ball", table(), engine_->params().ball_radius, ball);
   if (!why.empty())
@@ -126,6 +134,8 @@ Outcome LiveTable::placeBall(const BallInput& input, Stamp now)
 
 Outcome LiveTable::removeBall(int id, Stamp now)
 {
+  if (const std::string why = whyNotFreeEdit(); !why.empty())
+    return Outcome::refused(why);
   advanceTo(now);
   if (live_.state().indexOf(id) < 0)
   {

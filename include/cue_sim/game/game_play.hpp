@@ -65,9 +65,23 @@ public:
   /// (and changes nothing) if the game is over or the strike cannot be played. At the shot cap
   /// a game not yet over ends without a winner, and the ruling says so.
   Turn shoot(const physics::CueStrike<double>& strike, bool push_out = false);
+
+  // A shot run elsewhere (the node's live table runs it in real time): judge it from its
+  // events when it is struck, then finish it when its balls rest. shoot() is the two at once.
+  /// The turn `strike` makes with these events (Engine::simulateToRest's, from table()): the
+  /// ruling, the shot cap's included, and the state after it. Changes nothing.
+  Turn judge(const physics::CueStrike<double>& strike, bool push_out, std::vector<physics::Event<double>> events) const;
+  /// Takes the turn judged from table(): the balls as the shot left them at rest, then made
+  /// ready for the next shot (balls spotted, a new rack, the cue ball back behind the head
+  /// string after a scratch).
+  void finish(const Turn& turn, const physics::TableState<double>& at_rest);
+  /// Empty while the game goes on; once over, who won (for a refusal).
+  std::string whyOver() const;
+  /// The engine to play on from now on (new physics between shots); it must fit the balls.
+  void setEngine(const physics::Engine<double>& engine) { engine_ = &engine; }
   /// Shots a game may take before it is stopped (0: no cap).
   void setShotCap(int max_shots) { max_shots_ = max_shots; }
-  const physics::Engine<double>& engine() const { return engine_; }
+  const physics::Engine<double>& engine() const { return *engine_; }
 
 private:
   void rack();
@@ -75,7 +89,7 @@ private:
   /// place behind it along the head string.
   void returnCueBall();
 
-  const physics::Engine<double>& engine_;
+  const physics::Engine<double>* engine_;
   std::shared_ptr<const Rules> rules_;
   physics::RackOptions rack_;
   int max_shots_ = 0;

@@ -5,12 +5,14 @@
 // lock, and runs heavy predictions outside it on a copy (predictionStart, then predictShot).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "cue_sim/game/game_play.hpp"
 #include "cue_sim/physics/collision_models.hpp"
 #include "cue_sim/physics/cue_aim.hpp"
 #include "cue_sim/physics/engine.hpp"
@@ -62,6 +64,27 @@ struct StrikeOutcome : Outcome
   physics::Vec3<double> ball_velocity = physics::Vec3<double>::Zero();  ///< right after the strike
   physics::Vec3<double> ball_angular_velocity = physics::Vec3<double>::Zero();
   physics::CueStick cue;  ///< the cue as it struck, its tip 5 mm short of the ball (to draw it)
+  bool refereed = false;  ///< a game is on: `ruling` is the referee's on this shot
+  game::Ruling ruling;    ///< read off the shot's events at the strike; it takes effect when the balls rest
+};
+
+/// A game to start on the live table.
+struct GameRequest
+{
+  std::string rules;  ///< game::rulesNames()
+  std::array<std::string, 2> players{"player 1", "player 2"};
+  int breaker = 0;         ///< who shoots first: 0 or 1
+  std::uint32_t seed = 0;  ///< of the rack's jitter (game::gameRack)
+  std::vector<BallInput>
+      balls;  ///< empty: rack and break; else the position to play on from, at rest, the break played
+};
+
+/// What the shooter declares before a game shot.
+struct GameCall
+{
+  int ball = -1;          ///< the object ball called, -1 for none
+  std::string pocket;     ///< the pocket called, by name (TableModel::pockets()), empty for none
+  bool push_out = false;  ///< 9-ball: the shot is a push-out (only the shot after a legal break)
 };
 
 struct RackRequest
@@ -139,7 +162,37 @@ public:
   Outcome placeBall(const BallInput& ball, Stamp now);
   Outcome removeBall(int id, Stamp now);
 
+  // Games. While a game is on, strikes are refereed: only the cue ball, from rest; the ruling
+  // is read off the shot's events at the strike and applied when the balls rest (balls
+  // spotted, a new rack, the cue ball in hand). The table is edited only through the game
+  // (~rack, ~reset, ~set_state, ~place_ball and ~remove_ball are refused until endGame).
+  Outcome startGame(const GameRequest& request, Stamp now);
+  /// Back to free play; the balls stay where they are.
+  Outcome endGame(Stamp now);
+  /// Moves the cue ball in hand to p, at rest.
+  Outcome placeCueBall(const Eigen::Vector2d& p, Stamp now);
+  /// Declares the next shot's call; it holds until that shot.
+  Outcome callShot(const GameCall& call, Stamp now);
+  /// The game on the table, or null in free play.
+  const game::GamePlay* game() const { return game_ ? &*game_ : nullptr; }
+  /// A game shot was struck and its balls are still moving: its ruling is `pendingTurn()`'s.
+  const std::optional<game::Turn>& pendingTurn() const { return pending_turn_; }
+  /// The last game shot whose balls came to rest.
+  const std::optional<game::Turn>& lastTurn() const { return last_turn_; }
+  /// Whether the next game shot is declared a push-out.
+  bool pushOutCalled() const { return push_out_called_; }
+  /// Changes whenever the game's state does (a start, a call, a cue ball placed, a strike, a
+  /// shot come to rest, the end): what is published of it may have to go out again.
+  long gameVersion() const { return game_version_; }
+
 private:
+  /// Empty if the live table may be edited outside a game, else why not.
+  std::string whyNotFreeEdit() const;
+  /// Why a game shot cannot be struck (empty if it can).
+  std::string whyNotGameShot(const Shot& shot) const;
+  /// A game shot's balls have come to rest: take the turn and put the game's table on the live
+  /// table.
+  void finishGameShot(Stamp now);
   std::string whyNotRack(const RackRequest& request, physics::TableState<double>& rack) const;
   void startFrom(physics::TableState<double> state, Stamp now);
   void restartAtRest(Stamp now);
@@ -157,6 +210,10 @@ private:
   bool paused_ = false;
   Stamp last_stamp_ = 0;
   long layout_version_ = 0;
+  std::optional<game::GamePlay> game_;
+  std::optional<game::Turn> pending_turn_, last_turn_;
+  bool push_out_called_ = false;
+  long game_version_ = 0;
 };
 
 /// Every ball referred to time 0: a table at rest, as at a strike from rest (the live table's

@@ -1,0 +1,317 @@
+// A game on the live table, without ROS: refereed strikes whose ruling is the core game's
+// (game::GamePlay::shoot on the same position), taken when the balls rest; ball in hand and
+// calls checked by the rules; free edits refused while a game is on. Each refusal names the
+// field and changes nothing.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "cue_sim/session/live_table.hpp"
+#include "cue_sim/table_description/table_catalog.hpp"
+#include "cue_sim/table_description/urdf_table_loader.hpp"
+
+namespace cue_sim
+{
+namespace session
+{
+namespace
+{
+using physics::Engine;
+
+constexpr Stamp kSecond = 1000000000;
+constexpr Stamp kStart = 1000 * kSecond;
+
+std::shared_ptr<const Engine<double>> engineOn(const std::string& table)
+{
+  return std::make_shared<const Engine<double>>(
+      std::make_shared<const physics::TableModel>(tableFromUrdfFile(tableUrdfPath(table))),
+      physics::PhysicsParams<double>());
+}
+
+Shot cueShot(double speed, double phi)
+{
+  Shot s;
+  s.ball_id = 0;
+  s.strike.speed = speed;
+  s.strike.phi = phi;
+  return s;
+}
+
+BallInput ballAt(int id, double x, double y)
+{
+  BallInput b;
+  b.id = id;
+  b.position = physics::Vec3<double>(x, y, 0);
+  return b;
+}
+
+const physics::Pocket& pocketNamed(const physics::TableModel& table, const std::string& name)
+{
+  for (const auto& p : table.pockets())
+    if (p.name == name)
+      return p;
+  throw std::runtime_error("no pocket " + name);
+}
+
+class LiveGameTest : public ::testing::Test
+{
+protected:
+  LiveGameTest() : table_(engineOn("7ft"), LiveTableOptions(), "eight", kStart) {}
+
+  /// Advances until the balls rest (a shot of a few seconds at most), returning when.
+  Stamp runToRest(Stamp from)
+  {
+    Stamp t = from;
+    for (int i = 0; i < 600 && (table_.pendingTurn() || !table_.atRest()); ++i)
+      table_.advanceTo(t += kSecond / 10);
+    EXPECT_FALSE(table_.pendingTurn());
+    return t;
+  }
+
+  /// A game from a position: the cue ball at `cue`, ball 1 elsewhere, the break played.
+  void startFromPosition(const std::string& rules, const Eigen::Vector2d& cue, const Eigen::Vector2d& one)
+  {
+    GameRequest request;
+    request.rules = rules;
+    request.players = {"ann", "bob"};
+    request.balls = {ballAt(0, cue.x(), cue.y()), ballAt(1, one.x(), one.y())};
+    if (rules == "nine_ball")
+      request.balls.push_back(ballAt(9, one.x(), one.y() + 0.2));
+    const Outcome started = table_.startGame(request, kStart);
+    ASSERT_TRUE(started.success) << started.message;
+  }
+
+  LiveTable table_;
+};
+
+TEST_F(LiveGameTest, StartingAGameRacksForTheBreakAndRefusesFreeEdits)
+{
+  GameRequest request;
+  request.rules = "eight_ball";
+  request.players = {"ann", "bob"};
+  request.breaker = 1;
+  const Outcome started = table_.startGame(request, kStart);
+  ASSERT_TRUE(started.success) << started.message;
+  ASSERT_NE(table_.game(), nullptr);
+  const game::GameState& state = table_.game()->state();
+  EXPECT_EQ(state.turn, 1);
+  EXPECT_TRUE(state.break_shot);
+  EXPECT_EQ(state.ball_in_hand, game::BallInHand::BehindHeadString);
+  EXPECT_EQ(table_.balls().size(), 16u);
+
+  const long version = table_.layoutVersion();
+  RackRequest rack;
+  rack.layout = "nine";
+  for (const Outcome& refused :
+       {table_.rack(rack, kStart), table_.reset(kStart), table_.setState({ballAt(0, 0, 0)}, kStart),
+        table_.placeBall(ballAt(0, -0.5, 0), kStart), table_.removeBall(3, kStart)})
+  {
+    EXPECT_FALSE(refused.success);
+    EXPECT_NE(refused.message.find("a game of eight_ball is on"), std::string::npos) << refused.message;
+  }
+  const StrikeOutcome object_ball = table_.strike(
+      [] {
+        Shot s = cueShot(2, 0);
+        s.ball_id = 5;
+        return s;
+      }(),
+      kStart);
+  EXPECT_FALSE(object_ball.success);
+  EXPECT_NE(object_ball.message.find("ball_id must be 0"), std::string::npos) << object_ball.message;
+  EXPECT_EQ(table_.layoutVersion(), version);
+  EXPECT_EQ(table_.balls().size(), 16u);
+}
+
+TEST_F(LiveGameTest, BadGameRequestsAreRefusedNamingTheField)
+{
+  GameRequest request;
+  request.rules = "snooker";
+  Outcome r = table_.startGame(request, kStart);
+  EXPECT_FALSE(r.success);
+  EXPECT_NE(r.message.find("eight_ball, nine_ball"), std::string::npos) << r.message;
+  request.rules = "nine_ball";
+  request.breaker = 2;
+  r = table_.startGame(request, kStart);
+  EXPECT_NE(r.message.find("first_player must be 0 or 1"), std::string::npos) << r.message;
+  request.breaker = 0;
+  request.players[1] = "";
+  r = table_.startGame(request, kStart);
+  EXPECT_NE(r.message.find("players[1]"), std::string::npos) << r.message;
+  request.players[1] = "bob";
+  request.balls = {ballAt(1, 0.3, 0.1)};
+  r = table_.startGame(request, kStart);
+  EXPECT_NE(r.message.find("cue ball"), std::string::npos) << r.message;
+  EXPECT_EQ(table_.game(), nullptr);
+  EXPECT_FALSE(table_.callShot(GameCall{}, kStart).success);
+  EXPECT_FALSE(table_.placeCueBall(Eigen::Vector2d(-0.5, 0), kStart).success);
+  EXPECT_FALSE(table_.endGame(kStart).success);
+
+  LiveTable carom(engineOn("carom"), LiveTableOptions(), "empty", kStart);
+  request.balls.clear();
+  r = carom.startGame(request, kStart);
+  EXPECT_FALSE(r.success);
+  EXPECT_NE(r.message.find("pockets"), std::string::npos) << r.message;
+}
+
+// The live table's ruling and the table it leaves are the core game's on the same position,
+// bit for bit: the node referees exactly as `simulate` and self-play do.
+TEST_F(LiveGameTest, ABreakIsRuledAsTheCoreGameRulesItAndTakenAtRest)
+{
+  GameRequest request;
+  request.rules = "eight_ball";
+  request.seed = 3;
+  ASSERT_TRUE(table_.startGame(request, kStart).success);
+  game::GamePlay core = *table_.game();
+
+  const Stamp struck_at = kStart + kSecond;
+  const StrikeOutcome outcome = table_.strike(cueShot(8, 0.002), struck_at);
+  ASSERT_TRUE(outcome.success) << outcome.message;
+  ASSERT_TRUE(outcome.refereed);
+  ASSERT_TRUE(table_.pendingTurn());
+  const game::Turn expected = core.shoot(cueShot(8, 0.002).strike);
+  EXPECT_EQ(outcome.ruling.reason, expected.ruling.reason);
+  EXPECT_EQ(outcome.ruling.foul, expected.ruling.foul);
+  EXPECT_EQ(outcome.ruling.next_player, expected.ruling.next_player);
+  EXPECT_NE(outcome.message.find(expected.ruling.reason), std::string::npos);
+
+  // While the balls roll the game waits: no call, no placement, no strike.
+  table_.advanceTo(struck_at + kSecond / 10);
+  ASSERT_FALSE(table_.atRest());
+  EXPECT_FALSE(table_.callShot(GameCall{}, struck_at + kSecond / 10).success);
+  EXPECT_FALSE(table_.placeCueBall(Eigen::Vector2d(-0.6, 0), struck_at + kSecond / 10).success);
+  const StrikeOutcome moving = table_.strike(cueShot(1, 0), struck_at + kSecond / 10);
+  EXPECT_FALSE(moving.success);
+  EXPECT_NE(moving.message.find("still moving"), std::string::npos) << moving.message;
+  EXPECT_EQ(table_.game()->state().shots, 0);
+
+  runToRest(struck_at);
+  ASSERT_TRUE(table_.lastTurn());
+  EXPECT_EQ(table_.lastTurn()->ruling.reason, expected.ruling.reason);
+  EXPECT_EQ(table_.game()->state().shots, 1);
+  EXPECT_EQ(table_.game()->state().turn, core.state().turn);
+  EXPECT_EQ(table_.game()->state().ball_in_hand, core.state().ball_in_hand);
+  const auto& live = table_.game()->table().balls;
+  const auto& reference = core.table().balls;
+  ASSERT_EQ(live.size(), reference.size());
+  for (std::size_t i = 0; i < live.size(); ++i)
+  {
+    EXPECT_EQ(live[i].id, reference[i].id);
+    EXPECT_EQ(live[i].r, reference[i].r) << "ball " << live[i].id;
+    EXPECT_EQ(live[i].pocket, reference[i].pocket) << "ball " << live[i].id;
+  }
+  // What the live table shows is the game's table.
+  for (const auto& b : table_.balls())
+    if (b.inPlay())
+      EXPECT_EQ(b.r, live[static_cast<std::size_t>(table_.game()->table().indexOf(b.id))].r);
+}
+
+TEST_F(LiveGameTest, AScratchGivesTheOpponentBallInHandWhichTheRulesPlace)
+{
+  const physics::TableModel& model = table_.table();
+  const Eigen::Vector2d pocket = pocketNamed(model, "pocket_foot_ypos").centre;
+  const Eigen::Vector2d cue = model.clothCentre() + Eigen::Vector2d(0.4, 0.1);
+  startFromPosition("eight_ball", cue, model.clothCentre() + Eigen::Vector2d(-0.5, -0.3));
+  const double phi = std::atan2(pocket.y() - cue.y(), pocket.x() - cue.x());
+  const StrikeOutcome outcome = table_.strike(cueShot(1.5, phi), kStart + kSecond);
+  ASSERT_TRUE(outcome.success) << outcome.message;
+  EXPECT_TRUE(outcome.ruling.foul);
+  EXPECT_EQ(outcome.ruling.next_player, 1);
+  EXPECT_EQ(outcome.ruling.ball_in_hand, game::BallInHand::Anywhere);
+  runToRest(kStart + kSecond);
+
+  // The cue ball is back on the cloth, in hand for bob, anywhere.
+  const game::GameState& state = table_.game()->state();
+  EXPECT_EQ(state.turn, 1);
+  EXPECT_EQ(state.consecutive_fouls[0], 1);
+  EXPECT_EQ(state.ball_in_hand, game::BallInHand::Anywhere);
+  ASSERT_GE(table_.game()->table().indexOf(0), 0);
+  const long version = table_.gameVersion();
+  const Eigen::Vector2d one = model.clothCentre() + Eigen::Vector2d(-0.5, -0.3);
+  const Outcome on_ball = table_.placeCueBall(one + Eigen::Vector2d(0.02, 0), kStart + 20 * kSecond);
+  EXPECT_FALSE(on_ball.success);
+  EXPECT_NE(on_ball.message.find("overlap"), std::string::npos) << on_ball.message;
+  const Outcome off_table = table_.placeCueBall(Eigen::Vector2d(5, 0), kStart + 20 * kSecond);
+  EXPECT_FALSE(off_table.success);
+  EXPECT_EQ(table_.gameVersion(), version);
+
+  const Eigen::Vector2d foot = model.clothCentre() + Eigen::Vector2d(0.6, -0.2);  // past the head string: anywhere
+  const Outcome placed = table_.placeCueBall(foot, kStart + 20 * kSecond);
+  ASSERT_TRUE(placed.success) << placed.message;
+  bool found = false;
+  for (const auto& b : table_.balls())
+    if (b.id == 0)
+    {
+      found = true;
+      EXPECT_DOUBLE_EQ(b.r.x(), foot.x());
+      EXPECT_DOUBLE_EQ(b.r.y(), foot.y());
+      EXPECT_TRUE(b.inPlay());
+    }
+  EXPECT_TRUE(found);
+  EXPECT_GT(table_.gameVersion(), version);
+}
+
+TEST_F(LiveGameTest, CallsNameARealPocketAndAPushOutOnlyAfterTheBreak)
+{
+  const physics::TableModel& model = table_.table();
+  startFromPosition("nine_ball", model.clothCentre() + Eigen::Vector2d(-0.5, 0),
+                    model.clothCentre() + Eigen::Vector2d(0.3, 0));
+  GameCall call;
+  call.ball = 1;
+  call.pocket = "corner";
+  Outcome r = table_.callShot(call, kStart);
+  EXPECT_FALSE(r.success);
+  EXPECT_NE(r.message.find("pocket_foot_ypos"), std::string::npos) << r.message;
+  call.pocket = "pocket_foot_ypos";
+  call.ball = 4;
+  r = table_.callShot(call, kStart);
+  EXPECT_FALSE(r.success);
+  EXPECT_NE(r.message.find("not on the table"), std::string::npos) << r.message;
+  call.ball = 1;
+  call.push_out = true;
+  r = table_.callShot(call, kStart);
+  EXPECT_FALSE(r.success);
+  EXPECT_NE(r.message.find("2.4"), std::string::npos) << r.message;
+  EXPECT_EQ(table_.game()->state().called_ball, -1);
+  call.push_out = false;
+  r = table_.callShot(call, kStart);
+  ASSERT_TRUE(r.success) << r.message;
+  EXPECT_EQ(table_.game()->state().called_ball, 1);
+  EXPECT_EQ(model.pockets()[static_cast<std::size_t>(table_.game()->state().called_pocket)].name, "pocket_foot_ypos");
+}
+
+TEST_F(LiveGameTest, AWonGameTakesNoMoreShotsAndEndingItFreesTheTable)
+{
+  const physics::TableModel& model = table_.table();
+  // 9-ball with only the 9 left, straight in: potting it wins.
+  const Eigen::Vector2d pocket = pocketNamed(model, "pocket_foot_ypos").centre;
+  const Eigen::Vector2d along_bisector(-M_SQRT1_2, -M_SQRT1_2);
+  const Eigen::Vector2d one = pocket + along_bisector * 0.3;
+  const Eigen::Vector2d cue = pocket + along_bisector * 0.6;
+  GameRequest request;
+  request.rules = "nine_ball";
+  request.balls = {ballAt(0, cue.x(), cue.y()), ballAt(9, one.x(), one.y())};
+  ASSERT_TRUE(table_.startGame(request, kStart).success);
+  const double phi = std::atan2(pocket.y() - cue.y(), pocket.x() - cue.x());
+  const StrikeOutcome outcome = table_.strike(cueShot(1.5, phi), kStart + kSecond);
+  ASSERT_TRUE(outcome.success) << outcome.message;
+  EXPECT_FALSE(outcome.ruling.foul) << outcome.ruling.reason;
+  EXPECT_TRUE(outcome.ruling.game_over) << outcome.ruling.reason;
+  EXPECT_EQ(outcome.ruling.winner, 0);
+  const Stamp rest = runToRest(kStart + kSecond);
+  EXPECT_TRUE(table_.game()->state().over);
+  const StrikeOutcome after = table_.strike(cueShot(1, 0), rest + kSecond);
+  EXPECT_FALSE(after.success);
+  EXPECT_NE(after.message.find("the game is over: player 1 won"), std::string::npos) << after.message;
+  const std::size_t balls = table_.balls().size();
+  ASSERT_TRUE(table_.endGame(rest + kSecond).success);
+  EXPECT_EQ(table_.game(), nullptr);
+  EXPECT_EQ(table_.balls().size(), balls);
+  EXPECT_TRUE(table_.strike(cueShot(1, 0), rest + 2 * kSecond).success);
+  RackRequest rack;
+  rack.layout = "nine";
+  EXPECT_TRUE(table_.rack(rack, rest + 10 * kSecond).success);
+}
+
+}  // namespace
+}  // namespace session
+}  // namespace cue_sim
