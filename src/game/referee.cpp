@@ -219,6 +219,19 @@ void spotBalls(const physics::TableModel& table, double ball_radius, const std::
   }
 }
 
+bool inHandRegion(const physics::TableModel& table, double ball_radius, BallInHand place, Eigen::Vector2d& low,
+                  Eigen::Vector2d& high)
+{
+  if (place == BallInHand::None)
+    return false;
+  const Eigen::Vector2d half(table.clothLength() / 2 - ball_radius, table.clothWidth() / 2 - ball_radius);
+  low = table.clothCentre() - half;
+  high = table.clothCentre() + half;
+  if (place == BallInHand::BehindHeadString)
+    high.x() = table.headStringX();
+  return true;
+}
+
 std::string whyNotInHand(const physics::TableModel& table, double ball_radius, const physics::TableState<double>& state,
                          const Eigen::Vector2d& p, BallInHand place)
 {

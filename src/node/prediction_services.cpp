@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <thread>
 
+#include "node/game_messages.hpp"
 #include "node/ros_conversions.hpp"
 #include "node/shot_markers.hpp"
 
@@ -99,6 +100,9 @@ bool PredictionServices::onPredict(Predict::Request& request, Predict::Response&
       session::predictShot(*start.engine, start.table, toSessionShot(request.shot), options, parameters_.table.limits);
   response.prediction =
       toPredictionMsg(prediction, start.engine->table(), request.sample_period, parameters_.table_frame);
+  game::Ruling ruling;
+  const bool refereed = session::predictedRuling(start, prediction, ruling);
+  response.prediction.ruling = toRulingMsg(ruling, refereed);
   if (prediction.success)
     preview_publisher_.publish(previewMarkers(*start.engine, start.table, request.shot.ball_id,
                                               prediction.executed.strike, parameters_.table_frame));
@@ -141,6 +145,9 @@ bool PredictionServices::onPredictBatch(PredictBatch::Request& request, PredictB
     succeeded += p.success;
     response.predictions.push_back(
         toPredictionMsg(p, start.engine->table(), request.sample_period, parameters_.table_frame));
+    game::Ruling ruling;
+    const bool refereed = session::predictedRuling(start, p, ruling);
+    response.predictions.back().ruling = toRulingMsg(ruling, refereed);
     p = session::ShotPrediction();  // the message holds it now
   }
   response.message = std::to_string(succeeded) + " of " + std::to_string(request.shots.size()) +

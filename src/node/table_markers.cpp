@@ -10,28 +10,6 @@ namespace
 {
 using visualization_msgs::Marker;
 
-std_msgs::ColorRGBA rgba(float r, float g, float b, float a = 1.0f)
-{
-  std_msgs::ColorRGBA c;
-  c.r = r;
-  c.g = g;
-  c.b = b;
-  c.a = a;
-  return c;
-}
-
-Marker base(const std::string& frame, const std::string& ns, int id, int type)
-{
-  Marker m;
-  m.header.frame_id = frame;
-  m.ns = ns;
-  m.id = id;
-  m.type = type;
-  m.action = Marker::ADD;
-  m.pose.orientation.w = 1.0;
-  return m;
-}
-
 /// A circle as a polygon, clipped to the box [low, high] (Sutherland-Hodgman; both convex).
 std::vector<Eigen::Vector2d> clippedCircle(const Eigen::Vector2d& centre, double radius, const Eigen::Vector2d& low,
                                            const Eigen::Vector2d& high)
@@ -70,6 +48,28 @@ void setYaw(Marker& m, double yaw)
 }
 }  // namespace
 
+std_msgs::ColorRGBA rgba(float r, float g, float b, float a)
+{
+  std_msgs::ColorRGBA c;
+  c.r = r;
+  c.g = g;
+  c.b = b;
+  c.a = a;
+  return c;
+}
+
+Marker markerIn(const std::string& frame, const std::string& ns, int id, int type)
+{
+  Marker m;
+  m.header.frame_id = frame;
+  m.ns = ns;
+  m.id = id;
+  m.type = type;
+  m.action = Marker::ADD;
+  m.pose.orientation.w = 1.0;
+  return m;
+}
+
 std_msgs::ColorRGBA poolColour(int id)
 {
   static const std::array<std::array<float, 3>, 8> colours = {{
@@ -96,7 +96,7 @@ visualization_msgs::MarkerArray tableMarkers(const physics::TableModel& table, c
   clear.action = Marker::DELETEALL;
   array.markers.push_back(clear);
 
-  Marker cloth = base(frames.table, "cloth", 0, Marker::CUBE);
+  Marker cloth = markerIn(frames.table, "cloth", 0, Marker::CUBE);
   cloth.pose.position.x = table.clothCentre().x();
   cloth.pose.position.y = table.clothCentre().y();
   cloth.pose.position.z = -0.0005;
@@ -110,7 +110,7 @@ visualization_msgs::MarkerArray tableMarkers(const physics::TableModel& table, c
   int id = 0;
   for (const auto& s : table.segments())
   {
-    Marker m = base(frames.table, "cushions", id++, Marker::CUBE);
+    Marker m = markerIn(frames.table, "cushions", id++, Marker::CUBE);
     const Eigen::Vector2d centre = (s.start + s.end) / 2 - s.normal * rubber / 2;
     m.pose.position.x = centre.x();
     m.pose.position.y = centre.y();
@@ -127,7 +127,7 @@ visualization_msgs::MarkerArray tableMarkers(const physics::TableModel& table, c
   {
     if (c.radius <= 0)
       continue;  // a cushion's end cap is a point
-    Marker m = base(frames.table, "jaws", id++, Marker::CYLINDER);
+    Marker m = markerIn(frames.table, "jaws", id++, Marker::CYLINDER);
     m.pose.position.x = c.centre.x();
     m.pose.position.y = c.centre.y();
     m.pose.position.z = cushion_height / 2;
@@ -140,7 +140,7 @@ visualization_msgs::MarkerArray tableMarkers(const physics::TableModel& table, c
   for (const auto& p : table.pockets())
   {
     // The capture circle where it matters: clipped to the cloth and its cushions.
-    Marker m = base(frames.table, "pockets", id++, Marker::TRIANGLE_LIST);
+    Marker m = markerIn(frames.table, "pockets", id++, Marker::TRIANGLE_LIST);
     m.scale.x = m.scale.y = m.scale.z = 1.0;
     m.color = rgba(0.0f, 0.0f, 0.0f, 0.9f);
     const Eigen::Vector2d half(table.clothLength() / 2 + rubber, table.clothWidth() / 2 + rubber);
@@ -162,7 +162,7 @@ visualization_msgs::MarkerArray tableMarkers(const physics::TableModel& table, c
   {
     const std::string frame = frames.ball_prefix + std::to_string(b.id);
     const bool striped = b.id >= 9 && b.id <= 15;
-    Marker ball = base(frame, "balls", b.id, Marker::SPHERE);
+    Marker ball = markerIn(frame, "balls", b.id, Marker::SPHERE);
     ball.frame_locked = true;
     ball.scale.x = ball.scale.y = ball.scale.z = 2 * R;
     ball.color = striped ? poolColour(0) : poolColour(b.id);
@@ -170,14 +170,14 @@ visualization_msgs::MarkerArray tableMarkers(const physics::TableModel& table, c
     if (striped)
     {
       // A coloured band round the equator of a white ball: from above, a white cap in a ring.
-      Marker band = base(frame, "stripes", b.id, Marker::CYLINDER);
+      Marker band = markerIn(frame, "stripes", b.id, Marker::CYLINDER);
       band.frame_locked = true;
       band.scale.x = band.scale.y = 2.02 * R;
       band.scale.z = R;
       band.color = poolColour(b.id);
       array.markers.push_back(band);
     }
-    Marker label = base(frame, "labels", b.id, Marker::TEXT_VIEW_FACING);
+    Marker label = markerIn(frame, "labels", b.id, Marker::TEXT_VIEW_FACING);
     label.frame_locked = true;
     label.pose.position.z = 1.9 * R;
     label.scale.z = 1.3 * R;

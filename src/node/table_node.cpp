@@ -72,6 +72,7 @@ TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
   event_publisher_ = private_node.advertise<cue_sim::Event>("events", 1000);
   publishStaticFrames(p.urdf_xml);
   services_ = std::make_unique<TableServices>(private_node, shared_, parameters_);
+  games_ = std::make_unique<GameServices>(private_node, shared_, parameters_);
   predictions_ = std::make_unique<PredictionServices>(private_node, shared_, parameters_);
   reconfigure_ = std::make_unique<PhysicsReconfigure>(private_node, shared_);
   startAimMarker(private_node);
@@ -194,6 +195,7 @@ void TableNode::tick()
     layout = table.layoutVersion();
     if (layout != markers_drawn_ || ros::WallTime::now() - markers_sent_ > kMarkerRefresh)
       publishMarkers(table);
+    games_->publishIfChanged(table, stamp);
     shared_.last_published = stamp;
   }
   const physics::TableModel& table = *parameters_.table_model;

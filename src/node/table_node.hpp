@@ -1,8 +1,8 @@
 // table_node: the ROS adapter around the live table (session::LiveTable). Its own thread
-// publishes tf, ~state, ~events, ~markers and (with use_sim_time) /clock at ~publish_rate and
-// does nothing else; the light services (TableServices), dynamic_reconfigure and the aim marker
-// run on two threads of their own, predictions (PredictionServices) on a third. All share the
-// table under one lock, held only while the table itself is touched.
+// publishes tf, ~state, ~events, ~markers, ~game_state and (with use_sim_time) /clock at
+// ~publish_rate and does nothing else; the light services (TableServices, GameServices), dynamic_reconfigure and the
+// aim marker run on two threads of their own, predictions (PredictionServices) on a third. All share the table under
+// one lock, held only while the table itself is touched.
 #pragma once
 
 #include <ros/ros.h>
@@ -13,6 +13,7 @@
 #include <string>
 
 #include "node/aim_marker.hpp"
+#include "node/game_services.hpp"
 #include "node/node_parameters.hpp"
 #include "node/prediction_services.hpp"
 #include "node/reconfigure.hpp"
@@ -54,6 +55,7 @@ private:
   tf2_ros::StaticTransformBroadcaster static_broadcaster_;
   ros::Publisher state_publisher_, marker_publisher_, event_publisher_, clock_publisher_;
   std::unique_ptr<TableServices> services_;
+  std::unique_ptr<GameServices> games_;
   std::unique_ptr<PredictionServices> predictions_;
   std::unique_ptr<PhysicsReconfigure> reconfigure_;
   std::unique_ptr<AimMarker> aim_marker_;

@@ -3,6 +3,7 @@
 #include <visualization_msgs/Marker.h>
 
 #include "cue_sim/ExecutedShot.h"
+#include "node/game_messages.hpp"
 #include "node/ros_conversions.hpp"
 #include "node/shot_markers.hpp"
 
@@ -54,6 +55,7 @@ void TableServices::publishStrike(const session::Shot& requested, const session:
   played.time_to_rest = outcome.time_to_rest;
   played.num_events = static_cast<uint32_t>(outcome.num_events);
   played.cue = cue;
+  played.ruling = toRulingMsg(outcome.ruling, outcome.refereed);
   shot_publisher_.publish(played);
 }
 
@@ -80,6 +82,7 @@ bool TableServices::onStrike(Strike::Request& request, Strike::Response& respons
   response.num_events = static_cast<uint32_t>(outcome.num_events);
   response.ball_velocity = toVector3(outcome.ball_velocity);
   response.ball_angular_velocity = toVector3(outcome.ball_angular_velocity);
+  response.ruling = toRulingMsg(outcome.ruling, outcome.refereed);
   return true;
 }
 
@@ -97,6 +100,7 @@ bool TableServices::onStrikeCue(StrikeCue::Request& request, StrikeCue::Response
   }
   answer(outcome, response);
   response.shot = toShotMsg(aimed);
+  response.ruling = toRulingMsg(outcome.ruling, outcome.refereed);
   if (!outcome.success)
     return true;
   response.executed = toShotMsg(outcome.executed);

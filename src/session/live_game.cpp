@@ -161,6 +161,14 @@ Outcome LiveTable::callShot(const GameCall& call, Stamp now)
   return Outcome::done(message.str());
 }
 
+bool predictedRuling(const PredictionStart& start, const ShotPrediction& prediction, game::Ruling& ruling)
+{
+  if (!start.game || !prediction.success || prediction.executed.ball_id != 0 || start.game->state().over)
+    return false;
+  ruling = start.game->judge(prediction.executed.strike, start.push_out, prediction.events).ruling;
+  return true;
+}
+
 void LiveTable::finishGameShot(Stamp now)
 {
   game_->finish(*pending_turn_, live_.state());

@@ -288,6 +288,12 @@ std::string LiveTable::predictionStart(const std::vector<BallInput>& balls, Stam
     if (!live_.atRest())
       return "the live table is moving: predict from it once it rests, or pass the balls to start from";
     start.table = atTimeZero(live_.state());
+    if (game_)
+    {
+      start.game = *game_;
+      start.game->setEngine(*engine_);
+      start.push_out = push_out_called_;
+    }
     return "";
   }
   std::string why = stateFromInputs(balls, table(), engine_->params().ball_radius, start.table);

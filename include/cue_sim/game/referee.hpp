@@ -73,6 +73,12 @@ std::vector<int> objectBallsOnTable(const physics::TableState<double>& state);
 void spotBalls(const physics::TableModel& table, double ball_radius, const std::vector<int>& ids,
                physics::TableState<double>& state);
 
+/// The rectangle the cue ball's centre may be placed in with `place` in hand: the cloth kept R
+/// from its edges, up to the head string for BehindHeadString; false (and nothing set) for None.
+/// Within it whyNotInHand still keeps the cue ball off the pockets' mouths and other balls.
+bool inHandRegion(const physics::TableModel& table, double ball_radius, BallInHand place, Eigen::Vector2d& low,
+                  Eigen::Vector2d& high);
+
 /// Empty if the cue ball may be placed with its centre at p: on the cloth clear of the cushions,
 /// pockets and every other ball, and behind the head string if `place` says so; otherwise why
 /// not.

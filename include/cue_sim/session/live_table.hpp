@@ -108,7 +108,13 @@ struct PredictionStart
 {
   std::shared_ptr<const physics::Engine<double>> engine;
   physics::TableState<double> table;
+  std::optional<game::GamePlay> game;  ///< the game on the live table, when the prediction starts from it
+  bool push_out = false;               ///< the next game shot is declared a push-out
 };
+
+/// How the referee would rule on `prediction`, a shot from `start`: true and the ruling if
+/// `start` has a game the shot may be played in (the cue ball struck, the game not over).
+bool predictedRuling(const PredictionStart& start, const ShotPrediction& prediction, game::Ruling& ruling);
 
 class LiveTable
 {

@@ -1,0 +1,115 @@
+#include "node/game_markers.hpp"
+
+#include <sstream>
+
+#include "node/table_markers.hpp"
+
+namespace cue_sim
+{
+namespace
+{
+using visualization_msgs::Marker;
+
+/// Height of the markers drawn on the cloth [m]: above it, below a ball's equator.
+constexpr double kOnCloth = 0.002;
+/// Gap between the cloth's edge and the text beside it [m].
+constexpr double kTextGap = 0.16;
+
+std::string gameName(const std::string& rules)
+{
+  return rules == "eight_ball" ? "8-ball" : rules == "nine_ball" ? "9-ball" : rules;
+}
+
+std::string statusText(const GameState& s)
+{
+  std::ostringstream text;
+  text << gameName(s.rules) << ", shot " << s.shots + 1;
+  if (s.over)
+    text << ": over, " << (s.winner >= 0 ? s.players[static_cast<std::size_t>(s.winner)] + " won" : "no winner");
+  for (std::size_t i = 0; i < 2; ++i)
+  {
+    text << "\n" << (!s.over && s.turn == static_cast<int>(i) ? "> " : "   ") << s.players[i];
+    if (s.rules == "eight_ball")
+      text << ", " << s.groups[i];
+    text << ", fouls " << s.consecutive_fouls[i];
+  }
+  if (!s.over)
+  {
+    if (s.shot_in_progress)
+      text << "\nshot in play";
+    else if (s.break_shot)
+      text << "\nto break";
+    if (!s.ball_in_hand.empty() && !s.shot_in_progress)
+      text << "\nball in hand " << (s.ball_in_hand == "anywhere" ? "anywhere" : "behind the head string");
+    if (s.called_ball >= 0)
+      text << "\ncalled " << s.called_ball << (s.called_pocket.empty() ? "" : " in " + s.called_pocket);
+    if (s.push_out_called)
+      text << ", push-out";
+  }
+  if (s.last_ruling.refereed)
+    text << "\nlast: " << (s.last_ruling.foul ? "foul" : "legal") << " (" << s.last_ruling.rule << ")";
+  return text.str();
+}
+}  // namespace
+
+visualization_msgs::MarkerArray gameMarkers(const GameState& state, const physics::TableModel& table)
+{
+  visualization_msgs::MarkerArray array;
+  Marker clear;
+  clear.action = Marker::DELETEALL;
+  array.markers.push_back(clear);
+  if (!state.active)
+    return array;
+  const std::string& frame = state.header.frame_id;
+
+  Marker status = markerIn(frame, "game_status", 0, Marker::TEXT_VIEW_FACING);
+  status.pose.position.x = table.clothCentre().x();
+  status.pose.position.y = table.clothCentre().y() + table.clothWidth() / 2 + kTextGap;
+  status.pose.position.z = 0.05;
+  status.scale.z = 0.045;
+  status.color = rgba(1.0f, 1.0f, 1.0f);
+  status.text = statusText(state);
+  array.markers.push_back(status);
+
+  const bool in_hand = !state.ball_in_hand.empty() && !state.shot_in_progress && !state.over;
+  if (in_hand)
+  {
+    Marker region = markerIn(frame, "ball_in_hand", 0, Marker::CUBE);
+    region.pose.position.x = (state.place_min.x + state.place_max.x) / 2;
+    region.pose.position.y = (state.place_min.y + state.place_max.y) / 2;
+    region.pose.position.z = kOnCloth;
+    region.scale.x = state.place_max.x - state.place_min.x;
+    region.scale.y = state.place_max.y - state.place_min.y;
+    region.scale.z = 0.001;
+    region.color = rgba(1.0f, 1.0f, 1.0f, 0.18f);
+    array.markers.push_back(region);
+  }
+  if (in_hand && state.ball_in_hand == "behind_head_string")
+  {
+    Marker line = markerIn(frame, "head_string", 0, Marker::LINE_LIST);
+    line.scale.x = 0.004;
+    line.color = rgba(1.0f, 1.0f, 1.0f, 0.8f);
+    geometry_msgs::Point a, b;
+    a.x = b.x = table.headStringX();
+    a.y = table.clothCentre().y() - table.clothWidth() / 2;
+    b.y = table.clothCentre().y() + table.clothWidth() / 2;
+    a.z = b.z = kOnCloth;
+    line.points = {a, b};
+    array.markers.push_back(line);
+  }
+  for (const auto& pocket : table.pockets())
+    if (!state.over && pocket.name == state.called_pocket)
+    {
+      Marker ring = markerIn(frame, "called_pocket", 0, Marker::CYLINDER);
+      ring.pose.position.x = pocket.centre.x();
+      ring.pose.position.y = pocket.centre.y();
+      ring.pose.position.z = kOnCloth;
+      ring.scale.x = ring.scale.y = 2.4 * pocket.radius;
+      ring.scale.z = 0.002;
+      ring.color = rgba(1.0f, 0.85f, 0.0f, 0.6f);
+      array.markers.push_back(ring);
+    }
+  return array;
+}
+
+}  // namespace cue_sim

@@ -1,0 +1,352 @@
+// Games on table_node through its services, with a real master: starting a game, refereed
+// strikes whose rulings reach the response, ~shots and the latched ~game_state, ball in hand and
+// calls checked by the rules, and whole games between two planners that choose each shot from
+// the node's own ~predict_batch (each prediction carrying the referee's ruling), struck with the
+// node's execution noise on.
+#include <cue_sim/CallShot.h>
+#include <cue_sim/ExecutedShot.h>
+#include <cue_sim/GameState.h>
+#include <cue_sim/PlaceCueBall.h>
+#include <cue_sim/StartGame.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "cue_sim/physics/physics_params.hpp"
+#include "cue_sim/table_description/table_catalog.hpp"
+#include "cue_sim/table_description/urdf_table_loader.hpp"
+#include "table_client.hpp"
+
+namespace
+{
+/// Shots a game of the planners may take here before the test calls it stuck.
+constexpr int kShotCap = 150;
+/// Longest a shot may take to rest, in wall time with sim time as fast as possible [s].
+constexpr double kRestTimeout = 60;
+
+const double kR = cue_sim::physics::PhysicsParams<double>().ball_radius;
+
+class GameClient : public TableClient
+{
+public:
+  GameClient() : table_(cue_sim::tableFromUrdfFile(cue_sim::tableUrdfPath("7ft")))
+  {
+    EXPECT_TRUE(ros::service::waitForService("/table/start_game", ros::Duration(20)));
+    start_ = nh_.serviceClient<cue_sim::StartGame>("/table/start_game");
+    end_ = nh_.serviceClient<std_srvs::Trigger>("/table/end_game");
+    place_ = nh_.serviceClient<cue_sim::PlaceCueBall>("/table/place_cue_ball");
+    call_ = nh_.serviceClient<cue_sim::CallShot>("/table/call_shot");
+    game_sub_ = nh_.subscribe<cue_sim::GameState>("/table/game_state", 10, [this](const cue_sim::GameStateConstPtr& m) {
+      std::lock_guard<std::mutex> lock(game_mutex_);
+      game_ = m;
+    });
+    shots_sub_ =
+        nh_.subscribe<cue_sim::ExecutedShot>("/table/shots", 100, [this](const cue_sim::ExecutedShotConstPtr& m) {
+          std::lock_guard<std::mutex> lock(game_mutex_);
+          shots_.push_back(*m);
+        });
+  }
+
+  cue_sim::StartGame::Response start(const std::string& rules, int first = 0, uint32_t seed = 0,
+                                     const std::vector<cue_sim::BallState>& balls = {})
+  {
+    cue_sim::StartGame srv;
+    srv.request.rules = rules;
+    srv.request.players = {"ann", "bob"};
+    srv.request.first_player = first;
+    srv.request.seed = seed;
+    srv.request.balls = balls;
+    EXPECT_TRUE(start_.call(srv));
+    return srv.response;
+  }
+
+  std_srvs::Trigger::Response end()
+  {
+    std_srvs::Trigger srv;
+    EXPECT_TRUE(end_.call(srv));
+    return srv.response;
+  }
+
+  cue_sim::PlaceCueBall::Response place(double x, double y)
+  {
+    cue_sim::PlaceCueBall srv;
+    srv.request.position.x = x;
+    srv.request.position.y = y;
+    EXPECT_TRUE(place_.call(srv));
+    return srv.response;
+  }
+
+  cue_sim::CallShot::Response call(int ball, const std::string& pocket, bool push_out = false)
+  {
+    cue_sim::CallShot srv;
+    srv.request.ball = ball;
+    srv.request.pocket = pocket;
+    srv.request.push_out = push_out;
+    EXPECT_TRUE(call_.call(srv));
+    return srv.response;
+  }
+
+  /// The latest ~game_state that satisfies `ready`, waiting at most `timeout` s of wall time.
+  template <typename Ready>
+  cue_sim::GameStateConstPtr gameWhen(Ready ready, double timeout = kRestTimeout)
+  {
+    const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(timeout);
+    while (ros::WallTime::now() < until)
+    {
+      {
+        std::lock_guard<std::mutex> lock(game_mutex_);
+        if (game_ && ready(*game_))
+          return game_;
+      }
+      ros::WallDuration(0.01).sleep();
+    }
+    ADD_FAILURE() << "no ~game_state as awaited within " << timeout << " s";
+    std::lock_guard<std::mutex> lock(game_mutex_);
+    return game_ ? game_ : boost::make_shared<cue_sim::GameState>();
+  }
+
+  /// The game once shot `shots` has come to rest (the ruling applied).
+  cue_sim::GameStateConstPtr afterShot(int shots)
+  {
+    return gameWhen([shots](const cue_sim::GameState& g) { return !g.shot_in_progress && g.shots >= shots; });
+  }
+
+  std::vector<cue_sim::ExecutedShot> shotsSeen()
+  {
+    std::lock_guard<std::mutex> lock(game_mutex_);
+    return shots_;
+  }
+
+  const cue_sim::physics::TableModel& model() const { return table_; }
+
+private:
+  cue_sim::physics::TableModel table_;
+  ros::NodeHandle nh_;
+  ros::ServiceClient start_, end_, place_, call_;
+  std::mutex game_mutex_;
+  cue_sim::GameStateConstPtr game_;
+  std::vector<cue_sim::ExecutedShot> shots_;
+  ros::Subscriber game_sub_, shots_sub_;
+};
+
+cue_sim::BallState ballAt(int id, double x, double y)
+{
+  cue_sim::BallState b;
+  b.id = id;
+  b.position.x = x;
+  b.position.y = y;
+  return b;
+}
+
+Eigen::Vector2d positionOf(const cue_sim::TableState& state, int id)
+{
+  for (const auto& b : state.balls)
+    if (b.id == id && !b.pocketed)
+      return {b.position.x, b.position.y};
+  return {NAN, NAN};
+}
+
+/// A planner over the node's batch: for every ball it may hit first and every pocket, the
+/// ghost-ball aim at two speeds, and on a break the apex at 8 m/s; the best ruling wins (a won
+/// game, a legal pot, a shot without a foul; among equals the slower).
+struct BatchPlanner
+{
+  static double score(const cue_sim::Ruling& r, int shooter, double speed)
+  {
+    double s = 0;
+    if (r.game_over)
+      s = r.winner == shooter ? 1000 : -1000;
+    else if (!r.foul && r.continues)
+      s = 100;
+    else if (!r.foul)
+      s = 10;
+    return s - speed;  // the slower among equals
+  }
+
+  static std::vector<cue_sim::Shot> candidates(const cue_sim::physics::TableModel& table,
+                                               const cue_sim::TableState& balls, const cue_sim::GameState& game)
+  {
+    const Eigen::Vector2d cue = positionOf(balls, 0);
+    std::vector<cue_sim::Shot> shots;
+    for (const int id : game.legal_first)
+    {
+      const Eigen::Vector2d ball = positionOf(balls, id);
+      if (!std::isfinite(ball.x()))
+        continue;
+      const Eigen::Vector2d full = ball - cue;
+      shots.push_back(TableClient::shot(0, 2.0, std::atan2(full.y(), full.x())));
+      for (const auto& pocket : table.pockets())
+      {
+        const Eigen::Vector2d ghost = ball - 2 * kR * (pocket.centre - ball).normalized();
+        const Eigen::Vector2d aim = ghost - cue;
+        for (const double speed : {1.5, 3.0})
+          shots.push_back(TableClient::shot(0, speed, std::atan2(aim.y(), aim.x())));
+      }
+    }
+    if (game.break_shot)
+      shots.push_back(
+          TableClient::shot(0, 8.0, std::atan2(table.footSpot().y() - cue.y(), table.footSpot().x() - cue.x())));
+    return shots;
+  }
+};
+
+TEST(Game, AStartedGameRefereesStrikesPublishesItsStateAndRefusesFreeEdits)
+{
+  GameClient client;
+  const auto started = client.start("eight_ball", 1, 7);
+  ASSERT_TRUE(started.success) << started.message;
+  EXPECT_TRUE(started.state.active);
+  EXPECT_EQ(started.state.turn, 1);
+  EXPECT_EQ(started.state.players[1], "bob");
+  EXPECT_EQ(started.state.ball_in_hand, "behind_head_string");
+  EXPECT_DOUBLE_EQ(started.state.place_max.x, client.model().headStringX());
+  auto game = client.gameWhen([](const cue_sim::GameState& g) { return g.active && g.break_shot && g.turn == 1; });
+  EXPECT_EQ(game->shots, 0);
+
+  const auto racked = client.rack("nine");
+  EXPECT_FALSE(racked.success);
+  EXPECT_NE(racked.message.find("a game of eight_ball is on"), std::string::npos) << racked.message;
+  const auto object = client.strike(TableClient::shot(3, 1.0, 0));
+  EXPECT_FALSE(object.success);
+  EXPECT_NE(object.message.find("ball_id must be 0"), std::string::npos) << object.message;
+  const auto far = client.place(client.model().headStringX() + 0.3, 0);
+  EXPECT_FALSE(far.success);
+  EXPECT_NE(far.message.find("behind the head string"), std::string::npos) << far.message;
+  const auto placed = client.place(client.model().headStringX() - 0.1, 0.05);
+  ASSERT_TRUE(placed.success) << placed.message;
+
+  const Eigen::Vector2d cue(client.model().headStringX() - 0.1, 0.05);
+  const Eigen::Vector2d apex = client.model().footSpot();
+  const cue_sim::Shot brk = TableClient::shot(0, 8.0, std::atan2(apex.y() - cue.y(), apex.x() - cue.x()));
+  const cue_sim::Prediction predicted = client.predict(brk);  // with noise on, the strike differs from it
+  ASSERT_TRUE(predicted.success) << predicted.message;
+  ASSERT_TRUE(predicted.ruling.refereed);
+  EXPECT_NE(predicted.ruling.rule.find("WPA 3.3"), std::string::npos) << predicted.ruling.reason;
+  const auto struck = client.strike(brk);
+  ASSERT_TRUE(struck.success) << struck.message;
+  ASSERT_TRUE(struck.ruling.refereed);
+  EXPECT_NE(struck.ruling.rule.find("WPA"), std::string::npos) << struck.ruling.rule;
+
+  game = client.afterShot(1);
+  EXPECT_EQ(game->last_ruling.reason, struck.ruling.reason);
+  EXPECT_EQ(game->turn, struck.ruling.next_player);
+  EXPECT_EQ(game->ball_in_hand, struck.ruling.ball_in_hand);
+  const auto shots = client.shotsSeen();
+  ASSERT_FALSE(shots.empty());
+  EXPECT_TRUE(shots.back().ruling.refereed);
+  EXPECT_EQ(shots.back().ruling.reason, struck.ruling.reason);
+
+  const auto ended = client.end();
+  ASSERT_TRUE(ended.success) << ended.message;
+  client.gameWhen([](const cue_sim::GameState& g) { return !g.active; });
+  EXPECT_TRUE(client.rack("eight").success);
+  const auto free_play = client.strike(TableClient::shot(0, 1.0, 0));
+  EXPECT_TRUE(free_play.success) << free_play.message;
+  EXPECT_FALSE(free_play.ruling.refereed);
+  client.atRest(kRestTimeout);
+}
+
+TEST(Game, AScratchGivesBallInHandAnywhereWhichPlaceCueBallChecks)
+{
+  GameClient client;
+  const auto& model = client.model();
+  Eigen::Vector2d pocket;
+  for (const auto& p : model.pockets())
+    if (p.name == "pocket_side_ypos")
+      pocket = p.centre;
+  const Eigen::Vector2d cue(pocket.x(), model.clothCentre().y() + 0.1);
+  const auto started =
+      client.start("nine_ball", 0, 0, {ballAt(0, cue.x(), cue.y()), ballAt(1, 0.3, -0.3), ballAt(9, 0.6, -0.3)});
+  ASSERT_TRUE(started.success) << started.message;
+  EXPECT_FALSE(started.state.break_shot);
+  EXPECT_EQ(started.state.ball_in_hand, "");
+  EXPECT_EQ(std::vector<int>(started.state.legal_first.begin(), started.state.legal_first.end()), std::vector<int>{1});
+  const auto push = client.call(1, "", true);
+  EXPECT_FALSE(push.success);
+  EXPECT_NE(push.message.find("2.4"), std::string::npos) << push.message;
+
+  const auto struck = client.strike(TableClient::shot(0, 2.0, std::atan2(pocket.y() - cue.y(), pocket.x() - cue.x())));
+  ASSERT_TRUE(struck.success) << struck.message;
+  EXPECT_TRUE(struck.ruling.foul);
+  EXPECT_EQ(struck.ruling.next_player, 1);
+  EXPECT_EQ(struck.ruling.ball_in_hand, "anywhere");
+  const auto game = client.afterShot(1);
+  EXPECT_EQ(game->turn, 1);
+  EXPECT_EQ(game->consecutive_fouls[0], 1);
+  EXPECT_EQ(game->ball_in_hand, "anywhere");
+  EXPECT_GT(game->place_max.x, model.headStringX());  // anywhere: past the head string too
+
+  const auto on_ball = client.place(0.3, -0.3 + kR);
+  EXPECT_FALSE(on_ball.success);
+  EXPECT_NE(on_ball.message.find("overlap"), std::string::npos) << on_ball.message;
+  const auto placed = client.place(0.5, 0.2);
+  ASSERT_TRUE(placed.success) << placed.message;
+  const auto state = client.freshState();
+  const Eigen::Vector2d at = positionOf(*state, 0);
+  EXPECT_NEAR(at.x(), 0.5, 1e-12);
+  EXPECT_NEAR(at.y(), 0.2, 1e-12);
+  ASSERT_TRUE(client.end().success);
+}
+
+// Whole games through the services: each shot chosen from ~predict_batch by the rulings it
+// predicts, struck with execution noise on (the cue ball played where the referee leaves it:
+// with ball in hand that is a legal place too), each strike's ruling the one ~game_state applies.
+// Every game ends (a win, a loss, or three fouls in a row) within the cap.
+TEST(Game, PlannersPlayWholeGamesThroughTheServices)
+{
+  GameClient client;
+  for (const std::string rules : {"eight_ball", "nine_ball"})
+    for (int g = 0; g < 2; ++g)
+    {
+      const auto started = client.start(rules, g % 2, static_cast<uint32_t>(g));
+      ASSERT_TRUE(started.success) << started.message;
+      cue_sim::GameStateConstPtr game = client.gameWhen(
+          [&](const cue_sim::GameState& g) { return g.active && g.rules == rules && !g.over && g.shots == 0; });
+      int shots = 0, fouls = 0;
+      while (!game->over && shots < kShotCap)
+      {
+        const auto balls = client.freshState();
+        const std::vector<cue_sim::Shot> candidates = BatchPlanner::candidates(client.model(), *balls, *game);
+        ASSERT_FALSE(candidates.empty());
+        const auto batch = client.predictBatch(candidates);
+        ASSERT_TRUE(batch.success) << batch.message;
+        double best = -1e9;
+        cue_sim::Shot chosen = candidates.front();
+        for (std::size_t i = 0; i < candidates.size(); ++i)
+        {
+          const auto& p = batch.predictions[i];
+          if (!p.success)
+            continue;
+          ASSERT_TRUE(p.ruling.refereed);
+          const double s = BatchPlanner::score(p.ruling, game->turn, candidates[i].speed);
+          if (s > best)
+          {
+            best = s;
+            chosen = candidates[i];
+          }
+        }
+        const auto struck = client.strike(chosen);
+        ASSERT_TRUE(struck.success) << struck.message;
+        ASSERT_TRUE(struck.ruling.refereed);
+        ++shots;
+        fouls += struck.ruling.foul;
+        const auto game_before = game;
+        game = client.afterShot(game_before->shots + 1);
+        ASSERT_EQ(game->shots, game_before->shots + 1);
+        EXPECT_EQ(game->last_ruling.reason, struck.ruling.reason);
+        EXPECT_EQ(game->over, struck.ruling.game_over);
+        if (!game->over)
+          EXPECT_EQ(game->turn, struck.ruling.next_player);
+      }
+      EXPECT_TRUE(game->over) << rules << " game " << g << " not over after " << shots << " shots";
+      std::printf(
+          "%s game %d: %d shots, %d fouls, %s\n", rules.c_str(), g, shots, fouls,
+          game->winner >= 0 ? (game->players[static_cast<std::size_t>(game->winner)] + " won").c_str() : "no winner");
+      const auto after = client.strike(TableClient::shot(0, 1.0, 0));
+      EXPECT_FALSE(after.success);
+      EXPECT_NE(after.message.find("the game is over"), std::string::npos) << after.message;
+    }
+  ASSERT_TRUE(client.end().success);
+}
+
+}  // namespace
