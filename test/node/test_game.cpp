@@ -8,9 +8,14 @@
 #include <cue_sim/GameState.h>
 #include <cue_sim/PlaceCueBall.h>
 #include <cue_sim/StartGame.h>
+#include <rosbag/bag.h>
+#include <rosbag/view.h>
+#include <visualization_msgs/MarkerArray.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <thread>
 
 #include "cue_sim/physics/physics_params.hpp"
 #include "cue_sim/table_description/table_catalog.hpp"
@@ -286,6 +291,67 @@ TEST(Game, AScratchGivesBallInHandAnywhereWhichPlaceCueBallChecks)
   EXPECT_NEAR(at.x(), 0.5, 1e-12);
   EXPECT_NEAR(at.y(), 0.2, 1e-12);
   ASSERT_TRUE(client.end().success);
+}
+
+// A bag of a game (record.launch) holds its states and each strike with its ruling.
+TEST(Game, ABagRecordsTheGameStatesAndTheRulings)
+{
+  GameClient client;
+  const std::string bag_path = std::string(CUE_SIM_TEST_DIR) + "/game_test.bag";
+  std::remove(bag_path.c_str());
+  std::thread recorder([&] {
+    const std::string command = "roslaunch cue_sim record.launch bag:=" + bag_path + " > " +
+                                std::string(CUE_SIM_TEST_DIR) + "/game_record_test.log 2>&1";
+    EXPECT_EQ(std::system(command.c_str()), 0);
+  });
+  ros::WallDuration(2.5).sleep();  // let rosbag subscribe
+  const auto started =
+      client.start("nine_ball", 1, 0, {ballAt(0, -0.5, 0.0), ballAt(1, 0.0, 0.0), ballAt(9, 0.5, 0.3)});
+  ASSERT_TRUE(started.success) << started.message;
+  client.gameWhen(
+      [](const cue_sim::GameState& g) { return g.active && g.rules == "nine_ball" && !g.over && g.shots == 0; });
+  const auto struck = client.strike(TableClient::shot(0, 1.0, 0.0));
+  ASSERT_TRUE(struck.success) << struck.message;
+  client.afterShot(1);
+  ros::WallDuration(0.5).sleep();
+  EXPECT_EQ(std::system("rosnode kill /record > /dev/null 2>&1"), 0);
+  recorder.join();
+  ASSERT_TRUE(client.end().success);
+
+  rosbag::Bag bag(bag_path, rosbag::bagmode::Read);
+  bool started_seen = false, in_play_seen = false, ruled_seen = false;
+  for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery(std::string("/table/game_state"))))
+  {
+    const auto game = m.instantiate<cue_sim::GameState>();
+    ASSERT_TRUE(game);
+    if (!game->active || game->rules != "nine_ball")
+      continue;
+    started_seen |= game->shots == 0 && !game->shot_in_progress && game->turn == 1;
+    in_play_seen |= game->shot_in_progress && game->last_ruling.reason == struck.ruling.reason;
+    ruled_seen |= game->shots == 1 && !game->shot_in_progress && game->last_ruling.reason == struck.ruling.reason;
+  }
+  EXPECT_TRUE(started_seen);
+  EXPECT_TRUE(in_play_seen);
+  EXPECT_TRUE(ruled_seen);
+  std::size_t shots = 0;
+  for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery(std::string("/table/shots"))))
+  {
+    const auto played = m.instantiate<cue_sim::ExecutedShot>();
+    ASSERT_TRUE(played);
+    if (played->header.stamp != struck.stamp)
+      continue;
+    ++shots;
+    EXPECT_TRUE(played->ruling.refereed);
+    EXPECT_EQ(played->ruling.reason, struck.ruling.reason);
+    EXPECT_EQ(played->ruling.foul, struck.ruling.foul);
+  }
+  EXPECT_EQ(shots, 1u);
+  EXPECT_GT(bag.getSize(), 0u);
+  std::size_t markers = 0;
+  for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery(std::string("/table/game_markers"))))
+    markers += m.instantiate<visualization_msgs::MarkerArray>() != nullptr;
+  EXPECT_GT(markers, 0u);
+  bag.close();
 }
 
 // Whole games through the services: each shot chosen from ~predict_batch by the rulings it
