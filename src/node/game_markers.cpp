@@ -1,5 +1,6 @@
 #include "node/game_markers.hpp"
 
+#include <cmath>
 #include <sstream>
 
 #include "node/table_markers.hpp"
@@ -12,8 +13,10 @@ using visualization_msgs::Marker;
 
 /// Height of the markers drawn on the cloth [m]: above it, below a ball's equator.
 constexpr double kOnCloth = 0.002;
-/// Gap between the cloth's edge and the text beside it [m].
-constexpr double kTextGap = 0.16;
+/// From the cloth's edge to the middle of the text beside it [m]: its six lines clear the cushion.
+constexpr double kTextGap = 0.34;
+/// Radius of the ring drawn round a called pocket's centre [m], and its line's width.
+constexpr double kCallRing = 0.08, kCallLine = 0.008;
 
 std::string gameName(const std::string& rules)
 {
@@ -52,7 +55,8 @@ std::string statusText(const GameState& s)
 }
 }  // namespace
 
-visualization_msgs::MarkerArray gameMarkers(const GameState& state, const physics::TableModel& table)
+visualization_msgs::MarkerArray gameMarkers(const GameState& state, const physics::TableModel& table,
+                                            double cushion_height)
 {
   visualization_msgs::MarkerArray array;
   Marker clear;
@@ -66,7 +70,7 @@ visualization_msgs::MarkerArray gameMarkers(const GameState& state, const physic
   status.pose.position.x = table.clothCentre().x();
   status.pose.position.y = table.clothCentre().y() + table.clothWidth() / 2 + kTextGap;
   status.pose.position.z = 0.05;
-  status.scale.z = 0.045;
+  status.scale.z = 0.04;
   status.color = rgba(1.0f, 1.0f, 1.0f);
   status.text = statusText(state);
   array.markers.push_back(status);
@@ -100,13 +104,17 @@ visualization_msgs::MarkerArray gameMarkers(const GameState& state, const physic
   for (const auto& pocket : table.pockets())
     if (!state.over && pocket.name == state.called_pocket)
     {
-      Marker ring = markerIn(frame, "called_pocket", 0, Marker::CYLINDER);
-      ring.pose.position.x = pocket.centre.x();
-      ring.pose.position.y = pocket.centre.y();
-      ring.pose.position.z = kOnCloth;
-      ring.scale.x = ring.scale.y = 2.4 * pocket.radius;
-      ring.scale.z = 0.002;
-      ring.color = rgba(1.0f, 0.85f, 0.0f, 0.6f);
+      Marker ring = markerIn(frame, "called_pocket", 0, Marker::LINE_STRIP);
+      ring.scale.x = kCallLine;
+      ring.color = rgba(1.0f, 0.85f, 0.0f);
+      for (int i = 0; i <= 36; ++i)
+      {
+        geometry_msgs::Point p;
+        p.x = pocket.centre.x() + kCallRing * std::cos(i * M_PI / 18);
+        p.y = pocket.centre.y() + kCallRing * std::sin(i * M_PI / 18);
+        p.z = cushion_height + kOnCloth;  // over the jaws and rails round the pocket
+        ring.points.push_back(p);
+      }
       array.markers.push_back(ring);
     }
   return array;

@@ -11,7 +11,9 @@ namespace cue_sim
 {
 /// DELETEALL, then for an active game: a text beside the table (the game, each player with
 /// their group and fouls, who shoots, ball in hand, the last ruling), the ball-in-hand region
-/// on the cloth, the head string, and a ring on the called pocket; in `state`'s frame.
-visualization_msgs::MarkerArray gameMarkers(const GameState& state, const physics::TableModel& table);
+/// on the cloth, the head string, and a ring round the called pocket (over the cushions, whose
+/// height is `cushion_height` [m]); in `state`'s frame.
+visualization_msgs::MarkerArray gameMarkers(const GameState& state, const physics::TableModel& table,
+                                            double cushion_height);
 
 }  // namespace cue_sim

@@ -28,7 +28,7 @@ void GameServices::publishIfChanged(const session::LiveTable& table, const ros::
   published_ = table.gameVersion();
   const GameState state = toGameStateMsg(table, stamp, parameters_.table_frame);
   state_publisher_.publish(state);
-  marker_publisher_.publish(gameMarkers(state, table.table()));
+  marker_publisher_.publish(gameMarkers(state, table.table(), table.engine().params().cushion_height));
 }
 
 bool GameServices::onStartGame(StartGame::Request& request, StartGame::Response& response)

@@ -8,6 +8,7 @@
 #include <cue_sim/GameState.h>
 #include <cue_sim/PlaceCueBall.h>
 #include <cue_sim/StartGame.h>
+#include <ros/master.h>
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
 #include <visualization_msgs/MarkerArray.h>
@@ -133,6 +134,28 @@ private:
   std::vector<cue_sim::ExecutedShot> shots_;
   ros::Subscriber game_sub_, shots_sub_;
 };
+
+/// Whether `node` subscribes to `topic`, as the master says, asking for at most `timeout` s.
+bool subscribedBy(const std::string& topic, const std::string& node, double timeout)
+{
+  const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(timeout);
+  while (ros::WallTime::now() < until)
+  {
+    XmlRpc::XmlRpcValue request, response, payload;
+    request[0] = ros::this_node::getName();
+    if (ros::master::execute("getSystemState", request, response, payload, false))
+    {
+      XmlRpc::XmlRpcValue& subscribers = payload[1];
+      for (int i = 0; i < subscribers.size(); ++i)
+        if (static_cast<std::string>(subscribers[i][0]) == topic)
+          for (int j = 0; j < subscribers[i][1].size(); ++j)
+            if (static_cast<std::string>(subscribers[i][1][j]) == node)
+              return true;
+    }
+    ros::WallDuration(0.1).sleep();
+  }
+  return false;
+}
 
 cue_sim::BallState ballAt(int id, double x, double y)
 {
@@ -304,7 +327,10 @@ TEST(Game, ABagRecordsTheGameStatesAndTheRulings)
                                 std::string(CUE_SIM_TEST_DIR) + "/game_record_test.log 2>&1";
     EXPECT_EQ(std::system(command.c_str()), 0);
   });
-  ros::WallDuration(2.5).sleep();  // let rosbag subscribe
+  // Every game state must reach the bag: wait until rosbag has subscribed to all three topics.
+  for (const std::string topic : {"/table/game_state", "/table/shots", "/table/game_markers"})
+    ASSERT_TRUE(subscribedBy(topic, "/record", 30)) << topic;
+  ros::WallDuration(0.5).sleep();  // and connected
   const auto started =
       client.start("nine_ball", 1, 0, {ballAt(0, -0.5, 0.0), ballAt(1, 0.0, 0.0), ballAt(9, 0.5, 0.3)});
   ASSERT_TRUE(started.success) << started.message;
@@ -413,6 +439,22 @@ TEST(Game, PlannersPlayWholeGamesThroughTheServices)
       EXPECT_NE(after.message.find("the game is over"), std::string::npos) << after.message;
     }
   ASSERT_TRUE(client.end().success);
+}
+
+// scripts/play_game.py, as the README runs it: a whole game to its end through the services.
+TEST(Game, ThePythonPlayerFinishesAGame)
+{
+  std::string output;
+  FILE* pipe = popen("rosrun cue_sim play_game.py --rules nine_ball --seed 5 2>&1", "r");
+  char buffer[512];
+  while (pipe && std::fgets(buffer, sizeof buffer, pipe))
+    output += buffer;
+  const int status = pipe ? pclose(pipe) : -1;
+  EXPECT_EQ(WEXITSTATUS(status), 0) << output;
+  EXPECT_NE(output.find("started nine_ball: ann against bob"), std::string::npos) << output;
+  EXPECT_NE(output.find("shot 1: ann"), std::string::npos) << output;
+  EXPECT_NE(output.find("game over after"), std::string::npos) << output;
+  std::printf("%s", output.c_str());
 }
 
 }  // namespace

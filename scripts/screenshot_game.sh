@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Takes doc/rviz_game.png: rviz under Xvfb, an 8-ball game in progress. The break, then the
+# first player's next shot chosen from ~predict_batch as the game rostest's planner would (a
+# legal pot if there is one), then a call for the shot after it, shown with the game's markers.
+# Usage: scripts/screenshot_game.sh [output.png] [shots before the picture, default 3]
+set -euo pipefail
+here="$(dirname "${BASH_SOURCE[0]}")"
+source "$here/env.sh"
+cue_sim_source_devel
+out="$(realpath -m "${1:-$CUE_SIM_ROOT/doc/rviz_game.png}")"
+shots="${2:-3}"
+export ROS_MASTER_URI=http://localhost:11393
+xvfb-run -a -s "-screen 0 1280x900x24" bash -c "
+  roslaunch cue_sim table.launch rviz:=true > '$CUE_SIM_BUILD/screenshot_game_launch.log' 2>&1 &
+  launch=\$!
+  trap 'kill \$launch 2>/dev/null; wait \$launch 2>/dev/null' EXIT
+  for i in \$(seq 60); do rosservice list 2>/dev/null | grep -q /table/start_game && break; sleep 0.5; done
+  sleep 6   # rviz start-up
+  rosrun cue_sim play_game.py --shots $shots --preview > '$CUE_SIM_BUILD/screenshot_game_play.log' 2>&1
+  sleep 1.5
+  import -window root '$out'
+"
+echo "screenshot: $out"
