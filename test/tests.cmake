@@ -73,6 +73,7 @@ target_include_directories(game_node_tests PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(game_node_tests cue_sim_table_description ${catkin_LIBRARIES})
 add_dependencies(game_node_tests table_node ${PROJECT_NAME}_generate_messages_cpp)
 target_compile_definitions(game_node_tests PRIVATE CUE_SIM_TEST_DIR="${CMAKE_CURRENT_BINARY_DIR}")
+add_rostest(test/node/game_replay.test DEPENDENCIES game_node_tests self_play)
 
 add_rostest_gtest(examples_tests test/node/examples.test test/node/test_examples.cpp test/node/rostest_main.cpp)
 target_include_directories(examples_tests PRIVATE ${catkin_INCLUDE_DIRS})

@@ -53,7 +53,7 @@ std::string GamePlay::setPosition(const physics::TableState<double>& balls, bool
     return why;
   if (balls.anyMoving())
     return "a position is played from rest: every ball must be at rest";
-  table_ = balls;
+  table_ = physics::atTimeZero(balls);
   state_.break_shot = break_shot;
   state_.ball_in_hand = break_shot ? BallInHand::BehindHeadString : BallInHand::None;
   state_.push_out_allowed = false;
@@ -138,7 +138,7 @@ Turn GamePlay::judge(const physics::CueStrike<double>& strike, bool push_out,
 
 void GamePlay::finish(const Turn& turn, const physics::TableState<double>& at_rest)
 {
-  table_ = at_rest;
+  table_ = physics::atTimeZero(at_rest);  // the next shot strikes from rest, as the live table's does
   state_ = turn.after;
   if (turn.ruling.rerack)
     rack();

@@ -181,12 +181,14 @@ SelfPlaySummary selfPlay(const physics::Engine<double>& engine, const SelfPlayOp
   for (int g = 0; g < options.games; ++g)
   {
     // Each game racks with seeds of its own, and the break alternates.
-    GamePlay game(engine, options.rules, {"planner A", "planner B"},
-                  gameRack(static_cast<unsigned>(options.seed * 1000 + static_cast<std::uint64_t>(g) * 10)), g % 2);
-    game.setShotCap(options.max_shots);
     GameRecord record;
     record.rules = options.rules;
     record.index = g;
+    record.players = {"planner A", "planner B"};
+    record.rack_seed = static_cast<unsigned>(options.seed * 1000 + static_cast<std::uint64_t>(g) * 10);
+    record.first_player = g % 2;
+    GamePlay game(engine, options.rules, record.players, gameRack(record.rack_seed), record.first_player);
+    game.setShotCap(options.max_shots);
     while (!game.state().over)
     {
       Choice choice = planner.choose(game);

@@ -32,11 +32,40 @@ Scene shotScene(const game::GameRecord& record, std::size_t k, const std::string
   return scene;
 }
 
+namespace
+{
+/// Shot k as a player makes it (where the cue ball stood, the call, the strike as executed) and
+/// its ruling: what a replay on the node needs (scripts/replay_game.py). Doubles round-trip.
+nlohmann::json turnJson(const game::GameRecord& record, std::size_t k, const physics::TableModel& table)
+{
+  const game::Turn& turn = record.turns[k];
+  const physics::TableState<double>& before = record.before[k];
+  const physics::Ball<double>& cue = before.balls[static_cast<std::size_t>(before.indexOf(0))];
+  const std::string pocket =
+      turn.called_pocket >= 0 ? table.pockets()[static_cast<std::size_t>(turn.called_pocket)].name : "";
+  return {{"player", turn.player},
+          {"cue_ball", {cue.r.x(), cue.r.y()}},
+          {"called_ball", turn.called_ball},
+          {"called_pocket", pocket},
+          {"push_out", turn.push_out},
+          {"strike",
+           {{"speed", turn.strike.speed},
+            {"phi", turn.strike.phi},
+            {"theta", turn.strike.theta},
+            {"a", turn.strike.a},
+            {"b", turn.strike.b}}},
+          {"ruling", rulingJson(turn.ruling)}};
+}
+}  // namespace
+
 int writeGameRecord(const game::GameRecord& record, const std::string& dir, const std::string& table_name,
                     const physics::Engine<double>& engine)
 {
   std::filesystem::create_directories(dir);
-  nlohmann::json summary = {{"rules", record.rules}, {"game", record.index}, {"shots", nlohmann::json::array()}};
+  nlohmann::json summary = {
+      {"rules", record.rules},           {"game", record.index},          {"table", table_name},
+      {"players", record.players},       {"rack_seed", record.rack_seed}, {"first_player", record.first_player},
+      {"shots", nlohmann::json::array()}};
   int written = 0;
   for (std::size_t k = 0; k < record.turns.size(); ++k)
   {
@@ -51,8 +80,8 @@ int writeGameRecord(const game::GameRecord& record, const std::string& dir, cons
     if (!out)
       throw std::runtime_error("cannot write " + path.string());
     ++written;
-    summary["shots"].push_back(
-        {{"file", name}, {"player", record.turns[k].player}, {"ruling", rulingJson(record.turns[k].ruling)}});
+    summary["shots"].push_back(turnJson(record, k, engine.table()));
+    summary["shots"].back()["file"] = name;
   }
   summary["end"] = gameStateJson(record.end);
   std::ofstream out(std::filesystem::path(dir) / "game.json");

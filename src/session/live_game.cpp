@@ -88,7 +88,7 @@ Outcome LiveTable::startGame(const GameRequest& request, Stamp now)
   last_turn_.reset();
   push_out_called_ = false;
   ++game_version_;
-  startFrom(atTimeZero(game_->table()), now);
+  startFrom(physics::atTimeZero(game_->table()), now);
   const game::GameState& state = game_->state();
   return Outcome::done("started " + request.rules + ": " + state.players[0] + " against " + state.players[1] + ", " +
                        state.players[static_cast<std::size_t>(state.turn)] +
@@ -176,7 +176,7 @@ void LiveTable::finishGameShot(Stamp now)
   pending_turn_.reset();
   push_out_called_ = false;
   clock_.restart(now);
-  live_.reset(atTimeZero(game_->table()));
+  live_.reset(physics::atTimeZero(game_->table()));
   balls_at_rest_ = false;
   ++layout_version_;
   ++game_version_;

@@ -34,15 +34,6 @@ std::string seconds(Stamp stamp)
 }
 }  // namespace
 
-physics::TableState<double> atTimeZero(physics::TableState<double> state)
-{
-  state.time = state.event_time = 0;
-  state.events_this_instant = 0;
-  for (auto& b : state.balls)
-    b.time = 0;
-  return state;
-}
-
 std::string LiveTableOptions::whyInvalid() const
 {
   std::ostringstream why;
@@ -77,7 +68,7 @@ LiveTable::LiveTable(std::shared_ptr<const physics::Engine<double>> engine, cons
     throw std::invalid_argument("rack: " + bad_rack);
   clock_.setRate(now, paused_ ? 0 : options_.real_time_factor);
   last_rack_ = layout;
-  startFrom(atTimeZero(layout), now);
+  startFrom(physics::atTimeZero(layout), now);
 }
 
 void LiveTable::advanceTo(Stamp now, std::vector<StampedEvent>* events)
@@ -125,7 +116,7 @@ void LiveTable::startFrom(physics::TableState<double> state, Stamp now)
 void LiveTable::restartAtRest(Stamp now)
 {
   clock_.restart(now);
-  live_.reset(atTimeZero(live_.state()));
+  live_.reset(physics::atTimeZero(live_.state()));
 }
 
 void LiveTable::applyPendingPhysics()
@@ -287,7 +278,7 @@ std::string LiveTable::predictionStart(const std::vector<BallInput>& balls, Stam
     advanceTo(now);
     if (!live_.atRest())
       return "the live table is moving: predict from it once it rests, or pass the balls to start from";
-    start.table = atTimeZero(live_.state());
+    start.table = physics::atTimeZero(live_.state());
     if (game_)
     {
       start.game = *game_;

@@ -72,7 +72,7 @@ Outcome LiveTable::rack(const RackRequest& request, Stamp now)
   if (!why.empty())
     return Outcome::refused(why);
   last_rack_ = layout;
-  startFrom(atTimeZero(layout), now);
+  startFrom(physics::atTimeZero(layout), now);
   return Outcome::done("racked '" + request.layout + "': " + std::to_string(layout.balls.size()) + " balls");
 }
 
@@ -84,7 +84,7 @@ Outcome LiveTable::reset(Stamp now)
   const std::string why = engine_->whyInvalid(last_rack_);
   if (!why.empty())
     return Outcome::refused("the last rack does not fit the physics now (rack again): " + why);
-  startFrom(atTimeZero(last_rack_), now);
+  startFrom(physics::atTimeZero(last_rack_), now);
   return Outcome::done("back to the last rack (" + std::to_string(last_rack_.balls.size()) + " balls)");
 }
 

@@ -135,6 +135,18 @@ private:
   ros::Subscriber game_sub_, shots_sub_;
 };
 
+/// Runs a command; its exit code and what it printed.
+std::pair<int, std::string> run(const std::string& command)
+{
+  std::string output;
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  char buffer[512];
+  while (pipe && std::fgets(buffer, sizeof buffer, pipe))
+    output += buffer;
+  const int status = pipe ? pclose(pipe) : -1;
+  return {WEXITSTATUS(status), output};
+}
+
 /// Whether `node` subscribes to `topic`, as the master says, asking for at most `timeout` s.
 bool subscribedBy(const std::string& topic, const std::string& node, double timeout)
 {
@@ -444,17 +456,30 @@ TEST(Game, PlannersPlayWholeGamesThroughTheServices)
 // scripts/play_game.py, as the README runs it: a whole game to its end through the services.
 TEST(Game, ThePythonPlayerFinishesAGame)
 {
-  std::string output;
-  FILE* pipe = popen("rosrun cue_sim play_game.py --rules nine_ball --seed 5 2>&1", "r");
-  char buffer[512];
-  while (pipe && std::fgets(buffer, sizeof buffer, pipe))
-    output += buffer;
-  const int status = pipe ? pclose(pipe) : -1;
-  EXPECT_EQ(WEXITSTATUS(status), 0) << output;
+  const auto [code, output] = run("rosrun cue_sim play_game.py --rules nine_ball --seed 5");
+  EXPECT_EQ(code, 0) << output;
   EXPECT_NE(output.find("started nine_ball: ann against bob"), std::string::npos) << output;
   EXPECT_NE(output.find("shot 1: ann"), std::string::npos) << output;
   EXPECT_NE(output.find("game over after"), std::string::npos) << output;
   std::printf("%s", output.c_str());
+}
+
+// Self-play's records (the self_play program, execution noise on) replayed on the node with
+// scripts/replay_game.py: the node's referee rules on every shot as the record says, and every
+// cue ball the physics leaves is where the record has it, bit for bit.
+TEST(GameReplay, SelfPlayRecordsReplayOnTheNodeWithTheSameRulings)
+{
+  const std::string dir = std::string(CUE_SIM_TEST_DIR) + "/game_replay_records";
+  std::system(("rm -rf '" + dir + "'").c_str());
+  const auto [played, output] = run("rosrun cue_sim self_play --games 2 --seed 4 --out '" + dir + "'");
+  ASSERT_EQ(played, 0) << output;
+  for (const std::string game : {"eight_ball_0", "eight_ball_1", "nine_ball_0", "nine_ball_1"})
+  {
+    const auto [code, replay] = run("rosrun cue_sim replay_game.py '" + dir + "/" + game + "'");
+    EXPECT_EQ(code, 0) << game << ":\n" << replay;
+    EXPECT_NE(replay.find("every ruling as recorded"), std::string::npos) << replay;
+    std::printf("%s: %s", game.c_str(), replay.substr(replay.rfind("replayed")).c_str());
+  }
 }
 
 }  // namespace

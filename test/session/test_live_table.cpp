@@ -281,7 +281,7 @@ TEST(PredictionLimits, ABatchOverALimitIsRefusedWithItsSizeBeforeAnyWork)
 {
   const auto engine = engineOn("7ft");
   const physics::TableState<double> start =
-      atTimeZero(physics::rackLayout<double>("eight", engine->table(), engine->params().ball_radius));
+      physics::atTimeZero(physics::rackLayout<double>("eight", engine->table(), engine->params().ball_radius));
   physics::ThreadPool pool(1);
   PredictionLimits limits;
   limits.max_batch_shots = 5;

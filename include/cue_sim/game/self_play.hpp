@@ -2,6 +2,7 @@
 // game recorded shot by shot. No ROS.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <optional>
 #include <string>
@@ -53,6 +54,9 @@ struct GameRecord
 {
   std::string rules;
   int index = 0;
+  std::array<std::string, 2> players;
+  unsigned rack_seed = 0;  ///< of its first rack (gameRack); each new rack takes the next
+  int first_player = 0;    ///< who broke
   std::vector<physics::TableState<double>> before;
   std::vector<GameState> state_before;  ///< the game as each shot found it (its calls included)
   std::vector<Turn> turns;

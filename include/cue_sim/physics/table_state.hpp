@@ -64,5 +64,18 @@ struct TableState
   }
 };
 
+/// Every ball referred to time 0, and the state's clock with them: a table at rest as a strike
+/// from rest finds it. The live table, predictions and games all strike from here, so that the
+/// same shot from the same balls rounds the same way wherever it is played.
+template <typename S>
+TableState<S> atTimeZero(TableState<S> state)
+{
+  state.time = state.event_time = S(0);
+  state.events_this_instant = 0;
+  for (auto& b : state.balls)
+    b.time = S(0);
+  return state;
+}
+
 }  // namespace physics
 }  // namespace cue_sim

@@ -222,9 +222,5 @@ private:
   long game_version_ = 0;
 };
 
-/// Every ball referred to time 0: a table at rest, as at a strike from rest (the live table's
-/// physics time restarts there, and predictions start there too).
-physics::TableState<double> atTimeZero(physics::TableState<double> state);
-
 }  // namespace session
 }  // namespace cue_sim
