@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Plays a game of pool on table_node through its services, both players the same planner.
+"""Plays a game of pool on table_node through its services, both players the same planner, or
+replays a game the self_play program recorded.
 
 Each turn it asks ~predict_batch for the ghost-ball shot at every ball the player may hit first
 into every pocket, at two speeds (and full at 8 m/s on a break), and strikes the one whose
@@ -7,17 +8,33 @@ predicted ruling is best: a win, then a legal pot, then a shot without a foul; t
 equals. The cue ball is played where the referee leaves it. With --preview it then calls the next
 shot and draws its prediction in rviz without striking it.
 
+With --replay RECORD_DIR (a directory `self_play --out` wrote) it starts the game with the record's
+rack seed and first player, and for every shot places the cue ball where the record had it (when
+the player had it in hand), makes the record's call and strikes the record's executed strike. The
+node must rule on every shot as the record says, and leave the cue ball where the record has it;
+it stops, exit code 1, at the first shot that differs. The node must run the record's table and
+physics, with execution noise off (~noise/enabled false).
+
 Usage: rosrun cue_sim play_game.py [--rules eight_ball|nine_ball] [--shots N] [--seed S] [--preview]
+       rosrun cue_sim play_game.py --replay RECORD_DIR
 """
 import argparse
+import json
 import math
+import os
 import sys
 import time
 import xml.etree.ElementTree as ET
 
 import rospy
 from cue_sim.msg import GameState, Shot, TableState
-from cue_sim.srv import CallShot, Predict, PredictBatch, StartGame, Strike
+from cue_sim.srv import CallShot, PlaceCueBall, Predict, PredictBatch, StartGame, Strike
+from geometry_msgs.msg import Point
+
+#: Shorter than this [m] from where a record had it, the cue ball is already in place.
+PLACED = 1e-12
+#: A record's note when the shot cap stopped its game (the node has no cap).
+CAP_NOTE = "; the game is stopped at the cap of "
 
 
 def pocket_centres():
@@ -90,15 +107,69 @@ def best_shot(game, balls, pockets, radius, predict_batch):
     return tried[max(scored)[1]]
 
 
+def same_ruling(node, recorded):
+    """The node's ruling against the record's: the same foul, next player and reason (a capped
+    game's last reason carries the cap's note, which the node does not add)."""
+    reason = recorded["reason"].split(CAP_NOTE)[0]
+    return node.foul == recorded["foul"] and node.next_player == recorded["next_player"] and node.reason == reason
+
+
+def replay(record_dir, services, game_state, table_state):
+    """Replays the record in `record_dir`; 0 if the node ruled on every shot as recorded."""
+    with open(os.path.join(record_dir, "game.json")) as f:
+        record = json.load(f)
+    if rospy.get_param("/table/noise/enabled", False):
+        print("play_game: ~noise/enabled is on: a replay strikes exactly as recorded; turn it off", file=sys.stderr)
+        return 2
+    start_game, place_cue_ball, call_shot, strike = services
+    started = start_game(rules=record["rules"], players=record["players"], first_player=record["first_player"],
+                         seed=record["rack_seed"])
+    if not started.success:
+        print("play_game: " + started.message, file=sys.stderr)
+        return 1
+    print(f"{record['rules']} game {record['game']} on {record['table']}: {len(record['shots'])} shots", flush=True)
+    for k, shot in enumerate(record["shots"]):
+        game = game_state.when(lambda g: g.active and g.rules == record["rules"] and g.shots == k
+                               and not g.shot_in_progress)
+        balls = table_state.when(lambda s: not s.moving and s.header.stamp >= game.header.stamp)
+        cue = next(b.position for b in balls.balls if b.id == 0)
+        x, y = shot["cue_ball"]
+        if math.hypot(cue.x - x, cue.y - y) > PLACED:
+            if not game.ball_in_hand:  # where the last shot left it: the physics must agree
+                print(f"shot {k}: the cue ball is at ({cue.x}, {cue.y}), the record has it at ({x}, {y})")
+                return 1
+            placed = place_cue_ball(position=Point(x=x, y=y, z=0.0))
+            if not placed.success:
+                print(f"shot {k}: the cue ball cannot go where the record had it: {placed.message}")
+                return 1
+        called = call_shot(ball=shot["called_ball"], pocket=shot["called_pocket"], push_out=shot["push_out"])
+        if not called.success:
+            print(f"shot {k}: the record's call is refused: {called.message}")
+            return 1
+        s = shot["strike"]
+        struck = strike(ball_id=0, speed=s["speed"], phi=s["phi"], theta=s["theta"], a=s["a"], b=s["b"])
+        if not struck.success:
+            print(f"shot {k}: refused: {struck.message}")
+            return 1
+        if not same_ruling(struck.ruling, shot["ruling"]):
+            print(f"shot {k}: the node ruled '{struck.ruling.reason}', the record '{shot['ruling']['reason']}'")
+            return 1
+        print(f"shot {k}: {struck.ruling.reason}", flush=True)
+    game = game_state.when(lambda g: g.shots == len(record["shots"]) and not g.shot_in_progress)
+    print(f"replayed {len(record['shots'])} shots on the node: every ruling as recorded", flush=True)
+    return 0
+
+
 def main():
     parser = argparse.ArgumentParser(description="Plays a game of pool on table_node through its services.")
     parser.add_argument("--rules", default="eight_ball", choices=["eight_ball", "nine_ball"])
     parser.add_argument("--shots", type=int, default=-1, help="stop after this many shots (default: at the game's end)")
     parser.add_argument("--seed", type=int, default=0, help="the rack's jitter")
     parser.add_argument("--preview", action="store_true", help="at the end, call and preview the next shot")
+    parser.add_argument("--replay", metavar="RECORD_DIR", help="replay a game self_play recorded, checking each ruling")
     args = parser.parse_args(rospy.myargv()[1:])
     rospy.init_node("play_game", anonymous=True)
-    for name in ("start_game", "call_shot", "strike", "predict", "predict_batch"):
+    for name in ("start_game", "place_cue_ball", "call_shot", "strike", "predict", "predict_batch"):
         rospy.wait_for_service("/table/" + name, timeout=30)
     start_game = rospy.ServiceProxy("/table/start_game", StartGame)
     call_shot = rospy.ServiceProxy("/table/call_shot", CallShot)
@@ -107,6 +178,9 @@ def main():
     predict_batch = rospy.ServiceProxy("/table/predict_batch", PredictBatch)
     game_state = Latest("/table/game_state", GameState)
     table_state = Latest("/table/state", TableState)
+    if args.replay:
+        place_cue_ball = rospy.ServiceProxy("/table/place_cue_ball", PlaceCueBall)
+        return replay(args.replay, (start_game, place_cue_ball, call_shot, strike), game_state, table_state)
     pockets = pocket_centres()
     radius = rospy.get_param("/table/ball_radius")
 

@@ -35,7 +35,7 @@ Scene shotScene(const game::GameRecord& record, std::size_t k, const std::string
 namespace
 {
 /// Shot k as a player makes it (where the cue ball stood, the call, the strike as executed) and
-/// its ruling: what a replay on the node needs (scripts/replay_game.py). Doubles round-trip.
+/// its ruling: what a replay on the node needs (scripts/play_game.py --replay). Doubles round-trip.
 nlohmann::json turnJson(const game::GameRecord& record, std::size_t k, const physics::TableModel& table)
 {
   const game::Turn& turn = record.turns[k];

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string>
 
+#include "shell_commands.hpp"
 #include "table_client.hpp"
 
 namespace
@@ -35,22 +36,10 @@ std::string readmeBlock(const std::string& readme, const std::string& file)
   return readme.substr(start, close + 1 - start);
 }
 
-/// Runs a command; its exit code and what it printed.
-std::pair<int, std::string> run(const std::string& command)
-{
-  std::string output;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  char buffer[512];
-  while (pipe && std::fgets(buffer, sizeof buffer, pipe))
-    output += buffer;
-  const int status = pipe ? pclose(pipe) : -1;
-  return {WEXITSTATUS(status), output};
-}
-
 /// Runs an example, checks what it says, and that the table did what its prediction said.
 void runExample(TableClient& table, const std::string& command)
 {
-  const auto [code, output] = run(command);
+  const auto [code, output] = runCommand(command);
   ASSERT_EQ(code, 0) << output;
   std::smatch found;
   ASSERT_TRUE(std::regex_search(output, found, std::regex("best of 216 shots: .* pockets (-?[0-9]+)"))) << output;

@@ -8,7 +8,6 @@
 #include <cue_sim/GameState.h>
 #include <cue_sim/PlaceCueBall.h>
 #include <cue_sim/StartGame.h>
-#include <ros/master.h>
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
 #include <visualization_msgs/MarkerArray.h>
@@ -21,6 +20,7 @@
 #include "cue_sim/physics/physics_params.hpp"
 #include "cue_sim/table_description/table_catalog.hpp"
 #include "cue_sim/table_description/urdf_table_loader.hpp"
+#include "shell_commands.hpp"
 #include "table_client.hpp"
 
 namespace
@@ -134,40 +134,6 @@ private:
   std::vector<cue_sim::ExecutedShot> shots_;
   ros::Subscriber game_sub_, shots_sub_;
 };
-
-/// Runs a command; its exit code and what it printed.
-std::pair<int, std::string> run(const std::string& command)
-{
-  std::string output;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  char buffer[512];
-  while (pipe && std::fgets(buffer, sizeof buffer, pipe))
-    output += buffer;
-  const int status = pipe ? pclose(pipe) : -1;
-  return {WEXITSTATUS(status), output};
-}
-
-/// Whether `node` subscribes to `topic`, as the master says, asking for at most `timeout` s.
-bool subscribedBy(const std::string& topic, const std::string& node, double timeout)
-{
-  const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(timeout);
-  while (ros::WallTime::now() < until)
-  {
-    XmlRpc::XmlRpcValue request, response, payload;
-    request[0] = ros::this_node::getName();
-    if (ros::master::execute("getSystemState", request, response, payload, false))
-    {
-      XmlRpc::XmlRpcValue& subscribers = payload[1];
-      for (int i = 0; i < subscribers.size(); ++i)
-        if (static_cast<std::string>(subscribers[i][0]) == topic)
-          for (int j = 0; j < subscribers[i][1].size(); ++j)
-            if (static_cast<std::string>(subscribers[i][1][j]) == node)
-              return true;
-    }
-    ros::WallDuration(0.1).sleep();
-  }
-  return false;
-}
 
 cue_sim::BallState ballAt(int id, double x, double y)
 {
@@ -333,12 +299,7 @@ TEST(Game, ABagRecordsTheGameStatesAndTheRulings)
 {
   GameClient client;
   const std::string bag_path = std::string(CUE_SIM_TEST_DIR) + "/game_test.bag";
-  std::remove(bag_path.c_str());
-  std::thread recorder([&] {
-    const std::string command = "roslaunch cue_sim record.launch bag:=" + bag_path + " > " +
-                                std::string(CUE_SIM_TEST_DIR) + "/game_record_test.log 2>&1";
-    EXPECT_EQ(std::system(command.c_str()), 0);
-  });
+  BagRecording recording(bag_path, std::string(CUE_SIM_TEST_DIR) + "/game_record_test.log");
   // Every game state must reach the bag: wait until rosbag has subscribed to all three topics.
   for (const std::string topic : {"/table/game_state", "/table/shots", "/table/game_markers"})
     ASSERT_TRUE(subscribedBy(topic, "/record", 30)) << topic;
@@ -352,8 +313,7 @@ TEST(Game, ABagRecordsTheGameStatesAndTheRulings)
   ASSERT_TRUE(struck.success) << struck.message;
   client.afterShot(1);
   ros::WallDuration(0.5).sleep();
-  EXPECT_EQ(std::system("rosnode kill /record > /dev/null 2>&1"), 0);
-  recorder.join();
+  recording.stop();
   ASSERT_TRUE(client.end().success);
 
   rosbag::Bag bag(bag_path, rosbag::bagmode::Read);
@@ -456,7 +416,7 @@ TEST(Game, PlannersPlayWholeGamesThroughTheServices)
 // scripts/play_game.py, as the README runs it: a whole game to its end through the services.
 TEST(Game, ThePythonPlayerFinishesAGame)
 {
-  const auto [code, output] = run("rosrun cue_sim play_game.py --rules nine_ball --seed 5");
+  const auto [code, output] = runCommand("rosrun cue_sim play_game.py --rules nine_ball --seed 5");
   EXPECT_EQ(code, 0) << output;
   EXPECT_NE(output.find("started nine_ball: ann against bob"), std::string::npos) << output;
   EXPECT_NE(output.find("shot 1: ann"), std::string::npos) << output;
@@ -465,20 +425,21 @@ TEST(Game, ThePythonPlayerFinishesAGame)
 }
 
 // Self-play's records (the self_play program, execution noise on) replayed on the node with
-// scripts/replay_game.py: the node's referee rules on every shot as the record says, and every
+// scripts/play_game.py --replay: the node's referee rules on every shot as the record says, and every
 // cue ball the physics leaves is where the record has it, bit for bit.
 TEST(GameReplay, SelfPlayRecordsReplayOnTheNodeWithTheSameRulings)
 {
   const std::string dir = std::string(CUE_SIM_TEST_DIR) + "/game_replay_records";
   std::system(("rm -rf '" + dir + "'").c_str());
-  const auto [played, output] = run("rosrun cue_sim self_play --games 2 --seed 4 --out '" + dir + "'");
+  const auto [played, output] = runCommand("rosrun cue_sim self_play --games 2 --seed 4 --out '" + dir + "'");
   ASSERT_EQ(played, 0) << output;
   for (const std::string game : {"eight_ball_0", "eight_ball_1", "nine_ball_0", "nine_ball_1"})
   {
-    const auto [code, replay] = run("rosrun cue_sim replay_game.py '" + dir + "/" + game + "'");
+    const auto [code, replay] = runCommand("rosrun cue_sim play_game.py --replay '" + dir + "/" + game + "'");
     EXPECT_EQ(code, 0) << game << ":\n" << replay;
     EXPECT_NE(replay.find("every ruling as recorded"), std::string::npos) << replay;
-    std::printf("%s: %s", game.c_str(), replay.substr(replay.rfind("replayed")).c_str());
+    const std::size_t summary = replay.rfind("replayed");
+    std::printf("%s: %s", game.c_str(), summary == std::string::npos ? "" : replay.substr(summary).c_str());
   }
 }
 

@@ -23,6 +23,7 @@
 #include "cue_sim/physics/engine.hpp"
 #include "cue_sim/table_description/urdf_table_loader.hpp"
 #include "physics_of_msgs.hpp"
+#include "shell_commands.hpp"
 #include "table_client.hpp"
 
 namespace
@@ -241,20 +242,14 @@ TEST_F(SimControlTest, EveryBallTransformInTheBagIsTheExactTrajectoryAtItsStamp)
   const cue_sim::TableState rack = *table_.atRest(10);
   ASSERT_EQ(rack.balls.size(), ids.size());
   const std::string bag_path = std::string(CUE_SIM_TEST_DIR) + "/sim_shot_test.bag";
-  std::remove(bag_path.c_str());
-  std::thread recorder([&] {
-    const std::string command = "roslaunch cue_sim record.launch bag:=" + bag_path + " > " +
-                                std::string(CUE_SIM_TEST_DIR) + "/sim_record_test.log 2>&1";
-    EXPECT_EQ(std::system(command.c_str()), 0);
-  });
+  BagRecording recording(bag_path, std::string(CUE_SIM_TEST_DIR) + "/sim_record_test.log");
   ros::WallDuration(2.5).sleep();  // let rosbag subscribe while the table waits
   const cue_sim::Shot shot = TableClient::shot(0, 1.5, 0.05, 0.1, 0.2, -0.1);
   const cue_sim::Strike::Response struck = table_.strike(shot);
   ASSERT_TRUE(struck.success) << struck.message;
   table_.atRest(60);
   ros::WallDuration(0.5).sleep();
-  EXPECT_EQ(std::system("rosnode kill /record > /dev/null 2>&1"), 0);
-  recorder.join();
+  recording.stop();
 
   // The same engine, in this process: the table from robot_description, the node's parameters.
   std::string urdf;

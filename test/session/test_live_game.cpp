@@ -6,9 +6,7 @@
 
 #include <cmath>
 
-#include "cue_sim/session/live_table.hpp"
-#include "cue_sim/table_description/table_catalog.hpp"
-#include "cue_sim/table_description/urdf_table_loader.hpp"
+#include "live_table_fixtures.hpp"
 
 namespace cue_sim
 {
@@ -16,33 +14,14 @@ namespace session
 {
 namespace
 {
-using physics::Engine;
-
-constexpr Stamp kSecond = 1000000000;
-constexpr Stamp kStart = 1000 * kSecond;
-
-std::shared_ptr<const Engine<double>> engineOn(const std::string& table)
-{
-  return std::make_shared<const Engine<double>>(
-      std::make_shared<const physics::TableModel>(tableFromUrdfFile(tableUrdfPath(table))),
-      physics::PhysicsParams<double>());
-}
+using fixtures::ballAt;
+using fixtures::engineOn;
+using fixtures::kSecond;
+using fixtures::kStart;
 
 Shot cueShot(double speed, double phi)
 {
-  Shot s;
-  s.ball_id = 0;
-  s.strike.speed = speed;
-  s.strike.phi = phi;
-  return s;
-}
-
-BallInput ballAt(int id, double x, double y)
-{
-  BallInput b;
-  b.id = id;
-  b.position = physics::Vec3<double>(x, y, 0);
-  return b;
+  return fixtures::shot(0, speed, phi);
 }
 
 const physics::Pocket& pocketNamed(const physics::TableModel& table, const std::string& name)

@@ -6,9 +6,7 @@
 #include <limits>
 
 #include "cue_sim/physics/rack.hpp"
-#include "cue_sim/session/live_table.hpp"
-#include "cue_sim/table_description/table_catalog.hpp"
-#include "cue_sim/table_description/urdf_table_loader.hpp"
+#include "live_table_fixtures.hpp"
 
 namespace cue_sim
 {
@@ -20,33 +18,11 @@ using physics::Ball;
 using physics::Engine;
 using physics::PhysicsParams;
 
-constexpr Stamp kSecond = 1000000000;
-constexpr Stamp kStart = 1000 * kSecond;
-
-std::shared_ptr<const Engine<double>> engineOn(const std::string& table, const PhysicsParams<double>& params = {})
-{
-  return std::make_shared<const Engine<double>>(
-      std::make_shared<const physics::TableModel>(tableFromUrdfFile(tableUrdfPath(table))), params);
-}
-
-Shot shot(int id, double speed, double phi, double a = 0, double b = 0)
-{
-  Shot s;
-  s.ball_id = id;
-  s.strike.speed = speed;
-  s.strike.phi = phi;
-  s.strike.a = a;
-  s.strike.b = b;
-  return s;
-}
-
-BallInput ballAt(int id, double x, double y)
-{
-  BallInput b;
-  b.id = id;
-  b.position = physics::Vec3<double>(x, y, 0);
-  return b;
-}
+using fixtures::ballAt;
+using fixtures::engineOn;
+using fixtures::kSecond;
+using fixtures::kStart;
+using fixtures::shot;
 
 /// Every number of every ball, bit for bit.
 void expectSameBalls(const std::vector<Ball<double>>& a, const std::vector<Ball<double>>& b)
