@@ -40,3 +40,20 @@ cue_sim_stop_all() {
   for p in "${cue_sim_pids[@]}"; do kill "$p" 2>/dev/null || true; done
   wait 2>/dev/null || true
 }
+
+# A screenshot of rviz: the table launched with rviz under Xvfb (its master on port $1, more
+# launch arguments in $2), once its services and rviz are up the commands $3 run in that
+# display's shell, then the screen goes to $4.
+cue_sim_rviz_screenshot() {
+  local port="$1" launch_args="$2" commands="$3" out="$4"
+  ROS_MASTER_URI="http://localhost:$port" xvfb-run -a -s "-screen 0 1280x900x24" bash -c "
+    roslaunch cue_sim table.launch rviz:=true $launch_args > '$CUE_SIM_BUILD/screenshot_$port.log' 2>&1 &
+    launch=\$!
+    trap 'kill \$launch 2>/dev/null; wait \$launch 2>/dev/null' EXIT
+    for i in \$(seq 60); do rosservice list 2>/dev/null | grep -q /table/predict_batch && break; sleep 0.5; done
+    sleep 6   # rviz start-up
+    $commands
+    import -window root '$out'
+  "
+  echo "screenshot: $out"
+}

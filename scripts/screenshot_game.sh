@@ -9,15 +9,7 @@ source "$here/env.sh"
 cue_sim_source_devel
 out="$(realpath -m "${1:-$CUE_SIM_ROOT/doc/rviz_game.png}")"
 shots="${2:-3}"
-export ROS_MASTER_URI=http://localhost:11393
-xvfb-run -a -s "-screen 0 1280x900x24" bash -c "
-  roslaunch cue_sim table.launch rviz:=true > '$CUE_SIM_BUILD/screenshot_game_launch.log' 2>&1 &
-  launch=\$!
-  trap 'kill \$launch 2>/dev/null; wait \$launch 2>/dev/null' EXIT
-  for i in \$(seq 60); do rosservice list 2>/dev/null | grep -q /table/start_game && break; sleep 0.5; done
-  sleep 6   # rviz start-up
+cue_sim_rviz_screenshot 11393 "" "
   rosrun cue_sim play_game.py --shots $shots --preview > '$CUE_SIM_BUILD/screenshot_game_play.log' 2>&1
   sleep 1.5
-  import -window root '$out'
-"
-echo "screenshot: $out"
+" "$out"

@@ -9,13 +9,7 @@ here="$(dirname "${BASH_SOURCE[0]}")"
 source "$here/env.sh"
 cue_sim_source_devel
 out="$(realpath -m "${1:-$CUE_SIM_ROOT/doc/rviz_preview.png}")"
-export ROS_MASTER_URI=http://localhost:11392
-xvfb-run -a -s "-screen 0 1280x900x24" bash -c "
-  roslaunch cue_sim table.launch rviz:=true use_sim_time:=true > '$CUE_SIM_BUILD/screenshot_preview.log' 2>&1 &
-  launch=\$!
-  trap 'kill \$launch 2>/dev/null; wait \$launch 2>/dev/null' EXIT
-  for i in \$(seq 60); do rosservice list 2>/dev/null | grep -q /table/strike_cue && break; sleep 0.5; done
-  sleep 6   # rviz start-up
+cue_sim_rviz_screenshot 11392 "use_sim_time:=true" "
   rosservice call /table/pause '{data: true}' > /dev/null
   # A cut on the 1 ball, with draw and a little left English.
   rosservice call /table/predict '{shot: {ball_id: 0, speed: 3.0, phi: 0.05, theta: 0.1, a: -0.1, b: -0.3}}' > /dev/null
@@ -24,6 +18,4 @@ xvfb-run -a -s "-screen 0 1280x900x24" bash -c "
   rosservice call /table/strike_cue '{cue: {header: {frame_id: table}, pose: {position: {x: -0.5538, y: -0.0029, z: 0.028575}, orientation: {x: 0, y: 0, z: 0.0249974, w: 0.9996875}}}, speed: 3.0}' > /dev/null
   rosservice call /table/step '{duration: 0.02}' > /dev/null
   sleep 2
-  import -window root '$out'
-"
-echo "screenshot: $out"
+" "$out"
