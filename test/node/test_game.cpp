@@ -271,9 +271,22 @@ TEST(Game, AScratchGivesBallInHandAnywhereWhichPlaceCueBallChecks)
   EXPECT_FALSE(push.success);
   EXPECT_NE(push.message.find("2.4"), std::string::npos) << push.message;
 
-  const auto struck = client.strike(TableClient::shot(0, 2.0, std::atan2(pocket.y() - cue.y(), pocket.x() - cue.x())));
+  // Struck from a cue pose (~strike_cue, refereed like ~strike): level, its tip 1 cm short of the
+  // cue ball's centre height, along the line to the side pocket.
+  const double phi = std::atan2(pocket.y() - cue.y(), pocket.x() - cue.x());
+  geometry_msgs::PoseStamped pose;
+  pose.header.frame_id = "table";
+  pose.pose.position.x = cue.x() - (kR + 0.01) * std::cos(phi);
+  pose.pose.position.y = cue.y() - (kR + 0.01) * std::sin(phi);
+  pose.pose.position.z = kR;
+  pose.pose.orientation.z = std::sin(phi / 2);
+  pose.pose.orientation.w = std::cos(phi / 2);
+  const auto struck = client.strikeCue(pose, 2.0);
   ASSERT_TRUE(struck.success) << struck.message;
+  EXPECT_EQ(struck.shot.ball_id, 0);
+  ASSERT_TRUE(struck.ruling.refereed);
   EXPECT_TRUE(struck.ruling.foul);
+  EXPECT_NE(struck.ruling.rule.find("6.1"), std::string::npos) << struck.ruling.reason;
   EXPECT_EQ(struck.ruling.next_player, 1);
   EXPECT_EQ(struck.ruling.ball_in_hand, "anywhere");
   const auto game = client.afterShot(1);
