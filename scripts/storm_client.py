@@ -2,7 +2,9 @@
 # A storm of mixed requests on one table_node, good and hostile, from several threads at once:
 # strikes (and NaN, too fast, unknown balls), cues in frames tf does not know, predictions with
 # samples, batches up to a size, whole tables (and balls at 1e308 m/s), single balls placed and
-# removed, racks with jitter, pause and step, reconfigure (and a NaN real-time factor).
+# removed, racks with jitter, pause and step, reconfigure (and a NaN real-time factor), games
+# started (unknown rules, odd players, hostile positions) and ended, cue balls placed in hand
+# (NaN, off the table) and calls (unknown balls and pockets, push-outs out of turn).
 #   storm_client.py SECONDS [THREADS] [MAX_BATCH]
 # Prints progress every 10 s to stderr and a summary line to stdout; exits 1 if a call failed
 # outright (the node did not answer).
@@ -19,8 +21,8 @@ from geometry_msgs.msg import Point, PoseStamped
 from std_srvs.srv import SetBool, Trigger
 
 from cue_sim.msg import BallState, Shot
-from cue_sim.srv import (PlaceBall, Predict, PredictBatch, Rack, RemoveBall, SetState, Step, Strike,
-                         StrikeCue)
+from cue_sim.srv import (CallShot, PlaceBall, PlaceCueBall, Predict, PredictBatch, Rack, RemoveBall, SetState,
+                         StartGame, Step, Strike, StrikeCue)
 
 NAN = float("nan")
 
@@ -70,10 +72,14 @@ class Storm:
             "pause": rospy.ServiceProxy(ns + "pause", SetBool),
             "step": rospy.ServiceProxy(ns + "step", Step),
             "reconfigure": rospy.ServiceProxy(ns + "set_parameters", Reconfigure),
+            "start_game": rospy.ServiceProxy(ns + "start_game", StartGame),
+            "end_game": rospy.ServiceProxy(ns + "end_game", Trigger),
+            "place_cue_ball": rospy.ServiceProxy(ns + "place_cue_ball", PlaceCueBall),
+            "call_shot": rospy.ServiceProxy(ns + "call_shot", CallShot),
         }
 
     KINDS = ["strike", "strike", "cue", "predict", "batch", "set_state", "place", "remove", "rack", "reset",
-             "pause", "reconfigure"]
+             "pause", "reconfigure", "game", "place_cue", "call"]
 
     def request(self, rng, kind):
         s = self.services
@@ -109,6 +115,19 @@ class Storm:
                              jitter=rng.choice([0.0, 5e-6, 1.0]), seed=rng.randrange(100)).success
         if kind == "reset":
             return s["reset"]().success
+        if kind == "game":
+            if rng.random() < 0.4:
+                return s["end_game"]().success
+            balls = [] if rng.random() < 0.7 else [ball(rng, i, rng.random() < 0.3) for i in rng.sample(range(16), 4)]
+            return s["start_game"](rules=rng.choice(["eight_ball", "nine_ball", "snooker"]),
+                                   players=rng.choice([[], ["a", "b"], ["a"], ["", "b"]]),
+                                   first_player=rng.choice([0, 1, 7]), seed=rng.randrange(100), balls=balls).success
+        if kind == "place_cue":
+            where = Point(rng.choice([rng.uniform(-1, 1), NAN, 1e308]), rng.uniform(-0.5, 0.5), 0.0)
+            return s["place_cue_ball"](position=where).success
+        if kind == "call":
+            return s["call_shot"](ball=rng.randrange(-2, 17), pocket=rng.choice(["", "pocket_foot_ypos", "nowhere"]),
+                                  push_out=rng.random() < 0.2).success
         if kind == "pause":
             s["pause"](data=True)
             ok = s["step"](duration=rng.choice([0.1, 0.5, NAN, 100.0])).success

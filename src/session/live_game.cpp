@@ -99,9 +99,7 @@ Outcome LiveTable::endGame(Stamp now)
 {
   if (!game_)
     return Outcome::refused("no game is on");
-  advanceTo(now);
-  if (pending_turn_)
-    finishGameShot(now);
+  advanceTo(now);  // a shot still rolling rolls on, in free play, unrefereed
   const std::string rules = game_->state().rules;
   game_.reset();
   pending_turn_.reset();

@@ -291,6 +291,30 @@ TEST_F(LiveGameTest, AWonGameTakesNoMoreShotsAndEndingItFreesTheTable)
   EXPECT_TRUE(table_.rack(rack, rest + 10 * kSecond).success);
 }
 
+TEST_F(LiveGameTest, EndingAGameMidShotLetsTheBallsRollOnUnrefereed)
+{
+  GameRequest request;
+  request.rules = "eight_ball";
+  ASSERT_TRUE(table_.startGame(request, kStart).success);
+  ASSERT_TRUE(table_.strike(cueShot(8, 0.002), kStart + kSecond).success);
+  const Stamp mid = kStart + kSecond + kSecond / 2;
+  table_.advanceTo(mid);
+  ASSERT_FALSE(table_.atRest());
+  const std::vector<physics::Ball<double>> rolling = table_.balls();
+  ASSERT_TRUE(table_.endGame(mid).success);
+  EXPECT_EQ(table_.game(), nullptr);
+  EXPECT_FALSE(table_.pendingTurn());
+  EXPECT_FALSE(table_.atRest());
+  ASSERT_EQ(table_.balls().size(), rolling.size());
+  for (std::size_t i = 0; i < rolling.size(); ++i)
+  {
+    EXPECT_EQ(table_.balls()[i].r, rolling[i].r) << "ball " << rolling[i].id;
+    EXPECT_EQ(table_.balls()[i].v, rolling[i].v) << "ball " << rolling[i].id;
+  }
+  runToRest(mid);
+  EXPECT_TRUE(table_.atRest());
+}
+
 }  // namespace
 }  // namespace session
 }  // namespace cue_sim

@@ -173,7 +173,7 @@ public:
   // spotted, a new rack, the cue ball in hand). The table is edited only through the game
   // (~rack, ~reset, ~set_state, ~place_ball and ~remove_ball are refused until endGame).
   Outcome startGame(const GameRequest& request, Stamp now);
-  /// Back to free play; the balls stay where they are.
+  /// Back to free play; the balls stay where they are (a shot in play rolls on, unrefereed).
   Outcome endGame(Stamp now);
   /// Moves the cue ball in hand to p, at rest.
   Outcome placeCueBall(const Eigen::Vector2d& p, Stamp now);
