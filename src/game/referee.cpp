@@ -1,3 +1,7 @@
+// What every ruleset shares. What a simulator cannot judge it does not call: intent (a deliberate
+// foul, unsportsmanlike conduct) is not judged, so every foul found is a standard foul; fouls a
+// simulated player cannot commit (a double hit or push shot, touching a ball, a ball jumped off the
+// table) never happen; a cue ball placed where the rules forbid is refused, not fouled.
 #include "cue_sim/game/referee.hpp"
 
 #include <algorithm>
