@@ -47,8 +47,8 @@ std::vector<int> GamePlay::legalFirst() const
 
 std::string GamePlay::setPosition(const physics::TableState<double>& balls, bool break_shot)
 {
-  if (balls.indexOf(0) < 0)
-    return "a position needs the cue ball (id 0)";
+  if (balls.indexOf(0) < 0 || !balls.balls[static_cast<std::size_t>(balls.indexOf(0))].inPlay())
+    return "a position needs the cue ball (id 0) on the cloth";
   if (const std::string why = engine_->whyInvalid(balls); !why.empty())
     return why;
   if (balls.anyMoving())

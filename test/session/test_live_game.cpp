@@ -120,6 +120,13 @@ TEST_F(LiveGameTest, BadGameRequestsAreRefusedNamingTheField)
   request.balls = {ballAt(1, 0.3, 0.1)};
   r = table_.startGame(request, kStart);
   EXPECT_NE(r.message.find("cue ball"), std::string::npos) << r.message;
+  BallInput pocketed_cue = ballAt(0, 0, 0);
+  pocketed_cue.pocketed = true;
+  pocketed_cue.pocket = table_.table().pockets().front().name;
+  request.balls.push_back(pocketed_cue);
+  r = table_.startGame(request, kStart);
+  EXPECT_FALSE(r.success);
+  EXPECT_NE(r.message.find("cue ball (id 0) on the cloth"), std::string::npos) << r.message;
   EXPECT_EQ(table_.game(), nullptr);
   EXPECT_FALSE(table_.callShot(GameCall{}, kStart).success);
   EXPECT_FALSE(table_.placeCueBall(Eigen::Vector2d(-0.5, 0), kStart).success);
