@@ -123,7 +123,7 @@ Turn GamePlay::judge(const physics::CueStrike<double>& strike, bool push_out,
   turn.called_ball = state_.called_ball;
   turn.called_pocket = state_.called_pocket;
   turn.events = std::move(events);
-  turn.facts = readShot(turn.events);
+  turn.facts = readShot(turn.events, &engine_->table());
   turn.ruling = judgeShot(*rules_, state_, objectBallsOnTable(table_), Shot{turn.facts, push_out});
   if (max_shots_ > 0 && state_.shots + 1 >= max_shots_ && !turn.ruling.game_over)
   {

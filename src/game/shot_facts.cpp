@@ -8,9 +8,19 @@ namespace game
 {
 using physics::EventKind;
 
-ShotFacts readShot(const std::vector<physics::Event<double>>& events)
+std::string ShotFacts::pocketName(int index) const
+{
+  if (index >= 0 && index < static_cast<int>(pocket_names.size()))
+    return pocket_names[static_cast<std::size_t>(index)];
+  return "pocket " + std::to_string(index);
+}
+
+ShotFacts readShot(const std::vector<physics::Event<double>>& events, const physics::TableModel* table)
 {
   ShotFacts facts;
+  if (table)
+    for (const auto& p : table->pockets())
+      facts.pocket_names.push_back(p.name);
   std::set<int> to_rail;
   for (const auto& e : events)
   {

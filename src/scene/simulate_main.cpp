@@ -87,7 +87,7 @@ int main(int argc, char** argv)
       // The referee rules on the shot, and the state the game goes on from follows the ruling.
       const cue_sim::game::Ruling ruling =
           cue_sim::game::judgeShot(*cue_sim::game::makeRules(scene.game->rules), *scene.game, on_table,
-                                   {cue_sim::game::readShot(events), scene.shot->push_out});
+                                   {cue_sim::game::readShot(events, scene.table.get()), scene.shot->push_out});
       report["ruling"] = cue_sim::rulingJson(ruling);
       report["game"] = cue_sim::gameStateJson(cue_sim::game::afterRuling(*scene.game, ruling));
     }

@@ -69,7 +69,7 @@ ShotFacts play(const std::vector<Ball<double>>& balls, const Eigen::Vector2d& ta
   cue.speed = speed;
   cue.phi = std::atan2(target.y() - from.y(), target.x() - from.x());
   engine().strike(s, 0, cue);
-  return readShot(engine().simulateToRest(s).events);
+  return readShot(engine().simulateToRest(s).events, &engine().table());
 }
 
 GameState eightBallAfterBreak(Group shooter_group)
@@ -187,7 +187,16 @@ TEST(Referee, TheEightBallEarlyLosesAndLastLegallyWins)
   cleared.called_pocket = f.pockets[0];
   EXPECT_EQ(judge(cleared, {8}, f).winner, 0);
   cleared.called_pocket = (f.pockets[0] + 1) % 6;
-  EXPECT_EQ(judge(cleared, {8}, f).winner, 1);
+  const Ruling wrong_pocket = judge(cleared, {8}, f);
+  EXPECT_EQ(wrong_pocket.winner, 1);
+  // The reason names both pockets as the table does.
+  const auto& pockets = engine().table().pockets();
+  EXPECT_NE(wrong_pocket.reason.find("dropped in " + pockets[static_cast<std::size_t>(f.pockets[0])].name),
+            std::string::npos)
+      << wrong_pocket.reason;
+  EXPECT_NE(wrong_pocket.reason.find("not the called " + pockets[static_cast<std::size_t>(cleared.called_pocket)].name),
+            std::string::npos)
+      << wrong_pocket.reason;
   // Pocketing the 8 with a scratch loses even when it was the object ball.
   ShotFacts scratch = f;
   scratch.scratch = true;

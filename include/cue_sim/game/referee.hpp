@@ -19,16 +19,21 @@ namespace game
 /// What a shot did, as the rules need it.
 struct ShotFacts
 {
-  int first_contact = -1;           ///< the first object ball the cue ball touched, -1 for none
-  std::vector<int> pocketed;        ///< object balls pocketed, in order (not the cue ball)
-  std::vector<int> pockets;         ///< the pocket each went into (TableModel::pockets index)
-  bool scratch = false;             ///< the cue ball was pocketed (WPA 6.1)
-  bool rail_after_contact = false;  ///< a ball met a cushion or jaw after the cue ball's first contact
-  int object_balls_to_rail = 0;     ///< distinct object balls that met a cushion or jaw, or were pocketed
+  int first_contact = -1;                 ///< the first object ball the cue ball touched, -1 for none
+  std::vector<int> pocketed;              ///< object balls pocketed, in order (not the cue ball)
+  std::vector<int> pockets;               ///< the pocket each went into (TableModel::pockets index)
+  bool scratch = false;                   ///< the cue ball was pocketed (WPA 6.1)
+  bool rail_after_contact = false;        ///< a ball met a cushion or jaw after the cue ball's first contact
+  int object_balls_to_rail = 0;           ///< distinct object balls that met a cushion or jaw, or were pocketed
+  std::vector<std::string> pocket_names;  ///< the table's pockets by index, for the rulings' text
+
+  /// The pocket's name (its URDF link), or "pocket <index>" without the table's names.
+  std::string pocketName(int index) const;
 };
 
-/// Reads a shot's events in time order (Engine::run's). The cue ball is ball 0.
-ShotFacts readShot(const std::vector<physics::Event<double>>& events);
+/// Reads a shot's events in time order (Engine::run's). The cue ball is ball 0. With `table`, the
+/// rulings name its pockets.
+ShotFacts readShot(const std::vector<physics::Event<double>>& events, const physics::TableModel* table = nullptr);
 
 /// A shot as the referee sees it: what happened, and what the shooter declared.
 struct Shot

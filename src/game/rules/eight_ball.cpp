@@ -65,7 +65,7 @@ public:
     foul.groups = state.groups;
     const auto eight = std::find(f.pocketed.begin(), f.pocketed.end(), 8);
     if (eight != f.pocketed.end())
-      return eightPocketed(state, legal, foul, f.pockets[static_cast<std::size_t>(eight - f.pocketed.begin())]);
+      return eightPocketed(state, legal, foul, f, f.pockets[static_cast<std::size_t>(eight - f.pocketed.begin())]);
     if (foul.foul)
       return foul;
     return judgeLegalShot(state, f);
@@ -125,7 +125,8 @@ private:
   /// The 8-ball went down after the break: the shooter wins if it was the object ball (the group
   /// cleared before the shot), no foul was committed and it dropped in the called pocket;
   /// otherwise the shooter loses the rack (WPA 3, losing the rack).
-  Ruling eightPocketed(const GameState& state, const std::vector<int>& legal, Ruling foul, int pocket) const
+  Ruling eightPocketed(const GameState& state, const std::vector<int>& legal, Ruling foul, const ShotFacts& f,
+                       int pocket) const
   {
     const int shooter = state.turn;
     Ruling r;
@@ -138,7 +139,7 @@ private:
     {
       r.rule = "WPA 3";
       r.winner = shooter;
-      r.reason = "the 8-ball is pocketed legally in pocket " + std::to_string(pocket) + ": the shooter wins the rack";
+      r.reason = "the 8-ball is pocketed legally in " + f.pocketName(pocket) + ": the shooter wins the rack";
       return r;
     }
     r.foul = foul.foul;
@@ -158,8 +159,8 @@ private:
     else
     {
       r.rule = "WPA 1.6";
-      r.reason = "the 8-ball dropped in pocket " + std::to_string(pocket) + ", not the called pocket " +
-                 std::to_string(state.called_pocket) + ", which loses the rack (WPA 1.6, WPA 3)";
+      r.reason = "the 8-ball dropped in " + f.pocketName(pocket) + ", not the called " +
+                 f.pocketName(state.called_pocket) + ", which loses the rack (WPA 1.6, WPA 3)";
     }
     return r;
   }
