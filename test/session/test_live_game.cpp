@@ -298,6 +298,46 @@ TEST_F(LiveGameTest, AWonGameTakesNoMoreShotsAndEndingItFreesTheTable)
   EXPECT_TRUE(table_.rack(rack, rest + 10 * kSecond).success);
 }
 
+TEST_F(LiveGameTest, APushOutCalledAfterALegalBreakIsRuledAsOne)
+{
+  // Racks until a break is legal and leaves the game on (the 9 not down).
+  Stamp t = kStart;
+  bool ready = false;
+  for (std::uint32_t seed = 0; seed < 10 && !ready; ++seed)
+  {
+    GameRequest request;
+    request.rules = "nine_ball";
+    request.seed = seed;
+    ASSERT_TRUE(table_.startGame(request, t).success);
+    const Eigen::Vector2d cue =
+        table_.game()->table().balls[static_cast<std::size_t>(table_.game()->table().indexOf(0))].r.head<2>();
+    const Eigen::Vector2d foot = table_.table().footSpot();
+    ASSERT_TRUE(table_.strike(cueShot(8, std::atan2(foot.y() - cue.y(), foot.x() - cue.x())), t + kSecond).success);
+    t = runToRest(t + kSecond) + kSecond;
+    ready = table_.game()->state().push_out_allowed && !table_.game()->state().over;
+  }
+  ASSERT_TRUE(ready) << "no legal 9-ball break in 10 racks";
+  GameCall push;
+  push.push_out = true;
+  const Outcome called = table_.callShot(push, t);
+  ASSERT_TRUE(called.success) << called.message;
+  EXPECT_TRUE(table_.pushOutCalled());
+  const int shooter = table_.game()->state().turn;
+  // A soft roll towards the middle of the table: no scratch (a scratch stays a foul, WPA 2.4).
+  const Eigen::Vector2d cue =
+      table_.game()->table().balls[static_cast<std::size_t>(table_.game()->table().indexOf(0))].r.head<2>();
+  const Eigen::Vector2d middle = table_.table().clothCentre();
+  const StrikeOutcome pushed =
+      table_.strike(cueShot(0.3, std::atan2(middle.y() - cue.y(), middle.x() - cue.x())), t + kSecond);
+  ASSERT_TRUE(pushed.success) << pushed.message;
+  EXPECT_EQ(pushed.ruling.rule, "WPA 2.4") << pushed.ruling.reason;
+  runToRest(t + kSecond);
+  EXPECT_FALSE(table_.pushOutCalled());
+  EXPECT_FALSE(table_.game()->state().push_out_allowed);  // only the shot right after the break
+  EXPECT_FALSE(pushed.ruling.foul) << pushed.ruling.reason;
+  EXPECT_EQ(table_.game()->state().turn, 1 - shooter);  // the simulator's choice after a push-out
+}
+
 TEST_F(LiveGameTest, EndingAGameMidShotLetsTheBallsRollOnUnrefereed)
 {
   GameRequest request;
