@@ -32,9 +32,17 @@ GamePlay::GamePlay(const physics::Engine<double>& engine, const std::string& rul
   rack();
 }
 
+Eigen::Vector2d breakSpot(const physics::TableModel& table, double ball_radius)
+{
+  return table.headSpot() - Eigen::Vector2d(ball_radius, 0);
+}
+
 void GamePlay::rack()
 {
-  table_ = physics::rackLayout<double>(rules_->rack(), engine_->table(), engine_->params().ball_radius, rack_);
+  const double R = engine_->params().ball_radius;
+  table_ = physics::rackLayout<double>(rules_->rack(), engine_->table(), R, rack_);
+  auto& cue = table_.balls[static_cast<std::size_t>(table_.indexOf(0))];
+  cue.r.head<2>() = breakSpot(engine_->table(), R);  // the rack's head spot is on the string, not behind it
   ++rack_.seed;
   state_.break_shot = true;
   state_.ball_in_hand = BallInHand::BehindHeadString;
@@ -159,14 +167,14 @@ void GamePlay::returnCueBall()
   cue.v.setZero();
   cue.w.setZero();
   cue.time = table_.time;
-  const Eigen::Vector2d head = engine_->table().headSpot();
+  const Eigen::Vector2d start = breakSpot(engine_->table(), R);
   physics::TableState<double> others = table_;
   others.balls.erase(others.balls.begin() + others.indexOf(0));
-  // Behind the head string, stepping back from the head spot until it stands.
-  for (double back = R; back < engine_->table().clothLength() / 4; back += R)
+  // Behind the head string, stepping back from the break spot until it stands.
+  for (double back = 0; back < engine_->table().clothLength() / 4; back += R)
     for (const double side : {0.0, 2.0 * R, -2.0 * R, 4.0 * R, -4.0 * R})
     {
-      const Eigen::Vector2d p(head.x() - back, head.y() + side);
+      const Eigen::Vector2d p(start.x() - back, start.y() + side);
       if (whyNotInHand(engine_->table(), R, others, p, BallInHand::BehindHeadString).empty())
       {
         cue.r = physics::Vec3<double>(p.x(), p.y(), R);

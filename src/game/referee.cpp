@@ -245,8 +245,8 @@ std::string whyNotInHand(const physics::TableModel& table, double ball_radius, c
   else if (place == BallInHand::None)
     why << "the cue ball is not in hand: it is played where it lies";
   else if (place == BallInHand::BehindHeadString && !(p.x() < table.headStringX()))
-    why << "the cue ball must be placed behind the head string (x < " << table.headStringX() << " m), got x = " << p.x()
-        << " m";
+    why << "the cue ball must be placed behind the head string, not on it (WPA 8.1: x < " << table.headStringX()
+        << " m), got x = " << p.x() << " m";
   else if (const std::string where = table.whyNotPlaceable(p, ball_radius); !where.empty())
     why << where;
   else if (!clearOfBalls(state, p, ball_radius, 0))

@@ -99,7 +99,7 @@ Choice breakChoice(const GamePlay& game)
   Choice c;
   const auto& table = game.engine().table();
   if (game.state().ball_in_hand != BallInHand::None)
-    c.cue_ball = table.headSpot();
+    c.cue_ball = breakSpot(table, game.engine().params().ball_radius);
   const Eigen::Vector2d from = c.cue_ball.value_or(positionOf(game, 0));
   c.strike = aimedAt(from, table.footSpot(), PottingPlanner::kBreakSpeed);
   return c;

@@ -77,6 +77,13 @@ TEST_F(LiveGameTest, StartingAGameRacksForTheBreakAndRefusesFreeEdits)
   EXPECT_TRUE(state.break_shot);
   EXPECT_EQ(state.ball_in_hand, game::BallInHand::BehindHeadString);
   EXPECT_EQ(table_.balls().size(), 16u);
+  // The cue ball stands behind the head string, not on it (WPA 8.1): where it is, it may be placed.
+  const auto& cue = table_.game()->table().balls[static_cast<std::size_t>(table_.game()->table().indexOf(0))];
+  EXPECT_LT(cue.r.x(), table_.table().headStringX());
+  EXPECT_TRUE(table_.placeCueBall(cue.r.head<2>(), kStart).success);
+  const Outcome on_string = table_.placeCueBall(table_.table().headSpot(), kStart);
+  EXPECT_FALSE(on_string.success);
+  EXPECT_NE(on_string.message.find("not on it (WPA 8.1"), std::string::npos) << on_string.message;
 
   const long version = table_.layoutVersion();
   RackRequest rack;

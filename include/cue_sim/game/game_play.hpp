@@ -37,11 +37,16 @@ struct Turn
 /// seed.
 physics::RackOptions gameRack(unsigned seed = 0);
 
+/// Where a game puts the cue ball for a break: on the long string, one ball radius behind the head
+/// spot. Behind the head string is the area between the head rail and the string, not including
+/// the string (WPA 8.1), so the head spot itself is not in the kitchen.
+Eigen::Vector2d breakSpot(const physics::TableModel& table, double ball_radius);
+
 /// Copyable: a copy plays on from the same position (what a planner tries shots on).
 class GamePlay
 {
 public:
-  /// A new game of `rules` on `engine`'s table, racked, the cue ball on the head spot and in
+  /// A new game of `rules` on `engine`'s table, racked, the cue ball on the break spot and in
   /// hand behind the head string for `breaker`'s break (0 or 1). Throws std::invalid_argument for unknown
   /// rules or a table without pockets. The engine must outlive the game.
   GamePlay(const physics::Engine<double>& engine, const std::string& rules,
@@ -85,7 +90,7 @@ public:
 
 private:
   void rack();
-  /// The cue ball back on the cloth after a scratch: on the head spot, or the nearest free
+  /// The cue ball back on the cloth after a scratch: on the break spot, or the nearest free
   /// place behind it along the head string.
   void returnCueBall();
 

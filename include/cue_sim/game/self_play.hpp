@@ -29,7 +29,7 @@ struct Choice
 /// object ball (with the cue ball in hand, a clear path for the object ball is enough).
 int openShots(const GamePlay& game);
 
-/// Chooses a shot by trying them. On a break: the cue ball on the head spot, 8 m/s at the apex.
+/// Chooses a shot by trying them. On a break: the cue ball on the break spot, 8 m/s at the apex.
 /// Otherwise, for every ball it may hit first and every pocket, the ghost-ball aim (cut at most
 /// kMaxCut) at two speeds; with the cue ball in hand it is placed straight behind the ghost ball.
 /// Each candidate is played on a copy of the game without noise, and the best ruling wins: a won
