@@ -6,7 +6,7 @@ Each turn it asks ~predict_batch for the ghost-ball shot at every ball the playe
 into every pocket, at two speeds (and full at 8 m/s on a break), and strikes the one whose
 predicted ruling is best: a win, then a legal pot, then a shot without a foul; the slower among
 equals. The cue ball is played where the referee leaves it. With --preview it then calls the next
-shot and draws its prediction in rviz without striking it.
+shot (the first ball it pots, in its pocket) and draws its prediction in rviz without striking it.
 
 With --replay RECORD_DIR (a directory `self_play --out` wrote) it starts the game with the record's
 rack seed and first player, and for every shot places the cue ball where the record had it (when
@@ -27,7 +27,7 @@ import time
 import xml.etree.ElementTree as ET
 
 import rospy
-from cue_sim.msg import GameState, Shot, TableState
+from cue_sim.msg import Event, GameState, Shot, TableState
 from cue_sim.srv import CallShot, PlaceCueBall, Predict, PredictBatch, StartGame, Strike
 from geometry_msgs.msg import Point
 
@@ -209,10 +209,14 @@ def main():
     elif args.preview:
         balls = table_state.when(lambda s: not s.moving and s.header.stamp >= game.header.stamp)
         shot, ball, pocket = best_shot(game, balls, pockets, radius, predict_batch)
-        if not game.break_shot:  # nothing is called on a break (WPA 3.3)
-            call_shot(ball=ball, pocket=pocket)
+        # Call what the shot pots first (the aim may pot another ball), except on a break (WPA 3.3).
+        pots = [(e.ball_id, e.obstacle) for e in predict(shot=shot).prediction.events
+                if e.kind == Event.POCKETED and e.ball_id != 0]
+        if pots and not game.break_shot:
+            call_shot(ball=pots[0][0], pocket=pots[0][1])
         predicted = predict(shot=shot).prediction
-        print(f"next: {game.players[game.turn]} aims at ball {ball} into {pocket or 'no pocket'}; "
+        print(f"next: {game.players[game.turn]} aims at ball {ball} into {pocket or 'no pocket'}"
+              f"{f', calls ball {pots[0][0]} in {pots[0][1]}' if pots and not game.break_shot else ''}; "
               f"the referee would say: {predicted.ruling.reason}", flush=True)
     return 0
 

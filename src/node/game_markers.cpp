@@ -14,7 +14,7 @@ using visualization_msgs::Marker;
 /// Height of the markers drawn on the cloth [m]: above it, below a ball's equator.
 constexpr double kOnCloth = 0.002;
 /// From the cloth's edge to the middle of the text beside it [m]: its six lines clear the cushion.
-constexpr double kTextGap = 0.34;
+constexpr double kTextGap = 0.42;
 /// Radius of the ring drawn round a called pocket's centre [m], and its line's width.
 constexpr double kCallRing = 0.08, kCallLine = 0.008;
 
