@@ -13,6 +13,8 @@ PACKAGES=(
   python3-std-srvs python3-rosgraph-msgs python3-rospy python3-rostopic python3-rosnode rosbash python3-geometry-msgs python3-tf2-msgs python3-visualization-msgs
   liburdfdom-tools libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure python3-yaml
   libinteractive-markers-dev
+  # the Python module (pybind11, NumPy) and its tests
+  pybind11-dev python3-dev python3-numpy python3-pytest
   # rviz, and rviz without a screen (screenshots)
   rviz xvfb xauth imagemagick
   # plots of the work-precision report

@@ -87,3 +87,8 @@ target_link_libraries(node_load_tests ${catkin_LIBRARIES})
 add_dependencies(node_load_tests table_node ${PROJECT_NAME}_generate_messages_cpp)
 # It measures tf's rate: alone on the machine, not beside another test's node.
 set_tests_properties(_ctest_cue_sim_rostest_test_node_node_load.test PROPERTIES RUN_SERIAL TRUE)
+
+# The Python module (pytest, Debian's python3-pytest): test/python.
+catkin_run_tests_target("pytest" "python" "pytest-python.xml"
+  COMMAND "env CUE_SIM_SIMULATE=$<TARGET_FILE:simulate> /usr/bin/python3 -m pytest ${PROJECT_SOURCE_DIR}/test/python -q -p no:cacheprovider --junitxml=${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/pytest-python.xml"
+  DEPENDENCIES cue_sim_python simulate)

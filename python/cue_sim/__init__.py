@@ -1,0 +1,27 @@
+"""cue_sim: an exact, event-based pool table, from Python without ROS.
+
+    import cue_sim
+    engine = cue_sim.Engine("7ft")
+    start = engine.rack("eight")
+    shot = cue_sim.simulate(engine, start, speed=8.0, phi=0.002)
+    shot.events            # a NumPy structured array: time, kind, ball, other, obstacle
+    shot.final.positions   # (16, 3) [m]
+
+In a catkin workspace the generated messages live here too (cue_sim.msg, cue_sim.srv); importing
+them does not load the engine, which loads on first use of the names below.
+"""
+
+_API = ("Engine", "State", "Shot", "Batch", "simulate", "batch", "tables", "models", "parameters", "EVENT_KINDS",
+        "MOTION")
+__all__ = list(_API)
+
+
+def __getattr__(name):
+    if name in _API:
+        from cue_sim import api
+        return getattr(api, name)
+    raise AttributeError(f"module 'cue_sim' has no attribute '{name}'")
+
+
+def __dir__():
+    return sorted(list(globals()) + list(_API))

@@ -1,0 +1,184 @@
+"""The engine from Python: tables, physics, table states, shots and batches, as NumPy arrays.
+
+Units are SI throughout and frames are the table's (x towards the foot, y left, z up), as on the
+node. Values a user can get wrong raise ValueError naming them.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Dict, List, Optional
+
+import numpy as np
+
+from cue_sim import _core
+
+#: Event kinds by number (the `kind` column of Shot.events), as cue_sim/Event.msg numbers them.
+EVENT_KINDS: Dict[int, str] = {0: "slide_to_roll", 1: "roll_to_spin", 2: "roll_to_stop", 3: "spin_to_stop",
+                               4: "slide_to_spin", 5: "slide_to_stop", 10: "ball_ball", 11: "ball_cushion",
+                               12: "ball_jaw", 13: "pocketed"}
+#: Ball motion states by number (State.motion), as cue_sim/BallState.msg numbers them.
+MOTION: Dict[int, str] = {0: "stationary", 1: "spinning", 2: "sliding", 3: "rolling", 4: "pocketed"}
+
+#: The dtype of Shot.events.
+EVENT_DTYPE = np.dtype([("time", "f8"), ("kind", "i4"), ("ball", "i4"), ("other", "i4"), ("obstacle", "U32")])
+
+
+def tables() -> List[str]:
+    """The bundled tables' names ("7ft", "9ft", "carom"); Engine also takes a URDF file's path."""
+    return list(_core.table_names())
+
+
+def models() -> Dict[str, List[str]]:
+    """The contact models by kind, the default first: {"ball_ball": [...], "cushion": [...]}."""
+    return {"ball_ball": list(_core.ball_ball_models()), "cushion": list(_core.cushion_models())}
+
+
+def parameters() -> Dict[str, dict]:
+    """Every physics coefficient: its default, unit, accepted range (min, max) and description."""
+    return dict(_core.param_fields())
+
+
+@dataclass
+class State:
+    """A table state, one row a ball: ids (N,), positions, velocities, spins (N, 3) [m, m/s, rad/s],
+    motion (N,) (MOTION), pocket (N,) (the pocket's index, -1 on the table)."""
+    ids: np.ndarray
+    positions: np.ndarray
+    velocities: np.ndarray
+    spins: np.ndarray
+    motion: np.ndarray
+    pocket: np.ndarray
+
+    @staticmethod
+    def from_balls(ids, positions, velocities=None, spins=None) -> "State":
+        """Balls on the cloth at `positions` ((N, 2) or (N, 3); z is ignored), at rest unless
+        velocities or spins ((N, 3)) are given."""
+        ids = np.asarray(ids, dtype=np.int32)
+        n = len(ids)
+        xyz = np.zeros((n, 3))
+        positions = np.asarray(positions, dtype=float)
+        if positions.ndim != 2 or positions.shape[0] != n or positions.shape[1] not in (2, 3):
+            raise ValueError(f"positions must have shape ({n}, 2) or ({n}, 3), got {positions.shape}")
+        xyz[:, :positions.shape[1]] = positions
+        return State(ids, xyz, _rows(velocities, n, "velocities"), _rows(spins, n, "spins"),
+                     np.zeros(n, dtype=np.uint8), np.full(n, -1, dtype=np.int32))
+
+    def _arrays(self):
+        a = _core.StateArrays()
+        a.ids = np.ascontiguousarray(self.ids, dtype=np.int32)
+        a.positions = np.ascontiguousarray(self.positions, dtype=float)
+        a.velocities = np.ascontiguousarray(self.velocities, dtype=float)
+        a.spins = np.ascontiguousarray(self.spins, dtype=float)
+        a.motion = np.ascontiguousarray(self.motion, dtype=np.uint8)
+        a.pocket = np.ascontiguousarray(self.pocket, dtype=np.int32)
+        return a
+
+    @staticmethod
+    def _of(a) -> "State":
+        return State(np.asarray(a.ids), np.asarray(a.positions), np.asarray(a.velocities), np.asarray(a.spins),
+                     np.asarray(a.motion), np.asarray(a.pocket))
+
+
+def _rows(values, n: int, name: str) -> np.ndarray:
+    if values is None:
+        return np.zeros((n, 3))
+    values = np.asarray(values, dtype=float)
+    if values.shape != (n, 3):
+        raise ValueError(f"{name} must have shape ({n}, 3), got {values.shape}")
+    return values
+
+
+class Engine:
+    """The physics model: a table, its coefficients and contact models. Immutable; share it.
+
+    table: a bundled table's name (tables()) or a URDF file's path.
+    ball_ball_model, cushion_model: models()' names; None for the defaults.
+    params: coefficients by name over the defaults (parameters()), e.g. mu_slide=0.2.
+    """
+
+    def __init__(self, table: str = "7ft", ball_ball_model: Optional[str] = None,
+                 cushion_model: Optional[str] = None, **params: float):
+        self._engine = _core.Engine(table, {k: float(v) for k, v in params.items()}, ball_ball_model or "",
+                                    cushion_model or "")
+
+    @property
+    def table(self) -> str:
+        return self._engine.table_name
+
+    @property
+    def params(self) -> Dict[str, float]:
+        """Every coefficient's value."""
+        return dict(self._engine.params)
+
+    @property
+    def models(self) -> Dict[str, str]:
+        return {"ball_ball": self._engine.ball_ball_model, "cushion": self._engine.cushion_model}
+
+    def rack(self, layout: str = "eight", gap: float = 1e-5, jitter: float = 0.0, seed: int = 0) -> State:
+        """A standard rack ("eight", "nine" or "empty": the cue ball only) with `gap` [m] between
+        neighbouring balls and each ball but the apex moved by up to `jitter` [m] (from `seed`)."""
+        return State._of(self._engine.rack(layout, gap, jitter, seed))
+
+    def check(self, state: State) -> None:
+        """Raises ValueError if the balls cannot stand so on this table (which ball, and why)."""
+        self._engine.check(state._arrays())
+
+    def __repr__(self) -> str:
+        return f"cue_sim.Engine({self.table!r}, {self.models['ball_ball']!r}, {self.models['cushion']!r})"
+
+
+@dataclass
+class Shot:
+    """What a shot did: every event in order (EVENT_DTYPE), the table where it left it, the time
+    from the strike to its last event [s], and whether every ball came to rest."""
+    events: np.ndarray
+    final: State
+    time_to_rest: float
+    at_rest: bool
+
+
+def simulate(engine: Engine, start: State, ball: int = 0, speed: float = 1.0, phi: float = 0.0,
+             theta: float = 0.0, a: float = 0.0, b: float = 0.0, until: Optional[float] = None) -> Shot:
+    """Strikes `ball` on `start` and runs the shot to rest, or for `until` seconds.
+
+    speed: the cue's speed at impact [m/s], in (0, 12]. phi: heading [rad] in the table frame.
+    theta: elevation [rad], in [0, pi/2]. a, b: where the tip meets the ball, right and up from its
+    centre, in ball radii (sqrt(a^2 + b^2) <= 0.5); a > 0 is right English.
+    """
+    out = engine._engine.simulate(start._arrays(), ball, speed, phi, theta, a, b,
+                                  float("inf") if until is None else float(until))
+    e = out["events"]
+    events = np.empty(len(e["time"]), dtype=EVENT_DTYPE)
+    for column in ("time", "kind", "ball", "other"):
+        events[column] = e[column]
+    events["obstacle"] = e["obstacle"]
+    return Shot(events, State._of(out["state"]), float(out["time_to_rest"]), bool(out["at_rest"]))
+
+
+@dataclass
+class Batch:
+    """Many shots' outcomes, one row a shot: the strikes as executed (N, 6), final positions
+    (N, balls, 3), pocket (N, balls) (-1 on the table), motion (N, balls), the events' count,
+    time to rest and whether at rest (N,), and why a shot was refused ("" when it ran)."""
+    executed: np.ndarray
+    positions: np.ndarray
+    pocket: np.ndarray
+    motion: np.ndarray
+    events: np.ndarray
+    time_to_rest: np.ndarray
+    at_rest: np.ndarray
+    error: List[str]
+
+
+def batch(engine: Engine, start: State, shots, noise: bool = False, seed: int = 0, threads: int = 0) -> Batch:
+    """Runs shots, an (N, 6) array of ball, speed, phi, theta, a, b, each from `start`, on
+    `threads` threads (0: every core), the GIL released. With `noise`, shot i gets the
+    tournaments' execution noise from seed + i alone, so any split of a batch gives the same shots.
+    Each outcome is what simulate() gives for that shot (with its noise)."""
+    shots = np.ascontiguousarray(shots, dtype=float)
+    if shots.ndim != 2 or shots.shape[1] != 6:
+        raise ValueError(f"shots must be an (N, 6) array of ball, speed, phi, theta, a, b; got {shots.shape}")
+    out = engine._engine.batch(start._arrays(), shots, bool(noise), int(seed), int(threads))
+    return Batch(np.asarray(out["executed"]), np.asarray(out["positions"]), np.asarray(out["pocket"]),
+                 np.asarray(out["motion"]), np.asarray(out["events"]), np.asarray(out["time_to_rest"]),
+                 np.asarray(out["at_rest"]), list(out["error"]))

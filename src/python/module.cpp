@@ -1,0 +1,222 @@
+// cue_sim._core: the engine for Python, arrays in and out (pybind11, NumPy). The user-facing API,
+// with its type hints and docstrings, is python/cue_sim/api.py; this file only converts. Errors
+// a user can make raise ValueError naming the field (pybind11 maps std::invalid_argument so).
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cue_sim/physics/batch.hpp"
+#include "cue_sim/physics/engine.hpp"
+#include "cue_sim/physics/execution_noise.hpp"
+#include "cue_sim/physics/physics_params.hpp"
+#include "cue_sim/physics/rack.hpp"
+#include "cue_sim/table_description/table_catalog.hpp"
+#include "cue_sim/table_description/urdf_table_loader.hpp"
+#include "python/state_arrays.hpp"
+
+namespace py = pybind11;
+
+namespace cue_sim
+{
+namespace python
+{
+namespace
+{
+using physics::Engine;
+using physics::PhysicsParams;
+
+/// Coefficients by name over the defaults: unknown names and values out of range are refused,
+/// naming them.
+PhysicsParams<double> paramsFrom(const std::map<std::string, double>& given)
+{
+  PhysicsParams<double> params;
+  for (const auto& [name, value] : given)
+  {
+    bool known = false;
+    for (const auto& field : physics::physicsParamFields())
+      if (name == field.name)
+      {
+        params.*field.member = value;
+        known = true;
+      }
+    if (!known)
+    {
+      std::string names;
+      for (const auto& field : physics::physicsParamFields())
+        names += (names.empty() ? "" : ", ") + std::string(field.name);
+      throw std::invalid_argument("unknown physics parameter '" + name + "'; the parameters are " + names);
+    }
+  }
+  if (const std::string why = params.validate(); !why.empty())
+    throw std::invalid_argument(why);
+  return params;
+}
+
+/// The engine a Python Engine holds: the table by name or URDF path, coefficients and models.
+std::shared_ptr<const Engine<double>> makeEngine(const std::string& table, const std::map<std::string, double>& params,
+                                                 const std::string& ball_ball, const std::string& cushion)
+{
+  std::shared_ptr<const physics::TableModel> model;
+  try
+  {
+    model = std::make_shared<const physics::TableModel>(tableFromUrdfFile(tableUrdfPath(table)));
+  }
+  catch (const std::exception& e)
+  {
+    throw std::invalid_argument("table '" + table + "': " + e.what());
+  }
+  physics::ModelChoice models;
+  if (!ball_ball.empty())
+    models.ball_ball = ball_ball;
+  if (!cushion.empty())
+    models.cushion = cushion;
+  return std::make_shared<const Engine<double>>(model, paramsFrom(params), models);
+}
+
+py::dict paramFields()
+{
+  py::dict fields;
+  for (const auto& f : physics::physicsParamFields())
+    fields[f.name] = py::dict(py::arg("default") = PhysicsParams<double>().*f.member, py::arg("unit") = f.unit,
+                              py::arg("min") = f.min, py::arg("max") = f.max, py::arg("description") = f.description);
+  return fields;
+}
+
+StateArrays rack(const Engine<double>& engine, const std::string& layout, double gap, double jitter, unsigned seed)
+{
+  const std::vector<std::string> names = physics::rackNames();
+  if (std::find(names.begin(), names.end(), layout) == names.end())
+    throw std::invalid_argument("layout must be one of eight, nine, empty; got '" + layout + "'");
+  physics::RackOptions options;
+  options.gap = gap;
+  options.jitter = jitter;
+  options.seed = seed;
+  return toArrays(physics::rackLayout<double>(layout, engine.table(), engine.params().ball_radius, options));
+}
+
+physics::CueStrike<double> strikeOf(double speed, double phi, double theta, double a, double b)
+{
+  return {speed, phi, theta, a, b};
+}
+
+/// One shot from `start`: to rest, or to `until` [s] after the strike if it is finite.
+py::dict simulate(const Engine<double>& engine, const StateArrays& start, int ball, double speed, double phi,
+                  double theta, double a, double b, double until)
+{
+  physics::TableState<double> state = fromArrays(engine, start);
+  const physics::CueStrike<double> strike = strikeOf(speed, phi, theta, a, b);
+  if (const std::string why = engine.whyNotStrikable(state, ball, strike); !why.empty())
+    throw std::invalid_argument(why);
+  physics::ShotResult<double> result;
+  {
+    py::gil_scoped_release release;
+    engine.strike(state, ball, strike);
+    if (std::isfinite(until))
+    {
+      engine.advance(state, state.time + until, &result.events);
+      result.at_rest = !state.anyMoving();
+      result.duration = result.events.empty() ? 0 : result.events.back().time;
+    }
+    else
+      result = engine.simulateToRest(state);
+  }
+  py::dict out;
+  out["events"] = eventArrays(engine.table(), result.events);
+  out["state"] = toArrays(state);
+  out["time_to_rest"] = result.duration;
+  out["at_rest"] = result.at_rest;
+  return out;
+}
+
+/// Shots given as rows of (ball, speed, phi, theta, a, b), with optional execution noise, run on
+/// `threads` threads (0: every core) with the GIL released.
+py::dict batch(const Engine<double>& engine, const StateArrays& start, py::array_t<double> shots, bool noise,
+               std::uint64_t seed, unsigned threads)
+{
+  const auto rows = shots.unchecked<2>();
+  if (rows.shape(1) != 6)
+    throw std::invalid_argument("shots must be an (N, 6) array of ball, speed, phi, theta, a, b; got " +
+                                std::to_string(rows.shape(1)) + " columns");
+  const physics::TableState<double> state = fromArrays(engine, start);
+  std::vector<physics::BatchShot<double>> planned(static_cast<std::size_t>(rows.shape(0)));
+  // Shot i's noise comes from seed + i alone (as the node's ~predict_batch): a batch split into
+  // chunks anywhere gives the same shots.
+  for (py::ssize_t i = 0; i < rows.shape(0); ++i)
+  {
+    physics::NoisyCue cue(noise ? physics::ExecutionNoise() : physics::ExecutionNoise::none(),
+                          seed + static_cast<std::uint64_t>(i));
+    planned[static_cast<std::size_t>(i)].ball_id = static_cast<int>(rows(i, 0));
+    planned[static_cast<std::size_t>(i)].cue =
+        cue.execute(strikeOf(rows(i, 1), rows(i, 2), rows(i, 3), rows(i, 4), rows(i, 5)), engine.params().ball_radius);
+  }
+  std::vector<physics::ShotOutcome<double>> outcomes;
+  {
+    py::gil_scoped_release release;
+    physics::ThreadPool pool(threads);
+    outcomes = physics::simulateBatch(engine, state, planned, pool);
+  }
+  return batchArrays(planned, outcomes, state.balls.size());
+}
+}  // namespace
+}  // namespace python
+}  // namespace cue_sim
+
+PYBIND11_MODULE(_core, m)
+{
+  using namespace cue_sim;
+  using namespace cue_sim::python;
+  using physics::Engine;
+  m.doc() = "cue_sim's engine, arrays in and out; use the cue_sim package, not this module";
+  py::register_exception_translator([](std::exception_ptr p) {
+    try
+    {
+      if (p)
+        std::rethrow_exception(p);
+    }
+    catch (const std::invalid_argument& e)
+    {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+  });
+  m.def("table_names", &tableNames);
+  m.def("ball_ball_models", &physics::ballBallModelNames);
+  m.def("cushion_models", &physics::cushionModelNames);
+  m.def("param_fields", &paramFields);
+  m.def("rack_names", &physics::rackNames);
+  py::class_<StateArrays>(m, "StateArrays")
+      .def(py::init<>())
+      .def_readwrite("ids", &StateArrays::ids)
+      .def_readwrite("positions", &StateArrays::positions)
+      .def_readwrite("velocities", &StateArrays::velocities)
+      .def_readwrite("spins", &StateArrays::spins)
+      .def_readwrite("motion", &StateArrays::motion)
+      .def_readwrite("pocket", &StateArrays::pocket);
+  py::class_<Engine<double>, std::shared_ptr<Engine<double>>>(m, "Engine")
+      .def(py::init([](const std::string& table, const std::map<std::string, double>& params,
+                       const std::string& ball_ball, const std::string& cushion) {
+             return std::const_pointer_cast<Engine<double>>(makeEngine(table, params, ball_ball, cushion));
+           }),
+           py::arg("table"), py::arg("params"), py::arg("ball_ball_model"), py::arg("cushion_model"))
+      .def_property_readonly("table_name", [](const Engine<double>& e) { return e.table().name(); })
+      .def_property_readonly("ball_ball_model", [](const Engine<double>& e) { return e.models().ball_ball; })
+      .def_property_readonly("cushion_model", [](const Engine<double>& e) { return e.models().cushion; })
+      .def_property_readonly("params",
+                             [](const Engine<double>& e) {
+                               std::map<std::string, double> out;
+                               for (const auto& f : physics::physicsParamFields())
+                                 out[f.name] = e.params().*f.member;
+                               return out;
+                             })
+      .def("check", [](const Engine<double>& e, const StateArrays& s) { fromArrays(e, s); })
+      .def("rack", &rack)
+      .def("simulate", &simulate)
+      .def("batch", &batch);
+}

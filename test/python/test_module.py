@@ -1,0 +1,153 @@
+"""The Python module: imported without ROS, refusing bad input by name, and giving the engine's own
+answers bit for bit: the `simulate` program's for a scene, and simulate()'s for every row of a
+batch, however the batch is split or threaded."""
+import json
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import cue_sim
+
+SIMULATE = os.environ.get("CUE_SIM_SIMULATE", "simulate")
+BREAK_SCENE = "table: 7ft\nrack: eight\nrack_gap: 1.0e-5\nshot: {speed: 8.0, phi: 0.002}\n"
+
+
+@pytest.fixture(scope="module")
+def engine():
+    return cue_sim.Engine("7ft")
+
+
+def test_imports_and_runs_without_ros():
+    # Only the package's own directory on the path: no ROS variables, no setup files sourced.
+    package_parent = os.path.dirname(os.path.dirname(cue_sim.__file__))
+    env = {"PATH": "/usr/bin:/bin", "PYTHONPATH": package_parent, "HOME": os.environ.get("HOME", "/tmp")}
+    code = ("import cue_sim; e = cue_sim.Engine(); s = cue_sim.simulate(e, e.rack(), speed=8.0, phi=0.002); "
+            "print(len(s.events), s.at_rest)")
+    out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, timeout=60)
+    assert out.returncode == 0, out.stderr
+    count, at_rest = out.stdout.split()
+    assert int(count) > 50 and at_rest == "True"
+
+
+def test_lists_the_registry():
+    assert {"7ft", "9ft", "carom"} <= set(cue_sim.tables())
+    models = cue_sim.models()
+    assert models["ball_ball"][0] == "frictional" and "mathavan2014" in models["ball_ball"]
+    assert models["cushion"][0] == "han2005" and "stronge2018" in models["cushion"]
+    mu = cue_sim.parameters()["mu_slide"]
+    assert mu["min"] <= mu["default"] <= mu["max"] and mu["unit"] == "-"
+
+
+@pytest.mark.parametrize("kwargs, named", [
+    ({"mu_slyde": 0.2}, "mu_slyde"),
+    ({"mu_slide": -1.0}, "mu_slide"),
+    ({"e_ball": float("nan")}, "e_ball"),
+    ({"ball_ball_model": "elastic"}, "elastic"),
+    ({"cushion_model": "rubber"}, "rubber"),
+    ({"table": "8ft"}, "8ft"),
+])
+def test_bad_physics_is_refused_by_name(kwargs, named):
+    with pytest.raises(ValueError, match=named):
+        cue_sim.Engine(**kwargs)
+
+
+def test_bad_states_and_shots_are_refused_by_name(engine):
+    start = engine.rack("eight")
+    with pytest.raises(ValueError, match="layout"):
+        engine.rack("ten")
+    with pytest.raises(ValueError, match="speed"):
+        cue_sim.simulate(engine, start, speed=-1.0)
+    with pytest.raises(ValueError, match="ball"):
+        cue_sim.simulate(engine, start, ball=99, speed=1.0)
+    overlapping = cue_sim.State.from_balls([0, 1], [[0.0, 0.0], [0.01, 0.0]])
+    with pytest.raises(ValueError, match="overlap"):
+        engine.check(overlapping)
+    twice = cue_sim.State.from_balls([0, 0], [[0.0, 0.0], [0.3, 0.0]])
+    with pytest.raises(ValueError, match="twice|once"):
+        engine.check(twice)
+    nan = cue_sim.State.from_balls([0], [[float("nan"), 0.0]])
+    with pytest.raises(ValueError, match="finite"):
+        engine.check(nan)
+    with pytest.raises(ValueError, match="shape"):
+        cue_sim.State.from_balls([0, 1], [[0.0, 0.0]])
+    with pytest.raises(ValueError, match=r"\(N, 6\)"):
+        cue_sim.batch(engine, start, np.zeros((3, 5)))
+
+
+def test_a_break_is_the_simulate_programs_bit_for_bit(engine):
+    program = json.loads(subprocess.run([SIMULATE, "-"], input=BREAK_SCENE, capture_output=True, text=True,
+                                        check=True, timeout=60).stdout)
+    shot = cue_sim.simulate(engine, engine.rack("eight", gap=1e-5), speed=8.0, phi=0.002)
+    assert len(shot.events) == len(program["events"]) > 50
+    for mine, theirs in zip(shot.events, program["events"]):
+        assert mine["time"] == theirs["t"]
+        assert cue_sim.EVENT_KINDS[int(mine["kind"])] == theirs["kind"]
+        assert mine["ball"] == theirs["ball"]
+    final = {b["id"]: b for b in program["final_state"]["balls"]}
+    for i, ball in enumerate(shot.final.ids):
+        assert list(shot.final.positions[i]) == final[int(ball)]["position"]
+    assert shot.at_rest == program["at_rest"]
+
+
+def test_events_name_their_obstacles_and_kinds(engine):
+    shot = cue_sim.simulate(engine, engine.rack("eight"), speed=8.0, phi=0.002)
+    kinds = {cue_sim.EVENT_KINDS[int(k)] for k in shot.events["kind"]}
+    assert {"ball_ball", "ball_cushion"} <= kinds
+    cushions = shot.events[shot.events["kind"] == 11]
+    assert all(name.startswith("cushion_") for name in cushions["obstacle"])
+    assert np.all(np.diff(shot.events["time"]) >= 0)
+    assert np.all(shot.events["obstacle"][shot.events["kind"] == 10] == "")
+
+
+def test_until_stops_the_shot_part_way(engine):
+    start = engine.rack("eight")
+    whole = cue_sim.simulate(engine, start, speed=8.0, phi=0.002)
+    part = cue_sim.simulate(engine, start, speed=8.0, phi=0.002, until=0.5)
+    assert not part.at_rest
+    assert len(part.events) == np.count_nonzero(whole.events["time"] <= 0.5)
+    assert np.array_equal(part.events, whole.events[:len(part.events)])
+
+
+def shots_around(n, rng):
+    return np.column_stack([np.zeros(n), rng.uniform(0.5, 8, n), rng.uniform(-np.pi, np.pi, n),
+                            rng.uniform(0, 0.2, n), rng.uniform(-0.3, 0.3, n), rng.uniform(-0.3, 0.3, n)])
+
+
+def test_a_batch_is_simulate_shot_by_shot(engine):
+    start = engine.rack("eight")
+    shots = shots_around(40, np.random.default_rng(1))
+    result = cue_sim.batch(engine, start, shots)
+    assert result.error == [""] * 40
+    assert np.array_equal(result.executed, shots)
+    for i, (ball, speed, phi, theta, a, b) in enumerate(shots):
+        alone = cue_sim.simulate(engine, start, int(ball), speed, phi, theta, a, b)
+        assert result.events[i] == len(alone.events)
+        assert np.array_equal(result.positions[i], alone.final.positions)
+        assert np.array_equal(result.pocket[i], alone.final.pocket)
+        assert result.time_to_rest[i] == alone.time_to_rest
+
+
+def test_a_batch_is_the_same_however_split_or_threaded(engine):
+    start = engine.rack("nine")
+    shots = shots_around(60, np.random.default_rng(2))
+    whole = cue_sim.batch(engine, start, shots, noise=True, seed=7, threads=4)
+    one_thread = cue_sim.batch(engine, start, shots, noise=True, seed=7, threads=1)
+    head = cue_sim.batch(engine, start, shots[:25], noise=True, seed=7)
+    tail = cue_sim.batch(engine, start, shots[25:], noise=True, seed=7 + 25)
+    for part in ("executed", "positions", "pocket", "events", "time_to_rest"):
+        assert np.array_equal(getattr(whole, part), getattr(one_thread, part))
+        assert np.array_equal(getattr(whole, part), np.concatenate([getattr(head, part), getattr(tail, part)]))
+    assert not np.array_equal(whole.executed, shots)  # the noise is there
+    assert np.all(np.abs(whole.executed[:, 1] - shots[:, 1]) < 0.075 * 6)
+
+
+def test_a_refused_row_says_why_and_the_rest_run(engine):
+    start = engine.rack("eight")
+    shots = np.array([[0, 2.0, 0.1, 0, 0, 0], [99, 2.0, 0.1, 0, 0, 0], [0, 2.0, 0.2, 0, 0, 0]])
+    result = cue_sim.batch(engine, start, shots)
+    assert result.error[0] == "" and result.error[2] == ""
+    assert "99" in result.error[1]
+    assert result.events[0] > 0 and result.events[2] > 0
