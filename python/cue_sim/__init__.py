@@ -11,7 +11,7 @@ In a catkin workspace the generated messages live here too (cue_sim.msg, cue_sim
 them does not load the engine, which loads on first use of the names below.
 """
 
-_API = ("Engine", "State", "Shot", "Batch", "simulate", "batch", "tables", "models", "parameters", "EVENT_KINDS",
+_API = ("Engine", "State", "Shot", "Samples", "Batch", "simulate", "batch", "tables", "models", "parameters", "EVENT_KINDS",
         "MOTION")
 __all__ = list(_API)
 

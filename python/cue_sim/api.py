@@ -128,31 +128,56 @@ class Engine:
 
 
 @dataclass
+class Samples:
+    """The balls every `period` seconds from the strike: times (K,) [s], positions, velocities,
+    spins (K, N, 3), motion and pocket (K, N); ball j is row j of the starting State."""
+    period: float
+    times: np.ndarray
+    positions: np.ndarray
+    velocities: np.ndarray
+    spins: np.ndarray
+    motion: np.ndarray
+    pocket: np.ndarray
+
+
+@dataclass
 class Shot:
-    """What a shot did: every event in order (EVENT_DTYPE), the table where it left it, the time
-    from the strike to its last event [s], and whether every ball came to rest."""
+    """What a shot did: every event in order (EVENT_DTYPE, times from the strike), the table where
+    it left it, the time from the strike to its last event [s], whether every ball came to rest,
+    and the samples asked for (None without a sample_period)."""
     events: np.ndarray
     final: State
     time_to_rest: float
     at_rest: bool
+    samples: Optional[Samples] = None
 
 
 def simulate(engine: Engine, start: State, ball: int = 0, speed: float = 1.0, phi: float = 0.0,
-             theta: float = 0.0, a: float = 0.0, b: float = 0.0, until: Optional[float] = None) -> Shot:
+             theta: float = 0.0, a: float = 0.0, b: float = 0.0, until: Optional[float] = None,
+             sample_period: float = 0.0) -> Shot:
     """Strikes `ball` on `start` and runs the shot to rest, or for `until` seconds.
 
     speed: the cue's speed at impact [m/s], in (0, 12]. phi: heading [rad] in the table frame.
     theta: elevation [rad], in [0, pi/2]. a, b: where the tip meets the ball, right and up from its
     centre, in ball radii (sqrt(a^2 + b^2) <= 0.5); a > 0 is right English.
+    sample_period: 0, or in [0.001, 10] s: the balls every sample_period from the strike
+    (Shot.samples), at most 10000 samples.
+    To rest, this is exactly what the node's ~predict answers for the same table and shot.
     """
     out = engine._engine.simulate(start._arrays(), ball, speed, phi, theta, a, b,
-                                  float("inf") if until is None else float(until))
+                                  float("inf") if until is None else float(until), float(sample_period))
     e = out["events"]
     events = np.empty(len(e["time"]), dtype=EVENT_DTYPE)
     for column in ("time", "kind", "ball", "other"):
         events[column] = e[column]
     events["obstacle"] = e["obstacle"]
-    return Shot(events, State._of(out["state"]), float(out["time_to_rest"]), bool(out["at_rest"]))
+    samples = None
+    if sample_period > 0:
+        sampled = out["samples"]
+        count = sampled["positions"].shape[0]
+        samples = Samples(float(sample_period), np.arange(count) * float(sample_period), sampled["positions"],
+                          sampled["velocities"], sampled["spins"], sampled["motion"], sampled["pocket"])
+    return Shot(events, State._of(out["state"]), float(out["time_to_rest"]), bool(out["at_rest"]), samples)
 
 
 @dataclass

@@ -18,6 +18,8 @@
 #include "cue_sim/physics/execution_noise.hpp"
 #include "cue_sim/physics/physics_params.hpp"
 #include "cue_sim/physics/rack.hpp"
+#include "cue_sim/physics/simulation.hpp"
+#include "cue_sim/session/shot_prediction.hpp"
 #include "cue_sim/table_description/table_catalog.hpp"
 #include "cue_sim/table_description/urdf_table_loader.hpp"
 #include "python/state_arrays.hpp"
@@ -107,32 +109,84 @@ physics::CueStrike<double> strikeOf(double speed, double phi, double theta, doub
   return {speed, phi, theta, a, b};
 }
 
-/// One shot from `start`: to rest, or to `until` [s] after the strike if it is finite.
-py::dict simulate(const Engine<double>& engine, const StateArrays& start, int ball, double speed, double phi,
-                  double theta, double a, double b, double until)
+/// The balls at shot times 0, T, 2T, ... up to `end` [s] after the strike, along the shot's own
+/// trajectories (as the node samples a prediction).
+std::vector<std::vector<physics::Ball<double>>> samplesTo(const Engine<double>& engine,
+                                                          const physics::TableState<double>& struck, double period,
+                                                          double end)
 {
-  physics::TableState<double> state = fromArrays(engine, start);
-  const physics::CueStrike<double> strike = strikeOf(speed, phi, theta, a, b);
-  if (const std::string why = engine.whyNotStrikable(state, ball, strike); !why.empty())
-    throw std::invalid_argument(why);
-  physics::ShotResult<double> result;
+  std::vector<std::vector<physics::Ball<double>>> samples;
+  if (period <= 0)
+    return samples;
+  physics::Simulation<double> sampled(engine, struck);
+  const auto count = static_cast<std::size_t>(std::floor(end / period)) + 1;
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    sampled.advance(struck.time + static_cast<double>(k) * period);
+    samples.push_back(sampled.snapshot());
+  }
+  return samples;
+}
+
+/// One shot from `start` to rest: exactly the node's ~predict (session::predictShot).
+session::ShotPrediction toRest(const Engine<double>& engine, const physics::TableState<double>& start,
+                               const session::Shot& shot, double sample_period)
+{
+  session::ShotPrediction prediction;
   {
     py::gil_scoped_release release;
-    engine.strike(state, ball, strike);
-    if (std::isfinite(until))
-    {
-      engine.advance(state, state.time + until, &result.events);
-      result.at_rest = !state.anyMoving();
-      result.duration = result.events.empty() ? 0 : result.events.back().time;
-    }
-    else
-      result = engine.simulateToRest(state);
+    prediction = session::predictShot(engine, start, shot, session::PredictionOptions{sample_period, nullptr, 0});
   }
+  if (!prediction.success)
+  {
+    if (prediction.message.rfind("shot: ", 0) == 0)
+      throw std::invalid_argument(prediction.message);
+    throw std::runtime_error(prediction.message);
+  }
+  return prediction;
+}
+
+/// One shot from `start` for `until` [s] after the strike, sampled as toRest samples.
+session::ShotPrediction forDuration(const Engine<double>& engine, physics::TableState<double> state,
+                                    const session::Shot& shot, double sample_period, double until)
+{
+  if (const std::string why = engine.whyNotStrikable(state, shot.ball_id, shot.strike); !why.empty())
+    throw std::invalid_argument("shot: " + why);
+  if (!(until >= 0))
+    throw std::invalid_argument("until must be at least 0 s");
+  session::ShotPrediction prediction;
+  py::gil_scoped_release release;
+  engine.strike(state, shot.ball_id, shot.strike);
+  prediction.samples = samplesTo(engine, state, sample_period, until);
+  prediction.strike_time = state.time;
+  engine.advance(state, state.time + until, &prediction.events);
+  prediction.at_rest = !state.anyMoving();
+  prediction.time_to_rest = prediction.events.empty() ? 0 : prediction.events.back().time - prediction.strike_time;
+  prediction.final_balls = engine.snapshot(state);
+  prediction.success = true;
+  return prediction;
+}
+
+/// One shot from `start`: to rest, or for `until` [s] after the strike if it is finite; sampled
+/// every `sample_period` [s] if it is not 0.
+py::dict simulate(const Engine<double>& engine, const StateArrays& start, int ball, double speed, double phi,
+                  double theta, double a, double b, double until, double sample_period)
+{
+  if (const std::string why = session::whyBadSamplePeriod(sample_period); !why.empty())
+    throw std::invalid_argument(why);
+  const physics::TableState<double> state = fromArrays(engine, start);
+  const session::Shot shot{ball, strikeOf(speed, phi, theta, a, b)};
+  const session::ShotPrediction p = std::isfinite(until) ? forDuration(engine, state, shot, sample_period, until)
+                                                         : toRest(engine, state, shot, sample_period);
+  if (p.samples.size() > session::PredictionLimits().max_samples_per_shot)
+    throw std::invalid_argument("sample_period: " + std::to_string(p.samples.size()) + " samples, at most " +
+                                std::to_string(session::PredictionLimits().max_samples_per_shot) + " a shot");
   py::dict out;
-  out["events"] = eventArrays(engine.table(), result.events);
-  out["state"] = toArrays(state);
-  out["time_to_rest"] = result.duration;
-  out["at_rest"] = result.at_rest;
+  out["events"] = eventArrays(engine.table(), p.events, p.strike_time);
+  out["state"] = toArrays(p.final_balls);
+  out["samples"] = sampleArrays(p.samples);
+  out["time_to_rest"] = p.time_to_rest;
+  out["at_rest"] = p.at_rest;
   return out;
 }
 

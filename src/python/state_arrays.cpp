@@ -56,7 +56,12 @@ const char* obstacleName(const physics::TableModel& table, const physics::Event<
 
 StateArrays toArrays(const physics::TableState<double>& state)
 {
-  const auto n = static_cast<py::ssize_t>(state.balls.size());
+  return toArrays(state.balls);
+}
+
+StateArrays toArrays(const std::vector<physics::Ball<double>>& balls)
+{
+  const auto n = static_cast<py::ssize_t>(balls.size());
   StateArrays out;
   out.ids = py::array_t<std::int32_t>(n);
   out.positions = py::array_t<double>({n, py::ssize_t(3)});
@@ -72,7 +77,7 @@ StateArrays toArrays(const physics::TableState<double>& state)
   auto pocket = out.pocket.mutable_unchecked<1>();
   for (py::ssize_t i = 0; i < n; ++i)
   {
-    const auto& b = state.balls[static_cast<std::size_t>(i)];
+    const auto& b = balls[static_cast<std::size_t>(i)];
     ids(i) = b.id;
     for (int k = 0; k < 3; ++k)
     {
@@ -123,7 +128,8 @@ physics::TableState<double> fromArrays(const physics::Engine<double>& engine, co
   return state;
 }
 
-py::dict eventArrays(const physics::TableModel& table, const std::vector<physics::Event<double>>& events)
+py::dict eventArrays(const physics::TableModel& table, const std::vector<physics::Event<double>>& events,
+                     double strike_time)
 {
   const auto n = static_cast<py::ssize_t>(events.size());
   py::array_t<double> time(n);
@@ -136,7 +142,7 @@ py::dict eventArrays(const physics::TableModel& table, const std::vector<physics
   for (py::ssize_t i = 0; i < n; ++i)
   {
     const auto& e = events[static_cast<std::size_t>(i)];
-    t(i) = e.time;
+    t(i) = e.time - strike_time;
     k(i) = static_cast<std::int32_t>(e.kind);
     b(i) = e.ball;
     o(i) = e.other;
@@ -148,6 +154,40 @@ py::dict eventArrays(const physics::TableModel& table, const std::vector<physics
   out["ball"] = ball;
   out["other"] = other;
   out["obstacle"] = obstacle;
+  return out;
+}
+
+py::dict sampleArrays(const std::vector<std::vector<physics::Ball<double>>>& samples)
+{
+  const auto k = static_cast<py::ssize_t>(samples.size());
+  const auto n = static_cast<py::ssize_t>(samples.empty() ? 0 : samples.front().size());
+  py::array_t<double> r({k, n, py::ssize_t(3)}), v({k, n, py::ssize_t(3)}), w({k, n, py::ssize_t(3)});
+  py::array_t<std::uint8_t> motion({k, n});
+  py::array_t<std::int32_t> pocket({k, n});
+  auto rr = r.mutable_unchecked<3>();
+  auto vv = v.mutable_unchecked<3>();
+  auto ww = w.mutable_unchecked<3>();
+  auto mo = motion.mutable_unchecked<2>();
+  auto po = pocket.mutable_unchecked<2>();
+  for (py::ssize_t s = 0; s < k; ++s)
+    for (py::ssize_t i = 0; i < n; ++i)
+    {
+      const auto& b = samples[static_cast<std::size_t>(s)][static_cast<std::size_t>(i)];
+      for (int c = 0; c < 3; ++c)
+      {
+        rr(s, i, c) = b.r[c];
+        vv(s, i, c) = b.v[c];
+        ww(s, i, c) = b.w[c];
+      }
+      mo(s, i) = static_cast<std::uint8_t>(b.motion);
+      po(s, i) = b.pocket;
+    }
+  py::dict out;
+  out["positions"] = r;
+  out["velocities"] = v;
+  out["spins"] = w;
+  out["motion"] = motion;
+  out["pocket"] = pocket;
   return out;
 }
 

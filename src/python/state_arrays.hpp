@@ -27,13 +27,18 @@ struct StateArrays
 };
 
 StateArrays toArrays(const physics::TableState<double>& state);
+StateArrays toArrays(const std::vector<physics::Ball<double>>& balls);
 /// The state at time 0; throws std::invalid_argument naming the array and the row at fault, or
 /// the engine's reason the balls cannot stand so.
 physics::TableState<double> fromArrays(const physics::Engine<double>& engine, const StateArrays& arrays);
 
-/// Events as columns: time, kind, ball, other, and obstacle (the cushion's, jaw's or pocket's
-/// name, empty for the others).
-pybind11::dict eventArrays(const physics::TableModel& table, const std::vector<physics::Event<double>>& events);
+/// Events as columns: time [s] since `strike_time`, kind, ball, other, and obstacle (the
+/// cushion's, jaw's or pocket's name, empty for the others).
+pybind11::dict eventArrays(const physics::TableModel& table, const std::vector<physics::Event<double>>& events,
+                           double strike_time);
+
+/// Samples as columns: positions, velocities, spins (K, N, 3), motion and pocket (K, N).
+pybind11::dict sampleArrays(const std::vector<std::vector<physics::Ball<double>>>& samples);
 
 /// A batch's outcomes as columns: the strikes as executed, each shot's final positions, pockets
 /// and motion per ball, its events' count, time to rest, whether it came to rest, and why a shot

@@ -151,3 +151,17 @@ def test_a_refused_row_says_why_and_the_rest_run(engine):
     assert result.error[0] == "" and result.error[2] == ""
     assert "99" in result.error[1]
     assert result.events[0] > 0 and result.events[2] > 0
+
+
+def test_samples_follow_the_shot_and_match_a_shot_stopped_there(engine):
+    start = engine.rack("eight")
+    shot = cue_sim.simulate(engine, start, speed=8.0, phi=0.002, sample_period=0.05)
+    samples = shot.samples
+    assert len(samples.times) == int(np.floor(shot.time_to_rest / 0.05)) + 1
+    assert samples.positions.shape == (len(samples.times), 16, 3)
+    assert np.array_equal(samples.positions[0], start.positions)  # the instant of the strike
+    stopped = cue_sim.simulate(engine, start, speed=8.0, phi=0.002, until=0.5)
+    assert np.array_equal(samples.positions[10], stopped.final.positions)
+    assert np.array_equal(samples.velocities[10], stopped.final.velocities)
+    with pytest.raises(ValueError, match="sample_period"):
+        cue_sim.simulate(engine, start, speed=8.0, sample_period=1e-6)
