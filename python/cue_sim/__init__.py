@@ -13,15 +13,19 @@ them does not load the engine, which loads on first use of the names below.
 
 _API = ("Engine", "State", "Shot", "Samples", "Batch", "simulate", "batch", "tables", "models", "parameters", "EVENT_KINDS",
         "MOTION")
-__all__ = list(_API)
+_GAMES = ("Game", "Ruling", "rules")
+__all__ = list(_API + _GAMES)
 
 
 def __getattr__(name):
     if name in _API:
         from cue_sim import api
         return getattr(api, name)
+    if name in _GAMES:
+        from cue_sim import games
+        return getattr(games, name)
     raise AttributeError(f"module 'cue_sim' has no attribute '{name}'")
 
 
 def __dir__():
-    return sorted(list(globals()) + list(_API))
+    return sorted(list(globals()) + __all__)

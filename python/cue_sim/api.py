@@ -6,7 +6,7 @@ node. Values a user can get wrong raise ValueError naming them.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Dict, List, Optional
+from typing import Dict, List, Optional, Tuple
 
 import numpy as np
 
@@ -109,6 +109,12 @@ class Engine:
     def params(self) -> Dict[str, float]:
         """Every coefficient's value."""
         return dict(self._engine.params)
+
+    @property
+    def pockets(self) -> Dict[str, Tuple[float, float, float]]:
+        """Each pocket by its URDF link name: the centre (x, y) [m] and radius [m] of its capture
+        circle (a ball whose centre enters it drops)."""
+        return {name: (x, y, r) for name, x, y, r in self._engine.pockets}
 
     @property
     def models(self) -> Dict[str, str]:

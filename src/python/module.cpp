@@ -11,6 +11,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "cue_sim/physics/batch.hpp"
@@ -22,6 +23,7 @@
 #include "cue_sim/session/shot_prediction.hpp"
 #include "cue_sim/table_description/table_catalog.hpp"
 #include "cue_sim/table_description/urdf_table_loader.hpp"
+#include "python/game_bindings.hpp"
 #include "python/state_arrays.hpp"
 
 namespace py = pybind11;
@@ -269,8 +271,16 @@ PYBIND11_MODULE(_core, m)
                                  out[f.name] = e.params().*f.member;
                                return out;
                              })
+      .def_property_readonly("pockets",
+                             [](const Engine<double>& e) {
+                               std::vector<std::tuple<std::string, double, double, double>> out;
+                               for (const auto& p : e.table().pockets())
+                                 out.emplace_back(p.name, p.centre.x(), p.centre.y(), p.radius);
+                               return out;
+                             })
       .def("check", [](const Engine<double>& e, const StateArrays& s) { fromArrays(e, s); })
       .def("rack", &rack)
       .def("simulate", &simulate)
       .def("batch", &batch);
+  bindGames(m);
 }

@@ -10,27 +10,6 @@ namespace cue_sim
 {
 namespace session
 {
-namespace
-{
-/// The index of the pocket named `name` (-1 for an empty name), or why there is none.
-std::string pocketIndex(const physics::TableModel& table, const std::string& name, int& index)
-{
-  index = -1;
-  if (name.empty())
-    return "";
-  std::string names;
-  for (std::size_t i = 0; i < table.pockets().size(); ++i)
-  {
-    if (table.pockets()[i].name == name)
-    {
-      index = static_cast<int>(i);
-      return "";
-    }
-    names += (names.empty() ? "" : ", ") + table.pockets()[i].name;
-  }
-  return "pocket must be one of " + names + ", or empty for none; got '" + name + "'";
-}
-}  // namespace
 
 std::string LiveTable::whyNotFreeEdit() const
 {
@@ -141,7 +120,7 @@ Outcome LiveTable::callShot(const GameCall& call, Stamp now)
   if (const std::string over = game_->whyOver(); !over.empty())
     return Outcome::refused(over);
   int pocket = -1;
-  if (const std::string why = pocketIndex(table(), call.pocket, pocket); !why.empty())
+  if (const std::string why = table().whyNoPocket(call.pocket, pocket); !why.empty())
     return Outcome::refused(why);
   if (call.push_out && !game_->state().push_out_allowed)
     return Outcome::refused(

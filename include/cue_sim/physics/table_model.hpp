@@ -66,6 +66,9 @@ public:
   /// Jaws and segment end caps.
   const std::vector<CircularCushion>& circles() const { return circles_; }
   const std::vector<Pocket>& pockets() const { return pockets_; }
+  /// The index of the pocket named `name` (an empty name: -1, no pocket), or why there is none,
+  /// listing the pockets' names.
+  std::string whyNoPocket(const std::string& name, int& index) const;
   /// The head string: the line across the cloth a quarter of its length from the head end
   /// (-x), behind which the break is played (WPA Definitions). Its x [m].
   double headStringX() const { return cloth_centre_.x() - cloth_length_ / 4; }

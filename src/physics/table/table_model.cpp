@@ -218,5 +218,24 @@ std::string TableModel::whyNotPlaceable(const Eigen::Vector2d& p, double R, doub
          " lies between it and the cloth";
 }
 
+std::string TableModel::whyNoPocket(const std::string& name, int& index) const
+{
+  index = -1;
+  if (name.empty())
+    return "";
+  std::string names;
+  for (std::size_t i = 0; i < pockets_.size(); ++i)
+  {
+    if (pockets_[i].name == name)
+    {
+      index = static_cast<int>(i);
+      return "";
+    }
+    names += (names.empty() ? "" : ", ") + pockets_[i].name;
+  }
+  return "pocket must be one of " + (names.empty() ? std::string("(none on this table)") : names) +
+         ", or empty for none; got '" + name + "'";
+}
+
 }  // namespace physics
 }  // namespace cue_sim

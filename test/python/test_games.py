@@ -1,0 +1,84 @@
+"""Games from Python: the referee's rulings as `simulate` gives them for the same scene, ball in
+hand checked by the rules, and whole games that end with every ball accounted for."""
+import json
+import math
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+import cue_sim
+
+SIMULATE = os.environ.get("CUE_SIM_SIMULATE", "simulate")
+
+
+@pytest.fixture(scope="module")
+def engine():
+    return cue_sim.Engine("7ft")
+
+
+def test_a_scratch_is_ruled_as_simulate_rules_it_and_ball_in_hand_is_checked(engine):
+    scene = ("table: 7ft\nballs:\n  - {id: 0, position: [0.0, 0.1]}\n  - {id: 1, position: [0.3, -0.3]}\n"
+             "  - {id: 9, position: [0.6, -0.3]}\nshot: {speed: 2.0, phi: 1.5707963267948966}\n"
+             "game: {rules: nine_ball, break: false}\n")
+    program = json.loads(subprocess.run([SIMULATE, "-"], input=scene, capture_output=True, text=True, check=True,
+                                        timeout=60).stdout)
+    game = cue_sim.Game(engine, "nine_ball", ("ann", "bob"))
+    game.set_position(cue_sim.State.from_balls([0, 1, 9], [[0.0, 0.1], [0.3, -0.3], [0.6, -0.3]]))
+    ruling, events = game.shoot(2.0, math.pi / 2)
+    assert ruling.foul and ruling.rule == program["ruling"]["rule"] == "WPA 6.1"
+    assert ruling.reason == program["ruling"]["reason"]
+    assert ruling.ball_in_hand == "anywhere" and ruling.next_player == 1
+    assert events[-1]["kind"] == 13 and events[-1]["ball"] == 0  # the cue ball dropped
+    assert game.state["turn"] == 1 and game.state["fouls"] == [1, 0]
+    with pytest.raises(ValueError, match="overlap"):
+        game.place_cue_ball(0.3, -0.3 + 0.02)
+    with pytest.raises(ValueError, match="pocket must be one of"):
+        game.call(1, "corner")
+    game.place_cue_ball(-0.5, 0.2)
+    table = game.table
+    assert list(table.positions[list(table.ids).index(0)][:2]) == [-0.5, 0.2]
+
+
+def ghost_ball_shots(game, engine):
+    """Every legal ball into every pocket, from where the cue ball stands, at two speeds."""
+    table = game.table
+    where = {int(i): p[:2] for i, p, pocket in zip(table.ids, table.positions, table.pocket) if pocket < 0}
+    cue = where[0]
+    radius = engine.params["ball_radius"]
+    shots = []
+    for ball in game.legal_first:
+        b = where[ball]
+        for px, py, _ in engine.pockets.values():
+            d = np.hypot(px - b[0], py - b[1])
+            ghost = (b[0] - 2 * radius * (px - b[0]) / d, b[1] - 2 * radius * (py - b[1]) / d)
+            for speed in (1.5, 3.0):
+                shots.append((speed, math.atan2(ghost[1] - cue[1], ghost[0] - cue[0])))
+    return shots
+
+
+def test_whole_games_end_with_every_ball_accounted_for(engine):
+    for seed, rules, balls in ((1, "nine_ball", 10), (2, "eight_ball", 16)):
+        game = cue_sim.Game(engine, rules, seed=seed)
+        game.set_shot_cap(150)
+        shots = 0
+        while not game.state["over"]:
+            best, choice = -1e9, (8.0, 0.0)
+            if game.state["break"]:
+                cue = game.table.positions[list(game.table.ids).index(0)]
+                choice = (8.0, math.atan2(-cue[1], 0.4953 - cue[0]))
+            else:
+                for speed, phi in ghost_ball_shots(game, engine):
+                    ruling, _ = game.copy().shoot(speed, phi)
+                    score = (1000 if ruling.game_over and ruling.winner == game.state["turn"] else
+                             100 if ruling.continues and not ruling.foul else 10 if not ruling.foul else 0) - speed
+                    if score > best:
+                        best, choice = score, (speed, phi)
+            game.shoot(*choice)
+            shots += 1
+            table = game.table
+            assert len(table.ids) == balls and len(set(table.ids)) == balls  # every ball on the table or down
+            assert np.all(np.isfinite(table.positions))
+        assert game.state["winner"] in (0, 1), game.state
+        assert shots < 150
