@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -221,6 +222,26 @@ py::dict batch(const Engine<double>& engine, const StateArrays& start, py::array
   }
   return batchArrays(planned, outcomes, state.balls.size());
 }
+
+/// The engine's own time [s] for the same batch as batch() runs (the same strikes, the same
+/// pool), without any array in or out: what scripts/python_overhead.py compares batch() with.
+double engineSeconds(const Engine<double>& engine, const StateArrays& start, py::array_t<double> shots,
+                     unsigned threads)
+{
+  const auto rows = shots.unchecked<2>();
+  const physics::TableState<double> state = fromArrays(engine, start);
+  std::vector<physics::BatchShot<double>> planned(static_cast<std::size_t>(rows.shape(0)));
+  for (py::ssize_t i = 0; i < rows.shape(0); ++i)
+  {
+    planned[static_cast<std::size_t>(i)].ball_id = static_cast<int>(rows(i, 0));
+    planned[static_cast<std::size_t>(i)].cue = strikeOf(rows(i, 1), rows(i, 2), rows(i, 3), rows(i, 4), rows(i, 5));
+  }
+  py::gil_scoped_release release;
+  physics::ThreadPool pool(threads);
+  const auto begin = std::chrono::steady_clock::now();
+  const auto outcomes = physics::simulateBatch(engine, state, planned, pool);
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+}
 }  // namespace
 }  // namespace python
 }  // namespace cue_sim
@@ -281,6 +302,7 @@ PYBIND11_MODULE(_core, m)
       .def("check", [](const Engine<double>& e, const StateArrays& s) { fromArrays(e, s); })
       .def("rack", &rack)
       .def("simulate", &simulate)
-      .def("batch", &batch);
+      .def("batch", &batch)
+      .def("engine_seconds", &engineSeconds);
   bindGames(m);
 }

@@ -165,3 +165,10 @@ def test_samples_follow_the_shot_and_match_a_shot_stopped_there(engine):
     assert np.array_equal(samples.velocities[10], stopped.final.velocities)
     with pytest.raises(ValueError, match="sample_period"):
         cue_sim.simulate(engine, start, speed=8.0, sample_period=1e-6)
+
+
+def test_the_overhead_script_runs_and_reports_both_figures():
+    script = os.path.join(os.path.dirname(__file__), "..", "..", "scripts", "python_overhead.py")
+    out = subprocess.run([sys.executable, script, "200", "2"], capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stderr
+    assert "200 breaks on 2 thread(s): engine" in out.stdout and "the Python layer adds" in out.stdout
