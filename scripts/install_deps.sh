@@ -14,7 +14,7 @@ PACKAGES=(
   liburdfdom-tools libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure python3-yaml
   libinteractive-markers-dev
   # the Python module (pybind11, NumPy) and its tests
-  pybind11-dev python3-dev python3-numpy python3-pytest
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-dask python3-distributed python3-matplotlib
   # rviz, and rviz without a screen (screenshots)
   rviz xvfb xauth imagemagick
   # plots of the work-precision report

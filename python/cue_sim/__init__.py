@@ -11,6 +11,15 @@ In a catkin workspace the generated messages live here too (cue_sim.msg, cue_sim
 them does not load the engine, which loads on first use of the names below.
 """
 
+from pkgutil import extend_path
+
+# The package spans directories: this one (the API) and the build's (the compiled cue_sim._core and,
+# in a catkin build, the generated messages). catkin's devel space joins them when it is imported
+# first; when this directory comes first on sys.path (as in a Dask worker started from such a
+# process), join them here.
+__path__ = extend_path(__path__, __name__)
+del extend_path
+
 _API = ("Engine", "State", "Shot", "Samples", "Batch", "simulate", "batch", "tables", "models", "parameters", "EVENT_KINDS",
         "MOTION")
 _GAMES = ("Game", "Ruling", "rules")

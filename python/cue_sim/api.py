@@ -98,8 +98,14 @@ class Engine:
 
     def __init__(self, table: str = "7ft", ball_ball_model: Optional[str] = None,
                  cushion_model: Optional[str] = None, **params: float):
+        self._spec = (table, ball_ball_model, cushion_model, dict(params))
         self._engine = _core.Engine(table, {k: float(v) for k, v in params.items()}, ball_ball_model or "",
                                     cushion_model or "")
+
+    def __reduce__(self):
+        # Pickled as what it was made from (for Dask's workers, which build their own).
+        table, ball_ball_model, cushion_model, params = self._spec
+        return (_engine_from_spec, (table, ball_ball_model, cushion_model, params))
 
     @property
     def table(self) -> str:
@@ -144,6 +150,10 @@ class Samples:
     spins: np.ndarray
     motion: np.ndarray
     pocket: np.ndarray
+
+
+def _engine_from_spec(table, ball_ball_model, cushion_model, params):
+    return Engine(table, ball_ball_model, cushion_model, **params)
 
 
 @dataclass

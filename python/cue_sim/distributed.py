@@ -1,0 +1,93 @@
+"""Big batches on a Dask cluster (dask.distributed): the shots split into chunks, each chunk a
+cue_sim.batch() on a worker, the results put back in order.
+
+    import cue_sim, cue_sim.distributed
+    result = cue_sim.distributed.batch(engine, start, shots, noise=True, seed=1)            # a LocalCluster
+    result = cue_sim.distributed.batch(engine, start, shots, address="tcp://host:8786")     # a cluster
+
+The result is identical to cue_sim.batch() on the same arguments, in order, whatever the chunking:
+shot i's noise comes from seed + i alone. A worker that dies mid-batch loses no shot: the scheduler
+runs its chunks again elsewhere. Each worker builds its own engine from the Engine's table, models
+and coefficients (a table given as a URDF path must be at that path on every worker).
+"""
+from __future__ import annotations
+
+import sys
+import time
+from typing import Optional
+
+import numpy as np
+
+from cue_sim.api import Batch, Engine, State, batch as local_batch
+
+#: Shots a chunk holds by default: about a second of breaks on one core.
+DEFAULT_CHUNK = 20000
+
+
+def _run_chunk(engine: Engine, start: State, shots: np.ndarray, noise: bool, seed: int, threads: int) -> Batch:
+    return local_batch(engine, start, shots, noise=noise, seed=seed, threads=threads)
+
+
+def _join(parts) -> Batch:
+    return Batch(*(np.concatenate([getattr(p, f) for p in parts]) for f in
+                   ("executed", "positions", "pocket", "motion", "events", "time_to_rest", "at_rest")),
+                 [e for p in parts for e in p.error])
+
+
+class _Progress:
+    """A text progress bar on stderr: chunks done, shots per second."""
+
+    def __init__(self, chunks: int, shots: int, show: bool):
+        self.chunks, self.shots, self.show, self.done, self.begin = chunks, shots, show, 0, time.perf_counter()
+
+    def step(self):
+        self.done += 1
+        if not self.show:
+            return
+        width = 30
+        filled = width * self.done // self.chunks
+        rate = self.shots * self.done / self.chunks / max(time.perf_counter() - self.begin, 1e-9)
+        print(f"\rcue_sim.distributed: [{'#' * filled}{'.' * (width - filled)}] {self.done}/{self.chunks} chunks, "
+              f"{rate:,.0f} shots/s", end="" if self.done < self.chunks else "\n", file=sys.stderr, flush=True)
+
+
+def batch(engine: Engine, start: State, shots, noise: bool = False, seed: int = 0, chunk: int = DEFAULT_CHUNK,
+          address: Optional[str] = None, client=None, threads_per_chunk: int = 1, progress: bool = True) -> Batch:
+    """cue_sim.batch() spread over a Dask cluster, chunk shots a task.
+
+    address: a scheduler's address ("tcp://host:8786"); None with no client starts a LocalCluster
+    of this machine's cores (one single-threaded worker process each) for this call.
+    client: a dask.distributed.Client to use instead (left open).
+    threads_per_chunk: the engine's threads within one task (1 suits one worker process a core).
+    progress: a progress bar on stderr.
+    """
+    from dask.distributed import Client, LocalCluster, as_completed
+
+    shots = np.ascontiguousarray(shots, dtype=float)
+    if shots.ndim != 2 or shots.shape[1] != 6:
+        raise ValueError(f"shots must be an (N, 6) array of ball, speed, phi, theta, a, b; got {shots.shape}")
+    if chunk < 1:
+        raise ValueError(f"chunk must be at least 1 shot, got {chunk}")
+    own_cluster = own_client = None
+    if client is None:
+        if address is None:
+            own_cluster = LocalCluster(threads_per_worker=1, processes=True, dashboard_address=None)
+            address = own_cluster
+        own_client = client = Client(address)
+    try:
+        starts = list(range(0, len(shots), chunk))
+        # The engine (pickled as its table, models and coefficients) and the start state are small:
+        # each task carries its own copy rather than depending on scattered data, which a dying
+        # worker could take with it.
+        futures = [client.submit(_run_chunk, engine, start, shots[i:i + chunk], noise, seed + i, threads_per_chunk,
+                                 pure=False) for i in starts]
+        bar = _Progress(len(futures), len(shots), progress)
+        for _ in as_completed(futures):
+            bar.step()
+        parts = client.gather(futures)
+    finally:
+        if own_client is not None:
+            own_client.close()
+        if own_cluster is not None:
+            own_cluster.close()
+    return _join(parts) if parts else local_batch(engine, start, shots, noise=noise, seed=seed)

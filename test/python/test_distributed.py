@@ -1,0 +1,74 @@
+"""cue_sim.distributed on a real dask.distributed LocalCluster: the local batch's results, in
+order, whatever the chunking, and none lost when a worker is killed mid-batch."""
+import os
+import signal
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import cue_sim
+
+distributed = pytest.importorskip("dask.distributed")
+import cue_sim.distributed as spread  # noqa: E402
+
+
+@pytest.fixture(scope="module")
+def client():
+    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None)
+    with distributed.Client(cluster) as c:
+        yield c
+    cluster.close()
+
+
+def breaks(n):
+    return np.column_stack([np.zeros(n), np.full(n, 8.0), np.linspace(-0.02, 0.02, n), np.zeros((n, 3))])
+
+
+def same(a, b):
+    return all(np.array_equal(getattr(a, f), getattr(b, f)) for f in
+               ("executed", "positions", "pocket", "motion", "events", "time_to_rest", "at_rest")) and a.error == b.error
+
+
+def test_any_chunking_gives_the_local_batch_in_order(client):
+    engine = cue_sim.Engine("7ft")
+    start = engine.rack("nine", gap=1e-4, jitter=5e-5, seed=3)
+    shots = breaks(101)
+    local = cue_sim.batch(engine, start, shots, noise=True, seed=11)
+    for chunk in (1000, 10, 7):
+        assert same(spread.batch(engine, start, shots, noise=True, seed=11, chunk=chunk, client=client,
+                                 progress=False), local), chunk
+
+
+def chunk_states(client):
+    """The scheduler's state of every chunk task of the running batch ("memory" once done)."""
+    return client.run_on_scheduler(lambda dask_scheduler: [
+        ts.state for key, ts in dask_scheduler.tasks.items() if str(key).startswith("_run_chunk")])
+
+
+def test_a_worker_killed_mid_batch_loses_no_shot(client):
+    engine = cue_sim.Engine("7ft")
+    start = engine.rack("eight", gap=1e-4, jitter=5e-5, seed=1)
+    shots = breaks(48000)
+    local = cue_sim.batch(engine, start, shots)
+    result = {}
+    runner = threading.Thread(target=lambda: result.update(
+        out=spread.batch(engine, start, shots, chunk=200, client=client, progress=False)))
+    runner.start()
+    deadline = time.monotonic() + 60
+    while True:  # some chunks done, many still to do
+        states = chunk_states(client)
+        if states.count("memory") >= 4 and len(states) - states.count("memory") >= 40:
+            break
+        assert time.monotonic() < deadline and runner.is_alive(), states
+        time.sleep(0.005)
+    busy = [worker for worker, keys in client.processing().items() if keys]
+    assert busy
+    pids = client.run(os.getpid)
+    os.kill(pids[busy[0]], signal.SIGKILL)  # in the middle of a chunk
+    assert runner.is_alive()
+    runner.join(timeout=300)
+    assert not runner.is_alive()
+    assert same(result["out"], local)
+    assert client.run(os.getpid)  # the nanny brought a worker back
