@@ -20,10 +20,11 @@ from pkgutil import extend_path
 __path__ = extend_path(__path__, __name__)
 del extend_path
 
-_API = ("Engine", "State", "Shot", "Samples", "Batch", "simulate", "batch", "tables", "models", "parameters", "EVENT_KINDS",
-        "MOTION")
+_API = ("Engine", "State", "Shot", "Samples", "Batch", "TableGeometry", "simulate", "batch", "tables", "models",
+        "parameters", "ball_colour", "is_striped", "EVENT_KINDS", "MOTION")
 _GAMES = ("Game", "Ruling", "rules")
-__all__ = list(_API + _GAMES)
+_DRAWING = ("draw_shot",)
+__all__ = list(_API + _GAMES + _DRAWING)
 
 
 def __getattr__(name):
@@ -33,6 +34,9 @@ def __getattr__(name):
     if name in _GAMES:
         from cue_sim import games
         return getattr(games, name)
+    if name in _DRAWING:
+        from cue_sim import drawing  # matplotlib loads only here
+        return getattr(drawing, name)
     raise AttributeError(f"module 'cue_sim' has no attribute '{name}'")
 
 

@@ -5,7 +5,7 @@ node. Values a user can get wrong raise ValueError naming them.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Dict, List, Optional, Tuple
 
 import numpy as np
@@ -88,6 +88,30 @@ def _rows(values, n: int, name: str) -> np.ndarray:
     return values
 
 
+@dataclass
+class TableGeometry:
+    """A table's shape: the cloth's centre (x, y), length and width [m]; each straight cushion's
+    nose line (name, start, end), the play on its left from start to end; each jaw or cushion end
+    (name, centre, radius; a ball touches it at radius + R from the centre); each pocket's capture
+    circle by name (x, y, radius)."""
+    cloth_centre: Tuple[float, float]
+    cloth_length: float
+    cloth_width: float
+    cushions: List[Tuple[str, Tuple[float, float], Tuple[float, float]]]
+    jaws: List[Tuple[str, Tuple[float, float], float]]
+    pockets: Dict[str, Tuple[float, float, float]]
+
+
+def ball_colour(ball: int) -> Tuple[float, float, float]:
+    """A ball's colour (r, g, b in [0, 1]) as rviz shows it: standard pool colours, 9-15 the
+    stripes of 1-7, 0 the cue ball."""
+    return tuple(_core.ball_colour(int(ball)))
+
+
+def is_striped(ball: int) -> bool:
+    return bool(_core.is_striped(int(ball)))
+
+
 class Engine:
     """The physics model: a table, its coefficients and contact models. Immutable; share it.
 
@@ -121,6 +145,15 @@ class Engine:
         """Each pocket by its URDF link name: the centre (x, y) [m] and radius [m] of its capture
         circle (a ball whose centre enters it drops)."""
         return {name: (x, y, r) for name, x, y, r in self._engine.pockets}
+
+    @property
+    def geometry(self) -> "TableGeometry":
+        """The table's shape in its frame (REP 103: x along the table towards the foot, y across,
+        metres): the cloth, the cushions' nose lines, the jaws and the pockets."""
+        cx, cy, length, width = self._engine.cloth
+        return TableGeometry((cx, cy), length, width,
+                             [(name, (x0, y0), (x1, y1)) for name, x0, y0, x1, y1 in self._engine.cushions],
+                             [(name, (x, y), r) for name, x, y, r in self._engine.jaws], self.pockets)
 
     @property
     def models(self) -> Dict[str, str]:
@@ -160,12 +193,15 @@ def _engine_from_spec(table, ball_ball_model, cushion_model, params):
 class Shot:
     """What a shot did: every event in order (EVENT_DTYPE, times from the strike), the table where
     it left it, the time from the strike to its last event [s], whether every ball came to rest,
-    and the samples asked for (None without a sample_period)."""
+    the samples asked for (None without a sample_period), and the strike and `until` it was
+    simulated with (so that the shot can be run again, as draw_shot() does)."""
     events: np.ndarray
     final: State
     time_to_rest: float
     at_rest: bool
     samples: Optional[Samples] = None
+    strike: Dict[str, float] = field(default_factory=dict)
+    until: Optional[float] = None
 
 
 def simulate(engine: Engine, start: State, ball: int = 0, speed: float = 1.0, phi: float = 0.0,
@@ -193,7 +229,10 @@ def simulate(engine: Engine, start: State, ball: int = 0, speed: float = 1.0, ph
         count = sampled["positions"].shape[0]
         samples = Samples(float(sample_period), np.arange(count) * float(sample_period), sampled["positions"],
                           sampled["velocities"], sampled["spins"], sampled["motion"], sampled["pocket"])
-    return Shot(events, State._of(out["state"]), float(out["time_to_rest"]), bool(out["at_rest"]), samples)
+    strike = {"ball": int(ball), "speed": float(speed), "phi": float(phi), "theta": float(theta), "a": float(a),
+              "b": float(b)}
+    return Shot(events, State._of(out["state"]), float(out["time_to_rest"]), bool(out["at_rest"]), samples, strike,
+                None if until is None else float(until))
 
 
 @dataclass

@@ -4,6 +4,7 @@ cue_sim.batch() on a worker, the results put back in order.
     import cue_sim, cue_sim.distributed
     result = cue_sim.distributed.batch(engine, start, shots, noise=True, seed=1)            # a LocalCluster
     result = cue_sim.distributed.batch(engine, start, shots, address="tcp://host:8786")     # a cluster
+    scores = cue_sim.distributed.map_batch(score, engine, start, shots)   # score(Batch) on the workers
 
 The result is identical to cue_sim.batch() on the same arguments, in order, whatever the chunking:
 shot i's noise comes from seed + i alone. A worker that dies mid-batch loses no shot: the scheduler
@@ -14,14 +15,28 @@ from __future__ import annotations
 
 import sys
 import time
-from typing import Optional
+from typing import Any, Callable, List, Optional
 
 import numpy as np
 
 from cue_sim.api import Batch, Engine, State, batch as local_batch
 
-#: Shots a chunk holds by default: about a second of breaks on one core.
+#: Shots a chunk holds at most by default: about a second of breaks on one core, so that a task's
+#: own cost (a few milliseconds to ship and schedule it) stays below 1 %.
 DEFAULT_CHUNK = 20000
+#: Chunks a worker gets at least by default, so that the last round of chunks leaves workers idle
+#: for a small part of the batch (with 2 chunks a worker, a third of a batch's time could be one
+#: chunk running alone).
+CHUNKS_PER_WORKER = 10
+#: Shots a chunk holds at least by default (unless the batch is smaller).
+MIN_CHUNK = 200
+
+
+def default_chunk(shots: int, workers: int) -> int:
+    """The chunk size used when none is given: CHUNKS_PER_WORKER chunks a worker, within
+    [MIN_CHUNK, DEFAULT_CHUNK] shots."""
+    wanted = -(-shots // (CHUNKS_PER_WORKER * max(workers, 1)))
+    return max(1, min(DEFAULT_CHUNK, max(MIN_CHUNK, wanted)))
 
 
 def _run_chunk(engine: Engine, start: State, shots: np.ndarray, noise: bool, seed: int, threads: int) -> Batch:
@@ -51,23 +66,31 @@ class _Progress:
               f"{rate:,.0f} shots/s", end="" if self.done < self.chunks else "\n", file=sys.stderr, flush=True)
 
 
-def batch(engine: Engine, start: State, shots, noise: bool = False, seed: int = 0, chunk: int = DEFAULT_CHUNK,
-          address: Optional[str] = None, client=None, threads_per_chunk: int = 1, progress: bool = True) -> Batch:
-    """cue_sim.batch() spread over a Dask cluster, chunk shots a task.
+def _map_chunk(fn, engine: Engine, start: State, shots: np.ndarray, noise: bool, seed: int, threads: int):
+    return fn(_run_chunk(engine, start, shots, noise, seed, threads))
 
-    address: a scheduler's address ("tcp://host:8786"); None with no client starts a LocalCluster
-    of this machine's cores (one single-threaded worker process each) for this call.
-    client: a dask.distributed.Client to use instead (left open).
-    threads_per_chunk: the engine's threads within one task (1 suits one worker process a core).
-    progress: a progress bar on stderr.
+
+def map_batch(fn: Callable[[Batch], Any], engine: Engine, start: State, shots, noise: bool = False, seed: int = 0,
+              chunk: Optional[int] = None, address: Optional[str] = None, client=None, threads_per_chunk: int = 1,
+              progress: bool = True) -> List[Any]:
+    """fn applied, on the workers, to each chunk's Batch: [fn(chunk 0), fn(chunk 1), ...] in order.
+
+    For searches too big to bring every outcome home: fn keeps what matters (a score a shot, say)
+    and only that crosses the network. Chunk k holds shots[k * chunk:(k + 1) * chunk] and its noise
+    comes from seed + k * chunk onwards, as in cue_sim.batch() on the whole array. fn must be
+    picklable (a module's function, or one defined in the script: Dask pickles it by value).
+    Other arguments as for batch().
     """
     from dask.distributed import Client, LocalCluster, as_completed
 
     shots = np.ascontiguousarray(shots, dtype=float)
     if shots.ndim != 2 or shots.shape[1] != 6:
         raise ValueError(f"shots must be an (N, 6) array of ball, speed, phi, theta, a, b; got {shots.shape}")
-    if chunk < 1:
+    if chunk is not None and int(chunk) < 1:
         raise ValueError(f"chunk must be at least 1 shot, got {chunk}")
+    engine.check(start)  # refused here, by name, rather than on every worker
+    if len(shots) == 0:
+        return []
     own_cluster = own_client = None
     if client is None:
         if address is None:
@@ -75,19 +98,39 @@ def batch(engine: Engine, start: State, shots, noise: bool = False, seed: int = 
             address = own_cluster
         own_client = client = Client(address)
     try:
-        starts = list(range(0, len(shots), chunk))
+        if chunk is None:
+            chunk = default_chunk(len(shots), len(client.scheduler_info()["workers"]))
+        chunk = int(chunk)
         # The engine (pickled as its table, models and coefficients) and the start state are small:
         # each task carries its own copy rather than depending on scattered data, which a dying
         # worker could take with it.
-        futures = [client.submit(_run_chunk, engine, start, shots[i:i + chunk], noise, seed + i, threads_per_chunk,
-                                 pure=False) for i in starts]
+        futures = [client.submit(_map_chunk, fn, engine, start, shots[i:i + chunk], noise, seed + i,
+                                 threads_per_chunk, pure=False) for i in range(0, len(shots), chunk)]
         bar = _Progress(len(futures), len(shots), progress)
         for _ in as_completed(futures):
             bar.step()
-        parts = client.gather(futures)
+        return client.gather(futures)
     finally:
         if own_client is not None:
             own_client.close()
         if own_cluster is not None:
             own_cluster.close()
-    return _join(parts) if parts else local_batch(engine, start, shots, noise=noise, seed=seed)
+
+
+def _whole(outcome: Batch) -> Batch:
+    return outcome
+
+
+def batch(engine: Engine, start: State, shots, noise: bool = False, seed: int = 0, chunk: Optional[int] = None,
+          address: Optional[str] = None, client=None, threads_per_chunk: int = 1, progress: bool = True) -> Batch:
+    """cue_sim.batch() spread over a Dask cluster, `chunk` shots a task; the same Batch, in order.
+
+    address: a scheduler's address ("tcp://host:8786"); None with no client starts a LocalCluster
+    of this machine's cores (one single-threaded worker process each) for this call.
+    client: a dask.distributed.Client to use instead (left open).
+    chunk: shots a task; None: default_chunk() for the cluster's workers.
+    threads_per_chunk: the engine's threads within one task (1 suits one worker process a core).
+    progress: a progress bar on stderr.
+    """
+    parts = map_batch(_whole, engine, start, shots, noise, seed, chunk, address, client, threads_per_chunk, progress)
+    return _join(parts) if parts else local_batch(engine, start, np.zeros((0, 6)), noise=noise, seed=seed)

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "cue_sim/scene/ball_colours.hpp"
+
 namespace cue_sim
 {
 namespace
@@ -72,20 +74,8 @@ Marker markerIn(const std::string& frame, const std::string& ns, int id, int typ
 
 std_msgs::ColorRGBA poolColour(int id)
 {
-  static const std::array<std::array<float, 3>, 8> colours = {{
-      {0.97f, 0.97f, 0.93f},
-      {1.0f, 0.82f, 0.0f},
-      {0.0f, 0.2f, 0.8f},
-      {0.85f, 0.05f, 0.05f},
-      {0.4f, 0.1f, 0.55f},
-      {1.0f, 0.45f, 0.0f},
-      {0.0f, 0.5f, 0.2f},
-      {0.5f, 0.08f, 0.1f},
-  }};
-  if (id == 8)
-    return rgba(0.05f, 0.05f, 0.05f);
-  const auto& c = colours[id >= 9 && id <= 15 ? id - 8 : (id >= 0 && id <= 7 ? id : 0)];
-  return rgba(c[0], c[1], c[2]);
+  const Rgb c = ballColour(id);
+  return rgba(c.r, c.g, c.b);
 }
 
 visualization_msgs::MarkerArray tableMarkers(const physics::TableModel& table, const physics::TableState<double>& state,
@@ -161,7 +151,7 @@ visualization_msgs::MarkerArray tableMarkers(const physics::TableModel& table, c
   for (const auto& b : state.balls)
   {
     const std::string frame = frames.ball_prefix + std::to_string(b.id);
-    const bool striped = b.id >= 9 && b.id <= 15;
+    const bool striped = isStriped(b.id);
     Marker ball = markerIn(frame, "balls", b.id, Marker::SPHERE);
     ball.frame_locked = true;
     ball.scale.x = ball.scale.y = ball.scale.z = 2 * R;

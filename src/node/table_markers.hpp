@@ -8,8 +8,7 @@
 
 namespace cue_sim
 {
-/// Standard pool colours: 1 yellow, 2 blue, 3 red, 4 purple, 5 orange, 6 green, 7 maroon,
-/// 8 black; 9-15 are the stripes of 1-7; 0 is the white cue ball.
+/// A ball's colour (scene/ball_colours.hpp) as a marker colour.
 std_msgs::ColorRGBA poolColour(int id);
 std_msgs::ColorRGBA rgba(float r, float g, float b, float a = 1.0f);
 /// A marker to ADD in `frame`, of `type`, with an identity pose.

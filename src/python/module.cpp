@@ -21,6 +21,7 @@
 #include "cue_sim/physics/physics_params.hpp"
 #include "cue_sim/physics/rack.hpp"
 #include "cue_sim/physics/simulation.hpp"
+#include "cue_sim/scene/ball_colours.hpp"
 #include "cue_sim/session/shot_prediction.hpp"
 #include "cue_sim/table_description/table_catalog.hpp"
 #include "cue_sim/table_description/urdf_table_loader.hpp"
@@ -268,6 +269,11 @@ PYBIND11_MODULE(_core, m)
   m.def("cushion_models", &physics::cushionModelNames);
   m.def("param_fields", &paramFields);
   m.def("rack_names", &physics::rackNames);
+  m.def("ball_colour", [](int id) {
+    const Rgb c = ballColour(id);
+    return std::make_tuple(c.r, c.g, c.b);
+  });
+  m.def("is_striped", &isStriped);
   py::class_<StateArrays>(m, "StateArrays")
       .def(py::init<>())
       .def_readwrite("ids", &StateArrays::ids)
@@ -297,6 +303,26 @@ PYBIND11_MODULE(_core, m)
                                std::vector<std::tuple<std::string, double, double, double>> out;
                                for (const auto& p : e.table().pockets())
                                  out.emplace_back(p.name, p.centre.x(), p.centre.y(), p.radius);
+                               return out;
+                             })
+      .def_property_readonly("cloth",
+                             [](const Engine<double>& e) {
+                               const auto& t = e.table();
+                               return std::make_tuple(t.clothCentre().x(), t.clothCentre().y(), t.clothLength(),
+                                                      t.clothWidth());
+                             })
+      .def_property_readonly("cushions",
+                             [](const Engine<double>& e) {
+                               std::vector<std::tuple<std::string, double, double, double, double>> out;
+                               for (const auto& c : e.table().segments())
+                                 out.emplace_back(c.name, c.start.x(), c.start.y(), c.end.x(), c.end.y());
+                               return out;
+                             })
+      .def_property_readonly("jaws",
+                             [](const Engine<double>& e) {
+                               std::vector<std::tuple<std::string, double, double, double>> out;
+                               for (const auto& c : e.table().circles())
+                                 out.emplace_back(c.name, c.centre.x(), c.centre.y(), c.radius);
                                return out;
                              })
       .def("check", [](const Engine<double>& e, const StateArrays& s) { fromArrays(e, s); })

@@ -1,0 +1,30 @@
+#include "cue_sim/scene/ball_colours.hpp"
+
+#include <array>
+
+namespace cue_sim
+{
+Rgb ballColour(int id)
+{
+  static const std::array<Rgb, 9> colours = {{
+      {0.97f, 0.97f, 0.93f},  // cue ball: off-white
+      {1.0f, 0.82f, 0.0f},    // yellow
+      {0.0f, 0.2f, 0.8f},     // blue
+      {0.85f, 0.05f, 0.05f},  // red
+      {0.4f, 0.1f, 0.55f},    // purple
+      {1.0f, 0.45f, 0.0f},    // orange
+      {0.0f, 0.5f, 0.2f},     // green
+      {0.5f, 0.08f, 0.1f},    // maroon
+      {0.05f, 0.05f, 0.05f},  // black
+  }};
+  if (isStriped(id))
+    return colours[id - 8];
+  return colours[id >= 0 && id <= 8 ? id : 0];
+}
+
+bool isStriped(int id)
+{
+  return id >= 9 && id <= 15;
+}
+
+}  // namespace cue_sim
