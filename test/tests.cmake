@@ -75,6 +75,9 @@ add_dependencies(game_node_tests table_node ${PROJECT_NAME}_generate_messages_cp
 target_compile_definitions(game_node_tests PRIVATE CUE_SIM_TEST_DIR="${CMAKE_CURRENT_BINARY_DIR}")
 add_rostest(test/node/game_replay.test DEPENDENCIES game_node_tests self_play)
 
+# The same scenes through the Python module, the simulate program and the node's ~predict.
+add_rostest(test/node/same_answers.test DEPENDENCIES table_node simulate cue_sim_python)
+
 add_rostest_gtest(examples_tests test/node/examples.test test/node/test_examples.cpp test/node/rostest_main.cpp)
 target_include_directories(examples_tests PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(examples_tests ${catkin_LIBRARIES})

@@ -1,7 +1,10 @@
 """cue_sim.distributed on a real dask.distributed LocalCluster: the local batch's results, in
 order, whatever the chunking, and none lost when a worker is killed mid-batch."""
 import os
+import re
 import signal
+import subprocess
+import sys
 import threading
 import time
 
@@ -44,7 +47,7 @@ def test_any_chunking_gives_the_local_batch_in_order(client):
 def chunk_states(client):
     """The scheduler's state of every chunk task of the running batch ("memory" once done)."""
     return client.run_on_scheduler(lambda dask_scheduler: [
-        ts.state for key, ts in dask_scheduler.tasks.items() if str(key).startswith("_run_chunk")])
+        ts.state for key, ts in dask_scheduler.tasks.items() if str(key).startswith("_map_chunk")])
 
 
 def test_a_worker_killed_mid_batch_loses_no_shot(client):
@@ -72,3 +75,13 @@ def test_a_worker_killed_mid_batch_loses_no_shot(client):
     assert not runner.is_alive()
     assert same(result["out"], local)
     assert client.run(os.getpid)  # the nanny brought a worker back
+
+
+def test_the_break_search_example_runs_small():
+    script = os.path.join(os.path.dirname(__file__), "..", "..", "scripts", "search_breaks.py")
+    out = subprocess.run([sys.executable, script, "--shots", "3000"], capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stderr[-3000:]
+    assert re.search(r"best of 3000 breaks: shot \d+ pots [1-9]\d* object balls", out.stdout), out.stdout
+    assert re.search(r"dask \(\d+ workers, chunks of \d+\): [\d,]+ shots/s", out.stdout), out.stdout
+    assert "(same scores)" in out.stdout  # the cluster's scores are the local batch's
+    assert "chunks" in out.stderr  # the progress bar
