@@ -22,6 +22,11 @@ cd "$ws"
 python=(-DPYTHON_EXECUTABLE=/usr/bin/python3 -DPython3_EXECUTABLE=/usr/bin/python3)
 echo "catkin_route: catkin_make in $ws (log: $ws/catkin_make.log)"
 catkin_make "${python[@]}" > "$ws/catkin_make.log" 2>&1 || { tail -40 "$ws/catkin_make.log"; exit 1; }
+echo "catkin_route: the Python module and the generated messages share the package cue_sim"
+(set +u; source devel/setup.bash; /usr/bin/python3 -c "import cue_sim, cue_sim.msg, cue_sim.srv
+e = cue_sim.Engine('9ft'); s = cue_sim.simulate(e, e.rack('nine'), speed=7.0, phi=0.003)
+assert s.at_rest and len(s.events) > 20 and cue_sim.msg.BallState and cue_sim.srv.Predict, s
+print('catkin_route: cue_sim imports from the workspace:', len(s.events), 'events in a 9-ball break')")
 echo "catkin_route: catkin_make run_tests (log: $ws/run_tests.log)"
 catkin_make run_tests "${python[@]}" > "$ws/run_tests.log" 2>&1 || { tail -40 "$ws/run_tests.log"; exit 1; }
 catkin_test_results build/test_results

@@ -89,9 +89,10 @@ def main():
         cluster.close()
 
     best = int(np.argmax(scores))
-    ball, speed, phi, theta, a, b = shots[best]
+    ball, speed, phi, theta, a, b = (float(x) for x in shots[best])
     print(f"best of {len(shots)} breaks: shot {best} pots {scores[best]} object balls: speed {speed:.3f} m/s, "
           f"phi {phi:.4f} rad, theta {theta:.3f} rad, a {a:.3f}, b {b:.3f}")
+    print(f"  exactly (a break is chaotic): speed={speed!r}, phi={phi!r}, theta={theta!r}, a={a!r}, b={b!r}")
     counts = np.bincount(scores + 1, minlength=2)
     print("shots by balls potted: scratch " + str(counts[0]) + ", " +
           ", ".join(f"{k - 1}: {c}" for k, c in enumerate(counts) if k > 0 and c))

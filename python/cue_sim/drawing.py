@@ -182,8 +182,8 @@ def draw_shot(engine: Engine, start: State, shot: Shot, path: Optional[str] = No
     _draw_events(ax, shot, exact, index, radius)
     s = shot.strike
     ax.set_title(title if title is not None else
-                 f"ball {s['ball']}: {s['speed']:g} m/s, phi {s['phi']:g} rad, theta {s['theta']:g}, "
-                 f"a {s['a']:g}, b {s['b']:g}; {len(shot.events)} events, "
+                 f"ball {s['ball']}: {s['speed']:.4g} m/s, phi {s['phi']:.4g} rad, theta {s['theta']:.4g}, "
+                 f"a {s['a']:.4g}, b {s['b']:.4g}; {len(shot.events)} events, "
                  f"{int((shot.final.motion == 4).sum())} pocketed, {shot.time_to_rest:.2f} s", fontsize=9)
     ax.set_aspect("equal")
     ax.set_xlabel("x [m] (table frame)")

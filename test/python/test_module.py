@@ -172,3 +172,15 @@ def test_the_overhead_script_runs_and_reports_both_figures():
     out = subprocess.run([sys.executable, script, "200", "2"], capture_output=True, text=True, timeout=120)
     assert out.returncode == 0, out.stderr
     assert "200 breaks on 2 thread(s): engine" in out.stdout and "the Python layer adds" in out.stdout
+
+
+def test_the_readme_example_runs(tmp_path, monkeypatch):
+    readme = open(os.path.join(os.path.dirname(__file__), "..", "..", "README.md")).read()
+    section = readme[readme.index("## From Python, without ROS"):]
+    begin = section.index("```python\n") + len("```python\n")
+    code = section[begin:section.index("\n```", begin)]
+    monkeypatch.chdir(tmp_path)
+    names = {}
+    exec(compile(code, "README.md", "exec"), names)
+    assert (tmp_path / "shot.png").stat().st_size > 10000
+    assert names["out"].positions.shape == (1000, 16, 3) and 0 <= names["best"] < 1000
