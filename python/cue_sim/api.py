@@ -250,14 +250,20 @@ class Batch:
     error: List[str]
 
 
+def shot_rows(shots) -> np.ndarray:
+    """shots as a contiguous (N, 6) float array of ball, speed, phi, theta, a, b, or ValueError."""
+    shots = np.ascontiguousarray(shots, dtype=float)
+    if shots.ndim != 2 or shots.shape[1] != 6:
+        raise ValueError(f"shots must be an (N, 6) array of ball, speed, phi, theta, a, b; got {shots.shape}")
+    return shots
+
+
 def batch(engine: Engine, start: State, shots, noise: bool = False, seed: int = 0, threads: int = 0) -> Batch:
     """Runs shots, an (N, 6) array of ball, speed, phi, theta, a, b, each from `start`, on
     `threads` threads (0: every core), the GIL released. With `noise`, shot i gets the
     tournaments' execution noise from seed + i alone, so any split of a batch gives the same shots.
     Each outcome is what simulate() gives for that shot (with its noise)."""
-    shots = np.ascontiguousarray(shots, dtype=float)
-    if shots.ndim != 2 or shots.shape[1] != 6:
-        raise ValueError(f"shots must be an (N, 6) array of ball, speed, phi, theta, a, b; got {shots.shape}")
+    shots = shot_rows(shots)
     out = engine._engine.batch(start._arrays(), shots, bool(noise), int(seed), int(threads))
     return Batch(np.asarray(out["executed"]), np.asarray(out["positions"]), np.asarray(out["pocket"]),
                  np.asarray(out["motion"]), np.asarray(out["events"]), np.asarray(out["time_to_rest"]),

@@ -19,7 +19,7 @@ from typing import Any, Callable, List, Optional
 
 import numpy as np
 
-from cue_sim.api import Batch, Engine, State, batch as local_batch
+from cue_sim.api import Batch, Engine, State, batch as local_batch, shot_rows
 
 #: Shots a chunk holds at most by default: about a second of breaks on one core, so that a task's
 #: own cost (a few milliseconds to ship and schedule it) stays below 1 %.
@@ -83,9 +83,7 @@ def map_batch(fn: Callable[[Batch], Any], engine: Engine, start: State, shots, n
     """
     from dask.distributed import Client, LocalCluster, as_completed
 
-    shots = np.ascontiguousarray(shots, dtype=float)
-    if shots.ndim != 2 or shots.shape[1] != 6:
-        raise ValueError(f"shots must be an (N, 6) array of ball, speed, phi, theta, a, b; got {shots.shape}")
+    shots = shot_rows(shots)
     if chunk is not None and int(chunk) < 1:
         raise ValueError(f"chunk must be at least 1 shot, got {chunk}")
     engine.check(start)  # refused here, by name, rather than on every worker
