@@ -184,3 +184,17 @@ def test_the_readme_example_runs(tmp_path, monkeypatch):
     exec(compile(code, "README.md", "exec"), names)
     assert (tmp_path / "shot.png").stat().st_size > 10000
     assert names["out"].positions.shape == (1000, 16, 3) and 0 <= names["best"] < 1000
+
+
+def test_a_table_from_its_urdf_file_is_the_named_table(tmp_path):
+    urdf = os.path.join(os.path.dirname(__file__), "..", "..", "urdf", "table_9ft.urdf")
+    by_file, by_name = cue_sim.Engine(urdf), cue_sim.Engine("9ft")
+    assert by_file.pockets == by_name.pockets
+    a = cue_sim.simulate(by_file, by_file.rack("nine"), speed=7.0, phi=0.003)
+    b = cue_sim.simulate(by_name, by_name.rack("nine"), speed=7.0, phi=0.003)
+    assert np.array_equal(a.events, b.events) and np.array_equal(a.final.positions, b.final.positions)
+    broken = tmp_path / "broken.urdf"
+    broken.write_text("<robot name='x'><link name='cloth'/>")
+    for path in (str(tmp_path / "missing.urdf"), str(broken)):
+        with pytest.raises(ValueError, match=path):
+            cue_sim.Engine(path)
