@@ -1,6 +1,10 @@
 """Pictures from Python: draw_shot writes a PNG of the table, and the paths it draws are the
 shot's: from the start to the final state, bending exactly where the events happened (balls 2R
 apart at a contact, R from a cushion's nose when they hit it, on the capture circle as they drop)."""
+import os
+import subprocess
+import sys
+
 import numpy as np
 import pytest
 
@@ -88,3 +92,13 @@ def test_geometry_and_colours():
     assert len(g.pockets) == 6 and len(g.cushions) == 6
     assert cue_sim.ball_colour(9) == cue_sim.ball_colour(1) and cue_sim.is_striped(9) and not cue_sim.is_striped(1)
     assert max(cue_sim.ball_colour(8)) < 0.1 and min(cue_sim.ball_colour(0)) > 0.9
+
+
+def test_the_readme_picture_script_runs_and_its_caption_holds(tmp_path):
+    # The README's caption: the best of search_breaks.py's million pots 9 object balls, cue ball up.
+    script = os.path.join(os.path.dirname(__file__), "..", "..", "scripts", "draw_break.py")
+    out = subprocess.run([sys.executable, script, "--out", str(tmp_path / "b.png")], capture_output=True, text=True,
+                         timeout=120)
+    assert out.returncode == 0, out.stderr
+    assert "9 object balls potted, cue ball up" in out.stdout
+    assert (tmp_path / "b.png").stat().st_size > 10000
