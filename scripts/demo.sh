@@ -23,8 +23,8 @@ for _ in $(seq 100); do
   sleep 0.2
 done
 [ "$rviz" = true ] && sleep 5  # let rviz come up
-echo "cue_sim demo: breaking (cue ball, V0 = 8 m/s along +x)"
-rosservice call /table/strike "{ball_id: 0, speed: 8.0, phi: 0.0, theta: 0.0, a: 0.0, b: 0.0}"
+echo "cue_sim demo: breaking (cue ball, V0 = 8 m/s, 0.002 rad off +x: a dead-straight break meets the rack symmetrically)"
+rosservice call /table/strike "{ball_id: 0, speed: 8.0, phi: 0.002, theta: 0.0, a: 0.0, b: 0.0}"
 python3 "$here/watch_shot.py" 60
 if [ "$rviz" = true ]; then
   echo "cue_sim demo: rviz stays open; try another shot, e.g."

@@ -103,11 +103,9 @@ void AimMarker::publish()
   arrow.points = {from, to};
   drag.markers.push_back(arrow);
   marker.controls.push_back(drag);
-
-  InteractiveMarkerControl menu;
-  menu.name = "menu";
-  menu.interaction_mode = InteractiveMarkerControl::MENU;
-  marker.controls.push_back(menu);
+  // No MENU control: rviz opens the marker's menu (Strike, Predict) on a right-click of any of its
+  // controls, and it would draw a MENU control without markers as a text of the (empty)
+  // description, logging an error each time.
 
   server_.insert(marker, [this](const visualization_msgs::InteractiveMarkerFeedbackConstPtr& f) { onFeedback(f); });
   menu_.apply(server_, kName);

@@ -71,6 +71,11 @@ PredictionServices::~PredictionServices()
   spinner_->stop();
 }
 
+void PredictionServices::clearPreview()
+{
+  preview_publisher_.publish(clearedPreview());
+}
+
 void PredictionServices::trimMemory()
 {
   // glibc keeps freed memory in its arenas: a batch's reply would stay with the node for good.
@@ -83,10 +88,13 @@ bool PredictionServices::onPredict(Predict::Request& request, Predict::Response&
   ran_ = true;
   session::PredictionStart start;
   std::string why = session::whyBadSamplePeriod(request.sample_period);
+  long layout = 0, strikes = 0;  // the table the preview is of
   if (why.empty())
   {
     std::lock_guard<std::mutex> lock(shared_.mutex);
     why = shared_.live->predictionStart(toBallInputs(request.balls), toStamp(shared_.now()), start);
+    layout = shared_.live->layoutVersion();
+    strikes = shared_.live->strikeCount();
   }
   if (!why.empty())
   {
@@ -104,8 +112,15 @@ bool PredictionServices::onPredict(Predict::Request& request, Predict::Response&
   const bool refereed = session::predictedRuling(start, prediction, ruling);
   response.prediction.ruling = toRulingMsg(ruling, refereed);
   if (prediction.success)
-    preview_publisher_.publish(previewMarkers(*start.engine, start.table, request.shot.ball_id,
-                                              prediction.executed.strike, parameters_.table_frame));
+  {
+    const visualization_msgs::MarkerArray preview = previewMarkers(*start.engine, start.table, request.shot.ball_id,
+                                                                   prediction.executed.strike, parameters_.table_frame);
+    // Drawn only if the table has not moved on meanwhile (the publishing thread clears a preview
+    // when it does, under the same lock).
+    std::lock_guard<std::mutex> lock(shared_.mutex);
+    if (shared_.live->layoutVersion() == layout && shared_.live->strikeCount() == strikes)
+      preview_publisher_.publish(preview);
+  }
   return true;
 }
 

@@ -26,6 +26,9 @@ public:
   /// ~predict (also what the aim marker's "Predict" asks): draws the paths on ~preview.
   bool onPredict(Predict::Request& request, Predict::Response& response);
   bool onPredictBatch(PredictBatch::Request& request, PredictBatch::Response& response);
+  /// Takes the preview off ~preview (the table was struck, racked, reset or edited). Call with
+  /// shared_.mutex held.
+  void clearPreview();
 
 private:
   /// Gives the memory heavy requests freed back to the system.

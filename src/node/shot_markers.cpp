@@ -37,14 +37,20 @@ Marker cueStickMarker(const physics::CueStick& cue, const std::string& frame, co
   return m;
 }
 
-visualization_msgs::MarkerArray previewMarkers(const physics::Engine<double>& engine,
-                                               const physics::TableState<double>& start, int ball_id,
-                                               const physics::CueStrike<double>& strike, const std::string& frame)
+visualization_msgs::MarkerArray clearedPreview()
 {
   visualization_msgs::MarkerArray out;
   Marker clear;
   clear.action = Marker::DELETEALL;
   out.markers.push_back(clear);
+  return out;
+}
+
+visualization_msgs::MarkerArray previewMarkers(const physics::Engine<double>& engine,
+                                               const physics::TableState<double>& start, int ball_id,
+                                               const physics::CueStrike<double>& strike, const std::string& frame)
+{
+  visualization_msgs::MarkerArray out = clearedPreview();
 
   physics::TableState<double> state = start;
   engine.strike(state, ball_id, strike);

@@ -22,4 +22,7 @@ visualization_msgs::MarkerArray previewMarkers(const physics::Engine<double>& en
                                                const physics::TableState<double>& start, int ball_id,
                                                const physics::CueStrike<double>& strike, const std::string& frame);
 
+/// What takes a preview off the screen: one DELETEALL.
+visualization_msgs::MarkerArray clearedPreview();
+
 }  // namespace cue_sim

@@ -193,6 +193,12 @@ void TableNode::tick()
     balls = table.balls();
     at_rest = table.atRest();
     layout = table.layoutVersion();
+    if (layout != preview_layout_ || table.strikeCount() != preview_strikes_)
+    {
+      predictions_->clearPreview();  // the table moved on: the preview is stale
+      preview_layout_ = layout;
+      preview_strikes_ = table.strikeCount();
+    }
     if (layout != markers_drawn_ || ros::WallTime::now() - markers_sent_ > kMarkerRefresh)
       publishMarkers(table);
     games_->publishIfChanged(table, stamp);

@@ -47,7 +47,9 @@ private:
 
   NodeParameters parameters_;
   SharedTable shared_;
-  long markers_drawn_ = -1;     ///< the layout version last drawn on ~markers
+  long markers_drawn_ = -1;  ///< the layout version last drawn on ~markers
+  long preview_layout_ = 0;  ///< the layout version and strike count the preview may show
+  long preview_strikes_ = 0;
   ros::WallTime markers_sent_;  ///< when ~markers last went out
   long aim_placed_at_ = -1;     ///< the layout the aim marker waits on at the cue ball (-1: balls moving)
 

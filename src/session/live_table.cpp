@@ -234,6 +234,7 @@ StrikeOutcome LiveTable::strike(const Shot& shot, Stamp now)
   const physics::Ball<double> before = live_.snapshot()[live_.state().indexOf(shot.ball_id)];
   outcome.cue = physics::cueStickFor(before, outcome.executed.strike, engine_->params(), kCueDrawGap);
   live_.strike(shot.ball_id, outcome.executed.strike);
+  ++strike_count_;
   balls_at_rest_ = false;
   const physics::Ball<double>& ball = live_.state().balls[live_.state().indexOf(shot.ball_id)];
   outcome.ball_velocity = ball.v;

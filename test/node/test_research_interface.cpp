@@ -5,6 +5,7 @@
 #include <dynamic_reconfigure/Reconfigure.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
+#include <std_srvs/Trigger.h>
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <visualization_msgs/InteractiveMarkerFeedback.h>
 #include <visualization_msgs/InteractiveMarkerInit.h>
@@ -425,6 +426,74 @@ TEST_F(ResearchInterfaceTest, PredictShowsThePathsOfTheBallsThatMoveUntilTheyRes
   }
 }
 
+/// Every message on ~preview, as rviz sees them.
+class PreviewWatcher
+{
+public:
+  explicit PreviewWatcher(ros::NodeHandle& nh)
+    : sub_(nh.subscribe<visualization_msgs::MarkerArray>("/table/preview", 10,
+                                                         [this](const visualization_msgs::MarkerArrayConstPtr& m) {
+                                                           std::lock_guard<std::mutex> lock(mutex_);
+                                                           last_ = *m;
+                                                           ++count_;
+                                                         }))
+  {
+  }
+  /// Waits for a message after the `seen`-th; true if it draws paths (more than its DELETEALL).
+  bool nextDrawsPaths(int seen, double timeout = 5)
+  {
+    for (int i = 0; i < timeout / 0.02 && count() <= seen; ++i)
+      ros::WallDuration(0.02).sleep();
+    std::lock_guard<std::mutex> lock(mutex_);
+    EXPECT_GT(count_, seen) << "no message on ~preview";
+    EXPECT_FALSE(last_.markers.empty());
+    return last_.markers.size() > 1;
+  }
+  int count()
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return count_;
+  }
+
+private:
+  std::mutex mutex_;
+  visualization_msgs::MarkerArray last_;
+  int count_ = 0;
+  ros::Subscriber sub_;
+};
+
+TEST_F(ResearchInterfaceTest, APreviewLeavesTheScreenWhenTheTableMovesOn)
+{
+  table_.atRest(5);
+  PreviewWatcher preview(nh_);
+  ros::Duration(0.5).sleep();  // the latched preview, if any
+  const cue_sim::Shot shot = TableClient::shot(0, 1.5, 0.3);
+  int seen = preview.count();
+  ASSERT_TRUE(table_.predict(shot).success);
+  EXPECT_TRUE(preview.nextDrawsPaths(seen)) << "a prediction draws its paths";
+  seen = preview.count();
+  ASSERT_TRUE(table_.strike(shot).success);
+  EXPECT_FALSE(preview.nextDrawsPaths(seen)) << "struck: the preview is cleared";
+  table_.atRest(30);
+
+  for (const std::string& edit : {"rack", "reset"})
+  {
+    seen = preview.count();
+    ASSERT_TRUE(table_.predict(shot).success);
+    EXPECT_TRUE(preview.nextDrawsPaths(seen));
+    seen = preview.count();
+    if (edit == "rack")
+      ASSERT_TRUE(table_.rack("eight").success);
+    else
+    {
+      std_srvs::Trigger reset;
+      ASSERT_TRUE(ros::service::call("/table/reset", reset) && reset.response.success);
+    }
+    EXPECT_FALSE(preview.nextDrawsPaths(seen)) << edit << ": the preview is cleared";
+    table_.atRest(5);
+  }
+}
+
 /// Sets doubles and strings of a node's dynamic_reconfigure; answers the configuration after.
 dynamic_reconfigure::Config reconfigure(const std::string& node, const std::map<std::string, double>& doubles,
                                         const std::map<std::string, std::string>& strings = {})
@@ -537,6 +606,16 @@ TEST_F(ResearchInterfaceTest, TheAimMarkerFiresTheShotItShows)
       ros::topic::waitForMessage<visualization_msgs::InteractiveMarkerInit>("/table/aim/update_full", ros::Duration(5));
   ASSERT_TRUE(full);
   ASSERT_EQ(full->markers.size(), 1u);
+  // Nothing rviz would complete with a text of the empty description, or draw as an empty text.
+  EXPECT_TRUE(full->markers[0].description.empty());
+  EXPECT_FALSE(full->markers[0].menu_entries.empty()) << "Strike and Predict, on a right-click";
+  for (const auto& control : full->markers[0].controls)
+  {
+    EXPECT_NE(control.interaction_mode, visualization_msgs::InteractiveMarkerControl::MENU) << control.name;
+    EXPECT_FALSE(control.markers.empty()) << control.name;
+    for (const auto& m : control.markers)
+      EXPECT_TRUE(m.type != visualization_msgs::Marker::TEXT_VIEW_FACING || !m.text.empty()) << control.name;
+  }
   EXPECT_NEAR(full->markers[0].pose.position.x, cue_ball.x + 0.5, 1e-12) << "the default aim: 2 m/s along +x";
   EXPECT_NEAR(full->markers[0].pose.position.y, cue_ball.y, 1e-12);
   ros::Publisher feedback = nh_.advertise<visualization_msgs::InteractiveMarkerFeedback>("/table/aim/feedback", 10);
@@ -571,8 +650,8 @@ TEST_F(ResearchInterfaceTest, TheAimMarkerFiresTheShotItShows)
       });
   const ros::Time clicked = ros::Time::now();
   f.event_type = visualization_msgs::InteractiveMarkerFeedback::MENU_SELECT;
-  f.control_name = "menu";
-  f.menu_entry_id = 1;  // "Strike"
+  f.control_name = "aim";  // right-clicked on the handle
+  f.menu_entry_id = 1;     // "Strike"
   feedback.publish(f);
   const auto fired = [&] {
     std::lock_guard<std::mutex> lock(shots_mutex);

@@ -139,6 +139,9 @@ public:
   /// Changes when the balls are placed anew (rack, reset, state edits) or the physics changes:
   /// what is drawn of the table may have to be drawn again.
   long layoutVersion() const { return layout_version_; }
+  /// Counts the strikes that reached the table: a shot drawn in advance (a preview) is stale once
+  /// this or layoutVersion() changes.
+  long strikeCount() const { return strike_count_; }
 
   Outcome pause(bool paused, Stamp now);
   /// Moves a paused table's physics `duration` [s] on at `now`.
@@ -216,6 +219,7 @@ private:
   bool paused_ = false;
   Stamp last_stamp_ = 0;
   long layout_version_ = 0;
+  long strike_count_ = 0;
   std::optional<game::GamePlay> game_;
   std::optional<game::Turn> pending_turn_, last_turn_;
   bool push_out_called_ = false;
