@@ -8,6 +8,6 @@ cue_sim_source_devel
 out="$(realpath -m "${1:-$CUE_SIM_ROOT/doc/rviz_break.png}")"
 delay="${2:-0.35}"
 cue_sim_rviz_screenshot 11391 "" "
-  rosservice call /table/strike '{ball_id: 0, speed: 8.0, phi: 0.0}' > /dev/null
+  rosservice call /table/strike '{ball_id: 0, speed: 8.0, phi: 0.002}' > /dev/null
   sleep $delay
 " "$out"

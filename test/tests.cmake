@@ -40,6 +40,7 @@ catkin_add_gtest(scene_tests
   test/scene/test_simulate_program.cpp
   test/scene/test_bundled_tables.cpp
   test/scene/test_model_registry.cpp
+  test/scene/test_ball_colours.cpp
 )
 target_link_libraries(scene_tests cue_sim_table_description gtest_main)
 target_compile_definitions(scene_tests PRIVATE

@@ -17,6 +17,7 @@ import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.patheffects import Normal, Stroke
 
+from cue_sim import _core
 from cue_sim.api import EVENT_KINDS, Engine, Shot, State, ball_colour, is_striped, simulate
 
 #: Points a path gets between the strike and rest (the engine's sample period is clamped to
@@ -127,9 +128,8 @@ def _draw_ball(ax, xy, ball: int, radius: float, final: bool) -> None:
     if striped:  # from above, a white cap in a coloured ring
         ax.add_patch(Circle(xy, 0.55 * radius, facecolor=ball_colour(0), lw=0, zorder=8))
     if ball > 0:
-        light = striped or ball == 1 or ball == 5
         ax.text(xy[0], xy[1], str(ball), ha="center", va="center", fontsize=5.5, zorder=9,
-                color="black" if light else "white")
+                color=_core.number_colour(ball))
 
 
 def _draw_events(ax, shot: Shot, exact: Dict[float, np.ndarray], index: Dict[int, int], radius: float) -> None:

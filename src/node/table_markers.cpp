@@ -169,9 +169,11 @@ visualization_msgs::MarkerArray tableMarkers(const physics::TableModel& table, c
     }
     Marker label = markerIn(frame, "labels", b.id, Marker::TEXT_VIEW_FACING);
     label.frame_locked = true;
-    label.pose.position.z = 1.9 * R;
-    label.scale.z = 1.3 * R;
-    label.color = rgba(1.0f, 1.0f, 1.0f);
+    // On the ball's top, large, in the colour that reads on it.
+    label.pose.position.z = 1.05 * R;
+    label.scale.z = 1.5 * R;
+    const Rgb ink = numberColour(b.id);
+    label.color = rgba(ink.r, ink.g, ink.b);
     label.text = std::to_string(b.id);
     array.markers.push_back(label);
   }

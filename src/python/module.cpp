@@ -274,6 +274,10 @@ PYBIND11_MODULE(_core, m)
     return std::make_tuple(c.r, c.g, c.b);
   });
   m.def("is_striped", &isStriped);
+  m.def("number_colour", [](int id) {
+    const Rgb c = numberColour(id);
+    return std::make_tuple(c.r, c.g, c.b);
+  });
   py::class_<StateArrays>(m, "StateArrays")
       .def(py::init<>())
       .def_readwrite("ids", &StateArrays::ids)

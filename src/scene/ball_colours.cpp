@@ -27,4 +27,13 @@ bool isStriped(int id)
   return id >= 9 && id <= 15;
 }
 
+Rgb numberColour(int id)
+{
+  // Seen from above, a stripe's number sits on its white cap.
+  const Rgb under = isStriped(id) ? ballColour(0) : ballColour(id);
+  // Relative luminance (ITU-R BT.601 weights); above one half, dark text reads better.
+  const float luminance = 0.299f * under.r + 0.587f * under.g + 0.114f * under.b;
+  return luminance > 0.5f ? Rgb{0.0f, 0.0f, 0.0f} : Rgb{1.0f, 1.0f, 1.0f};
+}
+
 }  // namespace cue_sim

@@ -14,5 +14,8 @@ struct Rgb
 Rgb ballColour(int id);
 /// Balls 9-15: a coloured band on a white ball.
 bool isStriped(int id);
+/// The colour a ball's number is written in to be read on it: black on light balls (the cue ball,
+/// yellow, orange, and the white caps of the stripes), white on dark ones.
+Rgb numberColour(int id);
 
 }  // namespace cue_sim
