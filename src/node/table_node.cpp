@@ -178,6 +178,7 @@ void TableNode::tick()
 {
   std::vector<session::StampedEvent> events;
   std::vector<physics::Ball<double>> balls;
+  std::vector<Eigen::Quaterniond> orientations;
   bool at_rest = false;
   long layout = 0;
   ros::Time stamp;
@@ -191,6 +192,7 @@ void TableNode::tick()
     session::LiveTable& table = *shared_.live;
     table.advanceTo(toStamp(stamp), &events);
     balls = table.balls();
+    orientations = table.orientations();
     at_rest = table.atRest();
     layout = table.layoutVersion();
     if (layout != preview_layout_ || table.strikeCount() != preview_strikes_)
@@ -209,9 +211,10 @@ void TableNode::tick()
     event_publisher_.publish(toEventMsg(e.event, table, toRosTime(e.stamp), e.event.time));
   std::vector<geometry_msgs::TransformStamped> transforms;
   transforms.reserve(balls.size());
-  for (const auto& b : balls)
-    transforms.push_back(makeTransform(parameters_.table_frame, parameters_.ball_frame_prefix + std::to_string(b.id),
-                                       b.r, Eigen::Quaterniond::Identity(), stamp));
+  for (std::size_t i = 0; i < balls.size(); ++i)
+    transforms.push_back(makeTransform(parameters_.table_frame,
+                                       parameters_.ball_frame_prefix + std::to_string(balls[i].id), balls[i].r,
+                                       orientations[i], stamp));
   tf_broadcaster_.sendTransform(transforms);
   state_publisher_.publish(toTableStateMsg(balls, table, stamp, parameters_.table_frame));
   // The aim marker waits at the cue ball once everything rests.

@@ -82,7 +82,7 @@ void LiveTable::advanceTo(Stamp now, std::vector<StampedEvent>* events)
     std::vector<physics::Event<double>> happened;
     try
     {
-      live_.advance(time, &happened);
+      advanceTurning(time, happened);
     }
     catch (const physics::EventLimitError&)
     {
@@ -100,8 +100,27 @@ void LiveTable::advanceTo(Stamp now, std::vector<StampedEvent>* events)
   if (!live_.atRest() || !balls_at_rest_)
   {
     balls_ = live_.snapshot();
+    orientations_.keepOnly(live_.state().balls);  // a ball placed or racked anew starts unturned
+    orientations_now_ = orientations_.at(live_.state().balls, live_.time(), engine_->params());
     balls_at_rest_ = live_.atRest();
   }
+}
+
+void LiveTable::advanceTurning(double time, std::vector<physics::Event<double>>& happened)
+{
+  // Check by check, so that each ball changes at most once a step and is turned along the
+  // motion it had until then. The same calls to advance as one would make, in more steps: the
+  // same events and balls, bit for bit.
+  for (;;)
+  {
+    const double next = live_.nextCheck();
+    if (!(next <= time))
+      break;
+    const std::vector<physics::Ball<double>> before = live_.state().balls;
+    live_.advance(next, &happened);
+    orientations_.turn(before, live_.state().balls, engine_->params());
+  }
+  live_.advance(time, &happened);
 }
 
 void LiveTable::startFrom(physics::TableState<double> state, Stamp now)
@@ -233,6 +252,8 @@ StrikeOutcome LiveTable::strike(const Shot& shot, Stamp now)
   cue_ = cue;
   const physics::Ball<double> before = live_.snapshot()[live_.state().indexOf(shot.ball_id)];
   outcome.cue = physics::cueStickFor(before, outcome.executed.strike, engine_->params(), kCueDrawGap);
+  // A ball struck while it moves: turned on to now along the motion it leaves.
+  orientations_.turnTo(live_.state().balls[live_.state().indexOf(shot.ball_id)], live_.time(), engine_->params());
   live_.strike(shot.ball_id, outcome.executed.strike);
   ++strike_count_;
   balls_at_rest_ = false;

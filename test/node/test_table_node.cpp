@@ -11,6 +11,7 @@
 #include <tf2_ros/transform_listener.h>
 #include <visualization_msgs/MarkerArray.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -116,6 +117,32 @@ TEST_F(TableNodeTest, StrikeMovesTheCueBallAlongItsHeadingInTf)
   EXPECT_NEAR(std::atan2(dy, dx), phi, 1e-9);
   // The world frame holds the table.
   EXPECT_TRUE(buffer.canTransform("world", "ball_0", ros::Time(0), ros::Duration(1)));
+}
+
+TEST_F(TableNodeTest, ARollingBallTurnsInTfByDistanceOverR)
+{
+  ASSERT_TRUE(rack("empty").success);
+  tf2_ros::Buffer buffer;
+  tf2_ros::TransformListener listener(buffer);
+  table_.atRest(5);
+  ros::Duration(0.3).sleep();
+  const auto before = buffer.lookupTransform("table", "ball_0", ros::Time(0), ros::Duration(5)).transform;
+  // A level cue 2R/5 above the centre: natural roll from the strike.
+  const double phi = 0.6;
+  const auto response = table_.strike(TableClient::shot(0, 0.25, phi, 0, 0, 0.4));
+  ASSERT_TRUE(response.success) << response.message;
+  table_.atRest(response.time_to_rest + 10);
+  ros::Duration(0.3).sleep();
+  const auto after = buffer.lookupTransform("table", "ball_0", ros::Time(0), ros::Duration(5)).transform;
+  const auto quaternion = [](const geometry_msgs::Quaternion& q) { return Eigen::Quaterniond(q.w, q.x, q.y, q.z); };
+  const Eigen::AngleAxisd turned(quaternion(after.rotation) * quaternion(before.rotation).inverse());
+  const double distance =
+      std::hypot(after.translation.x - before.translation.x, after.translation.y - before.translation.y);
+  ASSERT_GT(distance, 0.1);
+  const Eigen::Vector3d across(-std::sin(phi), std::cos(phi), 0);  // z x the heading
+  EXPECT_NEAR(std::abs(turned.axis().dot(across)), 1.0, 1e-9);
+  EXPECT_NEAR(std::remainder(turned.angle() * turned.axis().dot(across) - distance / kRadius, 2 * M_PI), 0.0, 1e-9)
+      << "turned " << turned.angle() << " rad over " << distance << " m";
 }
 
 TEST_F(TableNodeTest, EveryBallInOneTfMessageWithStrictlyIncreasingStamps)

@@ -64,6 +64,9 @@ public:
 
   /// Every ball at time().
   std::vector<Ball<S>> snapshot() const { return engine_->snapshot(state_); }
+  /// When the search next has something to do (+inf if never): advancing to just before it
+  /// changes no ball; advancing to it may change some (each once, at that time).
+  S nextCheck() const { return next_; }
 
   // Edits, each at time(). What an edit refuses it leaves unchanged (std::invalid_argument).
   /// Empty if the strike may be applied to the ball with this id, else why not.

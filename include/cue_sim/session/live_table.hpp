@@ -19,6 +19,7 @@
 #include "cue_sim/physics/execution_noise.hpp"
 #include "cue_sim/physics/simulation.hpp"
 #include "cue_sim/session/ball_input.hpp"
+#include "cue_sim/session/ball_orientations.hpp"
 #include "cue_sim/session/physics_clock.hpp"
 #include "cue_sim/session/shot_prediction.hpp"
 
@@ -134,6 +135,9 @@ public:
   void advanceTo(Stamp now, std::vector<StampedEvent>* events = nullptr);
   /// Every ball as of the last advanceTo.
   const std::vector<physics::Ball<double>>& balls() const { return balls_; }
+  /// How each ball of balls() is turned (its own frame to the table frame), carried along its
+  /// exact motion from when it was placed (physics::rotationAlong).
+  const std::vector<Eigen::Quaterniond>& orientations() const { return orientations_now_; }
   bool atRest() const { return live_.atRest(); }
   bool paused() const { return paused_; }
   /// Changes when the balls are placed anew (rack, reset, state edits) or the physics changes:
@@ -206,6 +210,8 @@ private:
   void startFrom(physics::TableState<double> state, Stamp now);
   void restartAtRest(Stamp now);
   void applyPendingPhysics();
+  /// live_.advance(time, &happened), turning the balls on the way.
+  void advanceTurning(double time, std::vector<physics::Event<double>>& happened);
 
   std::shared_ptr<const physics::Engine<double>> engine_;
   std::shared_ptr<const physics::Engine<double>> pending_engine_;  ///< waiting for the balls to rest
@@ -215,7 +221,9 @@ private:
   physics::NoisyCue cue_;
   physics::TableState<double> last_rack_;
   std::vector<physics::Ball<double>> balls_;
-  bool balls_at_rest_ = false;  ///< balls_ are at rest and nothing has moved since
+  BallOrientations orientations_;
+  std::vector<Eigen::Quaterniond> orientations_now_;  ///< of balls_
+  bool balls_at_rest_ = false;                        ///< balls_ are at rest and nothing has moved since
   bool paused_ = false;
   Stamp last_stamp_ = 0;
   long layout_version_ = 0;
