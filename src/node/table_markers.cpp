@@ -12,6 +12,9 @@ namespace
 {
 using visualization_msgs::Marker;
 
+/// The marker id of a ball's second number (at its lower pole) is this plus the ball's id.
+constexpr int kSecondLabel = 100;
+
 /// A circle as a polygon, clipped to the box [low, high] (Sutherland-Hodgman; both convex).
 std::vector<Eigen::Vector2d> clippedCircle(const Eigen::Vector2d& centre, double radius, const Eigen::Vector2d& low,
                                            const Eigen::Vector2d& high)
@@ -167,15 +170,20 @@ visualization_msgs::MarkerArray tableMarkers(const physics::TableModel& table, c
       band.color = poolColour(b.id);
       array.markers.push_back(band);
     }
-    Marker label = markerIn(frame, "labels", b.id, Marker::TEXT_VIEW_FACING);
-    label.frame_locked = true;
-    // On the ball's top, large, in the colour that reads on it.
-    label.pose.position.z = 1.05 * R;
-    label.scale.z = 1.5 * R;
-    const Rgb ink = numberColour(b.id);
-    label.color = rgba(ink.r, ink.g, ink.b);
-    label.text = std::to_string(b.id);
-    array.markers.push_back(label);
+    // The number twice, at the poles of the ball's own frame as on a real ball: it turns with the
+    // ball (tf carries the orientation), and one of the two is always on the upper half or at the
+    // sides. Large, in the colour that reads on the ball.
+    for (const int pole : {1, -1})
+    {
+      Marker label = markerIn(frame, "labels", pole > 0 ? b.id : kSecondLabel + b.id, Marker::TEXT_VIEW_FACING);
+      label.frame_locked = true;
+      label.pose.position.z = pole * 1.05 * R;
+      label.scale.z = 1.5 * R;
+      const Rgb ink = numberColour(b.id);
+      label.color = rgba(ink.r, ink.g, ink.b);
+      label.text = std::to_string(b.id);
+      array.markers.push_back(label);
+    }
   }
   return array;
 }

@@ -93,7 +93,7 @@ TEST_F(TableNodeTest, MarkersArriveLatchedWithEveryLayer)
   EXPECT_EQ(per_ns["jaws"], 12);
   EXPECT_EQ(per_ns["balls"], 16);
   EXPECT_EQ(per_ns["stripes"], 7);
-  EXPECT_EQ(per_ns["labels"], 16);
+  EXPECT_EQ(per_ns["labels"], 32);  // each number twice, at the ball's poles
 }
 
 TEST_F(TableNodeTest, StrikeMovesTheCueBallAlongItsHeadingInTf)
