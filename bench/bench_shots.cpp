@@ -6,10 +6,43 @@
 #include "cue_sim/evaluation/ball_impact_precision.hpp"
 #include "cue_sim/evaluation/cushion_precision.hpp"
 #include "cue_sim/physics/batch.hpp"
+#include "cue_sim/session/live_table.hpp"
 
 namespace
 {
 using namespace cue_sim::bench;
+
+/// The node's live table through an 8-ball break, advanced in 100 Hz ticks from the strike to
+/// rest, with the balls' orientations carried along (argument 1) or not (0): the cost of turning
+/// the balls for tf, per break.
+void LiveTableBreakTicks(benchmark::State& bench)
+{
+  const BenchScene scene = benchScene("eight_ball_break");
+  cue_sim::session::LiveTableOptions options;
+  options.orientations = bench.range(0) != 0;
+  constexpr cue_sim::session::Stamp kTick = 10000000;  // 10 ms
+  cue_sim::session::Shot shot;
+  shot.strike.speed = 8.0;
+  shot.strike.phi = 0.002;
+  long ticks = 0;
+  for (auto _ : bench)
+  {
+    bench.PauseTiming();
+    cue_sim::session::LiveTable table(scene.engine, options, "eight", 0);
+    bench.ResumeTiming();
+    cue_sim::session::Stamp now = 0;
+    table.strike(shot, now);
+    while (!table.atRest())
+    {
+      now += kTick;
+      table.advanceTo(now);
+      ++ticks;
+    }
+    benchmark::DoNotOptimize(table.orientations().data());
+  }
+  bench.counters["ticks_per_break"] = benchmark::Counter(static_cast<double>(ticks) / bench.iterations());
+}
+BENCHMARK(LiveTableBreakTicks)->ArgName("orientations")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 /// 8-ball breaks from one rack, each with a slightly different cue (fixed seed), run by
 /// simulateBatch on one thread (argument 1) or on every core (argument 0): breaks per second of

@@ -1,5 +1,6 @@
 #include "cue_sim/session/ball_orientations.hpp"
 
+#include "cue_sim/physics/motion.hpp"
 #include "cue_sim/physics/orientation.hpp"
 
 namespace cue_sim
@@ -14,51 +15,47 @@ bool sameState(const physics::Ball<double>& a, const physics::Ball<double>& b)
 }
 }  // namespace
 
-void BallOrientations::turn(const std::vector<physics::Ball<double>>& before,
-                            const std::vector<physics::Ball<double>>& after, const physics::PhysicsParams<double>& p)
+Eigen::Quaterniond BallOrientations::turnedTo(const Track& track, double t, const physics::PhysicsParams<double>& p)
 {
-  std::map<int, const physics::Ball<double>*> old;
-  for (const auto& b : before)
-    old[b.id] = &b;
-  for (const auto& b : after)
+  if (!(t > track.t))
+    return track.q;  // no time passed (or a clock set back at rest: nothing moved)
+  return (physics::rotationAlong(physics::evolve(track.state, track.t, p), t, p) * track.q).normalized();
+}
+
+void BallOrientations::sync(const std::vector<physics::Ball<double>>& balls, const physics::PhysicsParams<double>& p)
+{
+  std::map<int, Track> synced;
+  for (const auto& b : balls)
   {
-    const auto was = old.find(b.id);
-    if (was == old.end() || sameState(*was->second, b))
-      continue;
-    Eigen::Quaterniond& q = at_reference_.try_emplace(b.id, Eigen::Quaterniond::Identity()).first->second;
-    q = (physics::rotationAlong(*was->second, b.time, p) * q).normalized();
+    const auto was = tracks_.find(b.id);
+    Track track;
+    track.state = b;
+    track.t = b.time;
+    if (was != tracks_.end())
+    {
+      if (sameState(was->second.state, b))
+        track = was->second;
+      else
+        track.q = turnedTo(was->second, b.time, p);  // its old motion lasted until its new state
+    }
+    synced.emplace(b.id, track);
   }
+  tracks_ = std::move(synced);
 }
 
-void BallOrientations::turnTo(const physics::Ball<double>& ball, double t, const physics::PhysicsParams<double>& p)
-{
-  Eigen::Quaterniond& q = at_reference_.try_emplace(ball.id, Eigen::Quaterniond::Identity()).first->second;
-  q = (physics::rotationAlong(ball, t, p) * q).normalized();
-}
-
-std::vector<Eigen::Quaterniond> BallOrientations::at(const std::vector<physics::Ball<double>>& balls, double t,
-                                                     const physics::PhysicsParams<double>& p) const
+std::vector<Eigen::Quaterniond> BallOrientations::advance(const std::vector<physics::Ball<double>>& balls, double t,
+                                                          const physics::PhysicsParams<double>& p)
 {
   std::vector<Eigen::Quaterniond> out;
   out.reserve(balls.size());
   for (const auto& b : balls)
   {
-    const auto q = at_reference_.find(b.id);
-    const Eigen::Quaterniond base = q == at_reference_.end() ? Eigen::Quaterniond::Identity() : q->second;
-    out.push_back((physics::rotationAlong(b, t, p) * base).normalized());
+    Track& track = tracks_[b.id];
+    track.q = turnedTo(track, t, p);
+    track.t = std::max(track.t, t);
+    out.push_back(track.q);
   }
   return out;
-}
-
-void BallOrientations::keepOnly(const std::vector<physics::Ball<double>>& balls)
-{
-  std::map<int, Eigen::Quaterniond> kept;
-  for (const auto& b : balls)
-  {
-    const auto q = at_reference_.find(b.id);
-    kept[b.id] = q == at_reference_.end() ? Eigen::Quaterniond::Identity() : q->second;
-  }
-  at_reference_ = std::move(kept);
 }
 
 }  // namespace session

@@ -82,7 +82,10 @@ void LiveTable::advanceTo(Stamp now, std::vector<StampedEvent>* events)
     std::vector<physics::Event<double>> happened;
     try
     {
-      advanceTurning(time, happened);
+      if (options_.orientations)
+        advanceTurning(time, happened);
+      else
+        live_.advance(time, &happened);
     }
     catch (const physics::EventLimitError&)
     {
@@ -100,8 +103,13 @@ void LiveTable::advanceTo(Stamp now, std::vector<StampedEvent>* events)
   if (!live_.atRest() || !balls_at_rest_)
   {
     balls_ = live_.snapshot();
-    orientations_.keepOnly(live_.state().balls);  // a ball placed or racked anew starts unturned
-    orientations_now_ = orientations_.at(live_.state().balls, live_.time(), engine_->params());
+    if (options_.orientations)
+    {
+      orientations_.sync(live_.state().balls, engine_->params());  // after edits too
+      orientations_now_ = orientations_.advance(live_.state().balls, live_.time(), engine_->params());
+    }
+    else
+      orientations_now_.assign(balls_.size(), Eigen::Quaterniond::Identity());
     balls_at_rest_ = live_.atRest();
   }
 }
@@ -116,9 +124,8 @@ void LiveTable::advanceTurning(double time, std::vector<physics::Event<double>>&
     const double next = live_.nextCheck();
     if (!(next <= time))
       break;
-    const std::vector<physics::Ball<double>> before = live_.state().balls;
     live_.advance(next, &happened);
-    orientations_.turn(before, live_.state().balls, engine_->params());
+    orientations_.sync(live_.state().balls, engine_->params());
   }
   live_.advance(time, &happened);
 }
@@ -252,8 +259,7 @@ StrikeOutcome LiveTable::strike(const Shot& shot, Stamp now)
   cue_ = cue;
   const physics::Ball<double> before = live_.snapshot()[live_.state().indexOf(shot.ball_id)];
   outcome.cue = physics::cueStickFor(before, outcome.executed.strike, engine_->params(), kCueDrawGap);
-  // A ball struck while it moves: turned on to now along the motion it leaves.
-  orientations_.turnTo(live_.state().balls[live_.state().indexOf(shot.ball_id)], live_.time(), engine_->params());
+  orientations_.sync(live_.state().balls, engine_->params());  // before the struck ball's state changes
   live_.strike(shot.ball_id, outcome.executed.strike);
   ++strike_count_;
   balls_at_rest_ = false;

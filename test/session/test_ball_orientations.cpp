@@ -63,7 +63,11 @@ TEST(BallOrientations, ABreakTurnsTheBallsTheSameWhateverTheTicks)
   int turned = 0;
   for (std::size_t i = 0; i < seen[0].size(); ++i)
   {
-    EXPECT_LT(angleBetween(seen[0][i], seen[1][i]), 1e-9) << "ball index " << i;
+    // Both are the Magnus integration's answers, on different substeps: they differ by its own
+    // error, about 1e-9 rad a motion state (test_orientation.cpp), 4e-9 rad at most over this
+    // break's hundreds of radians. A kink integrated across (the z-spin running out mid-state)
+    // made it 2e-4.
+    EXPECT_LT(angleBetween(seen[0][i], seen[1][i]), 1e-8) << "ball index " << i;
     turned += angleBetween(seen[0][i], Eigen::Quaterniond::Identity()) > 0.1;
   }
   EXPECT_GT(turned, 10) << "the balls that moved turned";

@@ -7,9 +7,11 @@
 // form (evolve); the rotation over an interval is integrated with the fourth-order Magnus method
 // at the two Gauss-Legendre points (Iserles and Norsett, Phil. Trans. R. Soc. A 357, 1999;
 // Blanes, Casas, Oteo and Ros, Physics Reports 470, 2009), on substeps over each of which the
-// ball turns by at most OrientationLimits::max_substep_angle. Where w keeps its direction
-// (rolling or sliding straight without side spin) the result is exact to rounding; otherwise the
-// error is O(angle^5) a substep (test_orientation.cpp measures it).
+// ball turns by at most OrientationLimits::max_substep_angle, split where the z-spin runs out (a
+// kink in w). Where w keeps its direction (rolling or sliding straight without side spin) the
+// result is exact to rounding; otherwise the error is O(angle^5) a substep: about 1e-9 rad over a
+// motion state with side spin, a few 1e-9 over a whole break (test_orientation.cpp and
+// test/session/test_ball_orientations.cpp measure it).
 #pragma once
 
 #include <Eigen/Geometry>
@@ -23,8 +25,7 @@ namespace physics
 {
 struct OrientationLimits
 {
-  /// [rad] the most a ball turns over one substep: the error a substep is about 1e-4 of its cube
-  /// times its fifth power in relative terms (well under 1e-9 rad for a whole shot).
+  /// [rad] the most a ball turns over one substep (the error a substep is O(its fifth power)).
   static constexpr double max_substep_angle = 0.02;
   /// Substeps an interval gets at most, so that a request's cost stays bounded whatever the spin
   /// (at BallLimits::max_spin for a long stretch the bound on the angle a substep is then exceeded).

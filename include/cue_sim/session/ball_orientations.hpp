@@ -1,6 +1,7 @@
-// Each ball's orientation on the live table, carried along its exact motion event by event
-// (physics::rotationAlong between a ball's changes of state), for tf: the node's balls turn as
-// they roll and spin.
+// Each ball's orientation on the live table, carried along its exact motion (physics::
+// rotationAlong between a ball's changes of state), for tf: the node's balls turn as they roll
+// and spin. Each ball's orientation is kept at the last time it was asked for, so that a tick
+// costs the turning since the last tick, not since the ball's last event.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -17,21 +18,27 @@ namespace session
 class BallOrientations
 {
 public:
-  /// After the balls went from `before` to `after` (the same balls, by id) with every changed
-  /// ball changing once, at its new state's time: turns each changed ball along its old motion.
-  void turn(const std::vector<physics::Ball<double>>& before, const std::vector<physics::Ball<double>>& after,
-            const physics::PhysicsParams<double>& p);
-  /// Before `ball`'s state changes at time t (a strike while it moves): turns it on to t.
-  void turnTo(const physics::Ball<double>& ball, double t, const physics::PhysicsParams<double>& p);
-  /// Each ball of `balls` (states at their own times) as it is at time t.
-  std::vector<Eigen::Quaterniond> at(const std::vector<physics::Ball<double>>& balls, double t,
-                                     const physics::PhysicsParams<double>& p) const;
-  /// A ball new on the table starts unturned; one that left is forgotten.
-  void keepOnly(const std::vector<physics::Ball<double>>& balls);
+  /// Takes the balls' states as they are now. Call it after every change of state (an event, a
+  /// strike, an edit), before the next: a ball whose state changed kept its old motion until the
+  /// time its new state refers to, and is turned on to then. A ball new on the table starts
+  /// unturned; one that left is forgotten.
+  void sync(const std::vector<physics::Ball<double>>& balls, const physics::PhysicsParams<double>& p);
+  /// Each ball of `balls` (synced) as it is at time t, in order.
+  std::vector<Eigen::Quaterniond> advance(const std::vector<physics::Ball<double>>& balls, double t,
+                                          const physics::PhysicsParams<double>& p);
 
 private:
-  /// Each ball's orientation at the time its state refers to, by id.
-  std::map<int, Eigen::Quaterniond> at_reference_;
+  /// A ball's orientation q at time t, while it moves as `state` says (t >= state.time, or the
+  /// ball does not move).
+  struct Track
+  {
+    physics::Ball<double> state;
+    double t = 0;
+    Eigen::Quaterniond q = Eigen::Quaterniond::Identity();
+  };
+  static Eigen::Quaterniond turnedTo(const Track& track, double t, const physics::PhysicsParams<double>& p);
+
+  std::map<int, Track> tracks_;  ///< by ball id
 };
 
 }  // namespace session

@@ -37,6 +37,9 @@ struct LiveTableOptions
   bool noise_enabled = false;     ///< noise on strikes
   std::uint64_t noise_seed = 0;
   PredictionLimits limits;
+  /// Carry each ball's orientation along its motion (orientations()); off, they stay identity
+  /// and the table advances in one call a tick (bench: LiveTableBreakTicks measures the cost).
+  bool orientations = true;
 
   /// Empty if every option is in its range, else which one is not and why.
   std::string whyInvalid() const;

@@ -19,12 +19,10 @@ Eigen::Quaterniond rotationBy(const Eigen::Vector3d& theta)
     return Eigen::Quaterniond::Identity();
   return Eigen::Quaterniond(Eigen::AngleAxisd(angle, theta / angle));
 }
-}  // namespace
 
-Eigen::Quaterniond rotationAlong(const Ball<double>& ball, double t, const PhysicsParams<double>& p)
+/// rotationAlong over an interval on which w(t) is smooth (linear in time).
+Eigen::Quaterniond smoothRotation(const Ball<double>& ball, double t, const PhysicsParams<double>& p)
 {
-  if (!ball.moving() || !(t > ball.time))
-    return Eigen::Quaterniond::Identity();
   const double duration = t - ball.time;
   // |w| is convex along a motion state (linear in time, a spin component clamped at zero), so
   // its largest value is at an end.
@@ -44,6 +42,19 @@ Eigen::Quaterniond rotationAlong(const Ball<double>& ball, double t, const Physi
     q = rotationBy(theta) * q;
   }
   return q.normalized();
+}
+}  // namespace
+
+Eigen::Quaterniond rotationAlong(const Ball<double>& ball, double t, const PhysicsParams<double>& p)
+{
+  if (!ball.moving() || !(t > ball.time))
+    return Eigen::Quaterniond::Identity();
+  // The z-spin runs out at a constant rate in every state, without an event when the ball still
+  // moves: w(t) has a kink there, which a substep across it would integrate to second order only.
+  const double spin_out = ball.time + std::abs(ball.w.z()) / p.spinDecel();
+  if (ball.w.z() != 0 && spin_out < t)
+    return (smoothRotation(evolve(ball, spin_out, p), t, p) * smoothRotation(ball, spin_out, p)).normalized();
+  return smoothRotation(ball, t, p);
 }
 
 }  // namespace physics
