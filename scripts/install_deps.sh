@@ -15,6 +15,10 @@ PACKAGES=(
   libinteractive-markers-dev
   # the Python module (pybind11, NumPy) and its tests
   pybind11-dev python3-dev python3-numpy python3-pytest python3-dask python3-distributed python3-matplotlib
+  # the camera: rendering with OpenCV, images and calibrations through image_transport and
+  # camera_info_manager; the detector example reads images with cv_bridge
+  libopencv-dev libimage-transport-dev libcamera-info-manager-dev libsensor-msgs-dev ros-sensor-msgs
+  libcv-bridge-dev python3-opencv python3-cv-bridge python3-sensor-msgs python3-tf2-ros image-transport-tools
   # rviz, and rviz without a screen (screenshots)
   rviz xvfb xauth imagemagick
   # plots of the work-precision report

@@ -54,6 +54,9 @@ catkin_add_gtest(session_tests test/session/test_live_table.cpp test/session/tes
   test/session/test_ball_orientations.cpp)
 target_link_libraries(session_tests cue_sim_session cue_sim_table_description gtest_main)
 
+catkin_add_gtest(camera_tests test/camera/test_table_camera.cpp)
+target_link_libraries(camera_tests cue_sim_camera gtest_main)
+
 add_rostest_gtest(node_tests test/node/table_node.test test/node/test_table_node.cpp test/node/rostest_main.cpp)
 target_include_directories(node_tests PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(node_tests ${catkin_LIBRARIES})

@@ -87,7 +87,7 @@ public:
       if (name.compare(0, prefix.size(), prefix) != 0)
         continue;
       const std::string key = name.substr(prefix.size());
-      if (known_.count(key))
+      if (known_.count(key) || key.compare(0, kImageTransportSpace.size(), kImageTransportSpace) == 0)
         continue;
       std::string list;
       for (const auto& k : known_)
@@ -97,9 +97,43 @@ public:
   }
 
 private:
+  /// image_transport's plugins keep their own parameters under the image topic.
+  const std::string kImageTransportSpace = "camera/image_raw/";
   ros::NodeHandle& node_;
   std::set<std::string> known_;
 };
+
+void readCamera(ParameterReader& reader, CameraParameters& camera)
+{
+  reader.read("camera/enabled", camera.enabled);
+  reader.read("camera/frame", camera.frame);
+  reader.read("camera/rate", camera.rate);
+  reader.read("camera/exposure", camera.exposure);
+  reader.read("camera/noise", camera.noise);
+  reader.read("camera/info_url", camera.info_url);
+  reader.read("camera/width", camera.width);
+  reader.read("camera/height", camera.height);
+  reader.read("camera/publish_frame", camera.publish_frame);
+  const char* axes[6] = {"x", "y", "z", "roll", "pitch", "yaw"};
+  for (int i = 0; i < 6; ++i)
+  {
+    reader.read(std::string("camera/") + axes[i], camera.pose[i]);
+    if (!std::isfinite(camera.pose[i]) || std::abs(camera.pose[i]) > 100)
+      refuse(std::string("camera/") + axes[i], camera.pose[i], "[-100, 100]");
+  }
+  if (!(camera.rate > 0 && camera.rate <= 120))
+    refuse("camera/rate", camera.rate, "(0, 120] Hz");
+  if (!(camera.exposure >= 0 && camera.exposure <= 0.1))
+    refuse("camera/exposure", camera.exposure, "[0, 0.1] s");
+  if (!(camera.noise >= 0 && camera.noise <= 50))
+    refuse("camera/noise", camera.noise, "[0, 50] levels");
+  for (const auto& [name, value] :
+       {std::pair<const char*, int>{"camera/width", camera.width}, {"camera/height", camera.height}})
+    if (value != 0 && (value < 16 || value > 8192))
+      refuse(name, value, "{0} or [16, 8192] px");
+  if (camera.frame.empty() || camera.frame.front() == '/')
+    throw std::runtime_error("~camera/frame must be non-empty and without a leading '/', got '" + camera.frame + "'");
+}
 
 void readNoise(ParameterReader& reader, session::LiveTableOptions& options)
 {
@@ -159,6 +193,7 @@ NodeParameters readNodeParameters(ros::NodeHandle& node, ros::NodeHandle& privat
   options.limits.max_samples = reader.count("max_samples", options.limits.max_samples);
   options.limits.max_reply_bytes = reader.count("max_reply_mb", options.limits.max_reply_bytes >> 20) << 20;
   readNoise(reader, options);
+  readCamera(reader, p.camera);
 
   if (!(p.publish_rate > 0 && p.publish_rate <= 10000))
     refuse("publish_rate", p.publish_rate, "(0, 10000] Hz");

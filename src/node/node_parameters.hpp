@@ -4,6 +4,8 @@
 
 #include <ros/ros.h>
 
+#include <array>
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -14,6 +16,23 @@
 
 namespace cue_sim
 {
+/// The simulated camera (node/camera_publisher.hpp), ~camera/...
+struct CameraParameters
+{
+  bool enabled = true;
+  std::string frame = "camera_optical_frame";  ///< its optical frame, looked up in tf from the table frame
+  double rate = 30.0;                          ///< [Hz] of stamp time, in (0, 120]
+  double exposure = 0.004;                     ///< [s] shutter open, in [0, 0.1]
+  double noise = 0.0;                          ///< [8-bit levels] Gaussian sensor noise, in [0, 50]
+  std::string info_url = "package://cue_sim/config/camera/overhead_1920x1200.yaml";
+  int width = 0, height = 0;  ///< [px] the calibrated sensor read out scaled to this size; 0: as calibrated
+  /// Broadcast `frame` in /tf_static at `pose`; false: something else (a robot's tf) places it.
+  bool publish_frame = true;
+  /// The optical frame in the table frame: x, y, z [m], roll, pitch, yaw [rad] (tf's fixed-axis
+  /// convention: R = Rz(yaw) Ry(pitch) Rx(roll)). Default: 2.4 m over the centre, looking down.
+  std::array<double, 6> pose{0, 0, 2.4, M_PI, 0, 0};
+};
+
 struct NodeParameters
 {
   double publish_rate = 100.0;  ///< [Hz] tf, ~state, /clock
@@ -29,6 +48,7 @@ struct NodeParameters
   physics::ModelChoice models;
   std::shared_ptr<const physics::TableModel> table_model;
   std::string urdf_xml;  ///< the table description, for its static frames
+  CameraParameters camera;
 };
 
 /// Longest accepted ~tf_timeout [s]: a lookup holds one service thread at most this long.

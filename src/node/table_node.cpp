@@ -76,6 +76,8 @@ TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
   predictions_ = std::make_unique<PredictionServices>(private_node, shared_, parameters_);
   reconfigure_ = std::make_unique<PhysicsReconfigure>(private_node, shared_);
   startAimMarker(private_node);
+  if (p.camera.enabled)
+    camera_ = std::make_unique<CameraPublisher>(private_node, p.camera, p.table_frame);
   ROS_INFO("cue_sim: table '%s' (%zu cushions, %zu pockets), rack '%s', models %s/%s, tf at %.0f Hz",
            p.table_model->name().c_str(), p.table_model->segments().size(), p.table_model->pockets().size(),
            p.rack.c_str(), p.models.ball_ball.c_str(), p.models.cushion.c_str(), p.publish_rate);
@@ -119,6 +121,15 @@ void TableNode::publishStaticFrames(const std::string& urdf_xml)
                                  Eigen::Quaterniond::Identity(), now));
   for (const auto& link : fixedLinkTransforms(urdf_xml))
     frames.push_back(makeTransform(link.parent, link.child, link.translation, link.rotation, now));
+  const CameraParameters& camera = parameters_.camera;
+  if (camera.enabled && camera.publish_frame)
+  {
+    const auto& x = camera.pose;
+    const Eigen::Quaterniond q = Eigen::AngleAxisd(x[5], Eigen::Vector3d::UnitZ()) *
+                                 Eigen::AngleAxisd(x[4], Eigen::Vector3d::UnitY()) *
+                                 Eigen::AngleAxisd(x[3], Eigen::Vector3d::UnitX());
+    frames.push_back(makeTransform(parameters_.table_frame, camera.frame, Eigen::Vector3d(x[0], x[1], x[2]), q, now));
+  }
   static_broadcaster_.sendTransform(frames);
 }
 
@@ -204,6 +215,8 @@ void TableNode::tick()
     if (layout != markers_drawn_ || ros::WallTime::now() - markers_sent_ > kMarkerRefresh)
       publishMarkers(table);
     games_->publishIfChanged(table, stamp);
+    if (camera_ && camera_->due(stamp))
+      camera_->take(table, stamp);
     shared_.last_published = stamp;
   }
   const physics::TableModel& table = *parameters_.table_model;

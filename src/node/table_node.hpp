@@ -1,8 +1,8 @@
 // table_node: the ROS adapter around the live table (session::LiveTable). Its own thread
 // publishes tf, ~state, ~events, ~markers, ~game_state and (with use_sim_time) /clock at
-// ~publish_rate and does nothing else; the light services (TableServices, GameServices), dynamic_reconfigure and the
-// aim marker run on two threads of their own, predictions (PredictionServices) on a third. All share the table under
-// one lock, held only while the table itself is touched.
+// ~publish_rate and does nothing else (but hand the camera a copy of the table when a frame is due); the light services
+// (TableServices, GameServices), dynamic_reconfigure and the aim marker run on two threads of their own, predictions
+// (PredictionServices) on a third. All share the table under one lock, held only while the table itself is touched.
 #pragma once
 
 #include <ros/ros.h>
@@ -13,6 +13,7 @@
 #include <string>
 
 #include "node/aim_marker.hpp"
+#include "node/camera_publisher.hpp"
 #include "node/game_services.hpp"
 #include "node/node_parameters.hpp"
 #include "node/prediction_services.hpp"
@@ -61,6 +62,7 @@ private:
   std::unique_ptr<PredictionServices> predictions_;
   std::unique_ptr<PhysicsReconfigure> reconfigure_;
   std::unique_ptr<AimMarker> aim_marker_;
+  std::unique_ptr<CameraPublisher> camera_;     ///< null with ~camera/enabled false
   std::unique_ptr<ros::AsyncSpinner> spinner_;  ///< the light services' threads
 };
 

@@ -13,7 +13,7 @@ Rgb ballColour(int id)
       {0.85f, 0.05f, 0.05f},  // red
       {0.4f, 0.1f, 0.55f},    // purple
       {1.0f, 0.45f, 0.0f},    // orange
-      {0.0f, 0.5f, 0.2f},     // green
+      {0.0f, 0.3f, 0.12f},    // green: darker than the cloth, as on real balls (and told apart from it by a camera)
       {0.5f, 0.08f, 0.1f},    // maroon
       {0.05f, 0.05f, 0.05f},  // black
   }};

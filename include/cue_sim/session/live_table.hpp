@@ -142,6 +142,10 @@ public:
   /// exact motion from when it was placed (physics::rotationAlong).
   const std::vector<Eigen::Quaterniond>& orientations() const { return orientations_now_; }
   bool atRest() const { return live_.atRest(); }
+  /// The physics time [s] a stamp maps to (pauses, steps and real-time factors included).
+  double physicsTime(Stamp stamp) const { return clock_.at(stamp); }
+  /// The stamp of the last advanceTo.
+  Stamp lastStamp() const { return last_stamp_; }
   bool paused() const { return paused_; }
   /// Changes when the balls are placed anew (rack, reset, state edits) or the physics changes:
   /// what is drawn of the table may have to be drawn again.

@@ -1,0 +1,114 @@
+"""Finding the balls in the simulated camera's images: an example detector, in OpenCV and NumPy.
+
+It does what a simple vision pipeline over a pool table does: it learns the cloth's colour
+from the image, marks everything that differs from it on the cloth, finds ball centres as the
+peaks of that mask's distance transform (a ball is a disc of known radius, so its centre is the
+point farthest from the cloth), and refines each to the centroid of the mask within one radius.
+:func:`table_positions` takes the pixels back onto the plane of the balls' centres through the
+calibrated lens. ``scripts/detect_balls.py`` runs it on ``~camera/image_raw`` and scores it
+against ``~camera/ground_truth``.
+"""
+
+from __future__ import annotations
+
+import cv2
+import numpy as np
+
+#: How far from the cloth's colour a pixel must be to count as something on it (8-bit levels,
+#: Euclidean in BGR): above sensor noise and the cloth's shading, below every ball's contrast.
+COLOUR_THRESHOLD = 32.0
+#: A peak of the distance transform is a ball's centre if it is at least this share of a radius
+#: from the cloth: a smeared ball is still a full radius wide, a cushion's edge or a pocket's
+#: sliver is not.
+PEAK_SHARE = 0.75
+#: Refinements of each centre (the centroid of the mask within a radius of it).
+REFINEMENTS = 3
+
+
+def cloth_colour(image: np.ndarray) -> np.ndarray:
+    """The cloth's colour: the median of the image's middle ninth (the cloth, mostly)."""
+    h, w = image.shape[:2]
+    middle = image[h // 3 : 2 * h // 3, w // 3 : 2 * w // 3].reshape(-1, 3)
+    return np.median(middle, axis=0)
+
+
+def cloth_region(image: np.ndarray, cloth: np.ndarray) -> np.ndarray:
+    """The playing area: the convex hull of the largest cloth-coloured region, shrunk by 2 px
+    so that the cushions' noses stay out."""
+    near = (np.linalg.norm(image.astype(np.float32) - cloth, axis=2) < COLOUR_THRESHOLD).astype(np.uint8)
+    count, labels, stats, _ = cv2.connectedComponentsWithStats(near, connectivity=4)
+    if count < 2:
+        return np.zeros(image.shape[:2], np.uint8)
+    largest = 1 + int(np.argmax(stats[1:, cv2.CC_STAT_AREA]))
+    points = cv2.findNonZero((labels == largest).astype(np.uint8))
+    region = np.zeros(image.shape[:2], np.uint8)
+    cv2.fillConvexPoly(region, cv2.convexHull(points), 1)
+    return cv2.erode(region, np.ones((5, 5), np.uint8))
+
+
+def detect_balls(image: np.ndarray, radius: float) -> np.ndarray:
+    """Ball centres [px] in a BGR image of the table, as an (N, 2) array of (u, v).
+
+    ``radius`` is a ball's apparent radius in pixels (focal length x R / distance).
+    """
+    cloth = cloth_colour(image)
+    on_cloth = np.linalg.norm(image.astype(np.float32) - cloth, axis=2) >= COLOUR_THRESHOLD
+    mask = (on_cloth & (cloth_region(image, cloth) > 0)).astype(np.uint8)
+    distance = cv2.distanceTransform(mask, cv2.DIST_L2, 5)
+    # Local maxima at least PEAK_SHARE x radius deep, one within 1.2 radius.
+    window = max(3, int(round(1.2 * radius)) | 1)
+    dilated = cv2.dilate(distance, cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (window, window)))
+    peaks = np.argwhere((distance >= dilated) & (distance >= PEAK_SHARE * radius))
+    # Plateaus give several pixels per ball: keep the deepest, then none within 1.2 radius of it.
+    order = np.argsort(-distance[peaks[:, 0], peaks[:, 1]])
+    kept: list[np.ndarray] = []
+    for row, column in peaks[order]:
+        p = np.array([column, row], dtype=float)
+        if all(np.hypot(*(p - q)) > 1.2 * radius for q in kept):
+            kept.append(p)
+    return np.array([refine(mask, p, radius) for p in kept]).reshape(-1, 2)
+
+
+def refine(mask: np.ndarray, centre: np.ndarray, radius: float) -> np.ndarray:
+    """The centroid of the mask's pixels within ``radius`` of ``centre``, iterated."""
+    h, w = mask.shape
+    for _ in range(REFINEMENTS):
+        x0, x1 = int(max(0, centre[0] - radius - 1)), int(min(w, centre[0] + radius + 2))
+        y0, y1 = int(max(0, centre[1] - radius - 1)), int(min(h, centre[1] + radius + 2))
+        ys, xs = np.mgrid[y0:y1, x0:x1]
+        inside = (np.hypot(xs - centre[0], ys - centre[1]) <= radius) & (mask[y0:y1, x0:x1] > 0)
+        if not inside.any():
+            break
+        centre = np.array([xs[inside].mean(), ys[inside].mean()])
+    return centre
+
+
+def table_positions(pixels: np.ndarray, camera_matrix: np.ndarray, distortion: np.ndarray,
+                    rotation: np.ndarray, translation: np.ndarray, height: float) -> np.ndarray:
+    """Points [m] in the table frame where the rays of ``pixels`` (N, 2) meet the plane
+    z = ``height`` (a ball's radius: the plane of the centres).
+
+    ``rotation`` (3x3) and ``translation`` (3) are the camera's optical frame in the table frame.
+    """
+    if len(pixels) == 0:
+        return np.zeros((0, 3))
+    normalised = cv2.undistortPoints(np.asarray(pixels, np.float64).reshape(-1, 1, 2), camera_matrix, distortion)
+    rays = np.hstack([normalised.reshape(-1, 2), np.ones((len(pixels), 1))]) @ rotation.T
+    t = (height - translation[2]) / rays[:, 2]
+    return translation + rays * t[:, None]
+
+
+def match(detected: np.ndarray, truth: np.ndarray, gate: float) -> tuple[np.ndarray, np.ndarray]:
+    """Pairs each true position (M, k) with its nearest detection (N, k) within ``gate``, greedily
+    by distance. Returns the distances of the matched pairs and a bool array of the true
+    positions found."""
+    pairs = sorted((float(np.linalg.norm(d - t)), i, j) for i, t in enumerate(truth) for j, d in enumerate(detected))
+    found = np.zeros(len(truth), bool)
+    used = np.zeros(len(detected), bool)
+    errors = []
+    for distance, i, j in pairs:
+        if distance > gate or found[i] or used[j]:
+            continue
+        found[i] = used[j] = True
+        errors.append(distance)
+    return np.array(errors), found

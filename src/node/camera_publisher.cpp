@@ -1,0 +1,230 @@
+#include "node/camera_publisher.hpp"
+
+#include <geometry_msgs/TransformStamped.h>
+#include <sensor_msgs/Image.h>
+#include <sensor_msgs/image_encodings.h>
+
+#include "cue_sim/CameraGroundTruth.h"
+#include "cue_sim/camera/exposure.hpp"
+
+namespace cue_sim
+{
+namespace
+{
+/// The default pose when tf has no camera frame: over the cloth's centre, this high [m].
+constexpr double kDefaultHeight = 2.4;
+
+camera::Intrinsics intrinsicsOf(const sensor_msgs::CameraInfo& info)
+{
+  camera::Intrinsics k;
+  k.width = static_cast<int>(info.width);
+  k.height = static_cast<int>(info.height);
+  k.fx = info.K[0];
+  k.fy = info.K[4];
+  k.cx = info.K[2];
+  k.cy = info.K[5];
+  k.name = "calibrated";
+  for (std::size_t i = 0; i < k.distortion.size() && i < info.D.size(); ++i)
+    k.distortion[i] = info.D[i];
+  return k;
+}
+
+/// camera_info for the intrinsics the camera renders with (scaled, when it is).
+sensor_msgs::CameraInfo infoOf(const camera::Intrinsics& k, const std::string& frame)
+{
+  sensor_msgs::CameraInfo info;
+  info.header.frame_id = frame;
+  info.width = static_cast<std::uint32_t>(k.width);
+  info.height = static_cast<std::uint32_t>(k.height);
+  info.distortion_model = "plumb_bob";
+  info.D.assign(k.distortion.begin(), k.distortion.end());
+  info.K = {k.fx, 0, k.cx, 0, k.fy, k.cy, 0, 0, 1};
+  info.R = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+  info.P = {k.fx, 0, k.cx, 0, 0, k.fy, k.cy, 0, 0, 0, 1, 0};
+  return info;
+}
+}  // namespace
+
+CameraPublisher::CameraPublisher(ros::NodeHandle& private_node, const CameraParameters& parameters,
+                                 const std::string& table_frame)
+  : parameters_(parameters), table_frame_(table_frame), camera_node_(private_node, "camera")
+{
+  info_manager_ = std::make_unique<camera_info_manager::CameraInfoManager>(camera_node_, "overhead");
+  if (!info_manager_->validateURL(parameters.info_url) || !info_manager_->loadCameraInfo(parameters.info_url) ||
+      !info_manager_->isCalibrated())
+    throw std::runtime_error("~camera/info_url: cannot load a calibration from '" + parameters.info_url + "'");
+  intrinsics_ = intrinsicsOf(info_manager_->getCameraInfo());
+  if (parameters.width > 0 || parameters.height > 0)
+  {
+    if (parameters.width <= 0 || parameters.height <= 0)
+      throw std::runtime_error("~camera/width and ~camera/height: set both or neither");
+    intrinsics_ = intrinsics_.scaled(parameters.width, parameters.height);
+  }
+  const std::string why = intrinsics_.whyInvalid();
+  if (!why.empty())
+    throw std::runtime_error("~camera/info_url '" + parameters.info_url + "': " + why);
+  info_ = infoOf(intrinsics_, parameters.frame);
+  transport_ = std::make_unique<image_transport::ImageTransport>(camera_node_);
+  image_publisher_ = transport_->advertiseCamera("image_raw", 2);
+  truth_publisher_ = camera_node_.advertise<cue_sim::CameraGroundTruth>("ground_truth", 10);
+  thread_ = std::thread([this] { loop(); });
+}
+
+CameraPublisher::~CameraPublisher()
+{
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stop_ = true;
+  }
+  wake_.notify_all();
+  thread_.join();
+}
+
+bool CameraPublisher::due(const ros::Time& stamp) const
+{
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (busy_ || job_ || stamp < next_due_)
+    return false;
+  return image_publisher_.getNumSubscribers() > 0 || truth_publisher_.getNumSubscribers() > 0;
+}
+
+void CameraPublisher::take(const session::LiveTable& table, const ros::Time& stamp)
+{
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const ros::Duration period(1.0 / parameters_.rate);
+    // On the rate's grid while it keeps up; from this frame on after a gap.
+    next_due_ = stamp - next_due_ < period ? next_due_ + period : stamp + period;
+    job_.emplace(Job{table, stamp});
+  }
+  wake_.notify_one();
+}
+
+void CameraPublisher::loop()
+{
+  while (true)
+  {
+    std::optional<Job> job;
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      wake_.wait(lock, [this] { return stop_ || job_; });
+      if (stop_)
+        return;
+      job = std::move(job_);
+      job_.reset();
+      busy_ = true;
+    }
+    try
+    {
+      photograph(*job);
+    }
+    catch (const std::exception& e)
+    {
+      ROS_ERROR_THROTTLE(5.0, "cue_sim: camera: %s", e.what());
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    busy_ = false;
+  }
+}
+
+camera::Pose CameraPublisher::lookUpPose(const physics::TableModel& table)
+{
+  if (!tf_buffer_)
+  {
+    tf_buffer_ = std::make_unique<tf2_ros::Buffer>();
+    tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_);
+  }
+  try
+  {
+    const geometry_msgs::TransformStamped t = tf_buffer_->lookupTransform(table_frame_, parameters_.frame, ros::Time(0),
+                                                                          ros::Duration(frames_ == 0 ? 0.5 : 0));
+    camera::Pose pose = camera::Pose::Identity();
+    pose.translation() =
+        Eigen::Vector3d(t.transform.translation.x, t.transform.translation.y, t.transform.translation.z);
+    pose.linear() = Eigen::Quaterniond(t.transform.rotation.w, t.transform.rotation.x, t.transform.rotation.y,
+                                       t.transform.rotation.z)
+                        .normalized()
+                        .toRotationMatrix();
+    return pose;
+  }
+  catch (const tf2::TransformException& e)
+  {
+    ROS_WARN_THROTTLE(
+        10.0,
+        "cue_sim: camera: no transform %s -> %s in tf (%s); the camera looks down from %.1f m over the table's centre",
+        table_frame_.c_str(), parameters_.frame.c_str(), e.what(), kDefaultHeight);
+    return camera::overheadPose(table.clothCentre(), kDefaultHeight);
+  }
+}
+
+camera::TableCamera& CameraPublisher::cameraFor(const session::LiveTable& table)
+{
+  const auto& p = table.engine().params();
+  if (!camera_ || camera_radius_ != p.ball_radius || camera_cushion_ != p.cushion_height)
+  {
+    camera::CameraOptions options;
+    options.noise_stddev = parameters_.noise;
+    camera_.emplace(table.table(), p.ball_radius, p.cushion_height, intrinsics_, options);
+    camera_radius_ = p.ball_radius;
+    camera_cushion_ = p.cushion_height;
+  }
+  return *camera_;
+}
+
+void CameraPublisher::photograph(Job& job)
+{
+  camera::TableCamera& camera = cameraFor(job.table);
+  camera.setPose(lookUpPose(job.table.table()));
+  const ros::Duration half(parameters_.exposure / 2);
+  const session::Stamp start = static_cast<session::Stamp>(job.stamp.toNSec());
+  const ros::Time stamp = job.stamp + half;  // the middle of the exposure
+  const bool pixels = image_publisher_.getNumSubscribers() > 0;
+  camera::Frame frame;
+  std::vector<camera::BallPose> middle;
+  if (pixels)
+  {
+    const camera::Exposure exposure = camera::exposureOf(job.table, start, parameters_.exposure);
+    frame = camera.render(exposure);
+    middle = exposure.instants[exposure.instants.size() / 2];
+  }
+  else
+  {
+    job.table.advanceTo(static_cast<session::Stamp>(stamp.toNSec()));
+    middle = camera::posesOf(job.table);
+    frame.balls = camera.groundTruth(middle);
+  }
+  ++frames_;
+
+  cue_sim::CameraGroundTruth truth;
+  truth.header.stamp = stamp;
+  truth.header.frame_id = parameters_.frame;
+  truth.table_frame = table_frame_;
+  for (std::size_t i = 0; i < frame.balls.size(); ++i)
+  {
+    cue_sim::BallPixel b;
+    b.id = frame.balls[i].id;
+    b.u = frame.balls[i].pixel.x();
+    b.v = frame.balls[i].pixel.y();
+    b.radius = frame.balls[i].radius;
+    b.visible = frame.balls[i].visible;
+    b.position.x = middle[i].centre.x();
+    b.position.y = middle[i].centre.y();
+    b.position.z = middle[i].centre.z();
+    truth.balls.push_back(b);
+  }
+  truth_publisher_.publish(truth);
+  if (!pixels)
+    return;
+  sensor_msgs::Image image;
+  image.header = truth.header;
+  image.height = static_cast<std::uint32_t>(frame.image.rows);
+  image.width = static_cast<std::uint32_t>(frame.image.cols);
+  image.encoding = sensor_msgs::image_encodings::BGR8;
+  image.step = static_cast<std::uint32_t>(frame.image.cols * 3);
+  image.data.assign(frame.image.datastart, frame.image.dataend);
+  sensor_msgs::CameraInfo info = info_;
+  info.header = truth.header;
+  image_publisher_.publish(image, info);
+}
+
+}  // namespace cue_sim
