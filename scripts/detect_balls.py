@@ -45,6 +45,7 @@ class Detector:
         rospy.Subscriber(camera_ns + "/image_raw", Image, self.on_image, queue_size=1, buff_size=2 ** 24)
         self.publisher = rospy.Publisher("~detections", PoseArray, queue_size=1)
         self.last_image = None
+        self.region = None
 
     def on_info(self, info):
         self.info = info
@@ -68,7 +69,9 @@ class Detector:
         d = np.array(self.info.D)
         rotation, translation = self.camera_pose(msg.header.frame_id, msg.header.stamp)
         radius = k[0, 0] * self.ball_radius / (translation[2] - self.ball_radius)
-        pixels = detection.detect_balls(image, radius)
+        if self.region is None or self.region.shape != image.shape[:2]:
+            self.region = detection.cloth_region(image, detection.cloth_colour(image))  # the camera does not move
+        pixels = detection.detect_balls(image, radius, self.region)
         positions = detection.table_positions(pixels, k, d, rotation, translation, self.ball_radius)
         detections = PoseArray()
         detections.header.stamp = msg.header.stamp

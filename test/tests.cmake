@@ -84,6 +84,9 @@ add_rostest(test/node/game_replay.test DEPENDENCIES game_node_tests self_play)
 # The same scenes through the Python module, the simulate program and the node's ~predict.
 add_rostest(test/node/same_answers.test DEPENDENCIES table_node simulate cue_sim_python)
 
+# The simulated camera and the example detector (scripts/detect_balls.py) on it.
+add_rostest(test/node/camera.test DEPENDENCIES table_node)
+
 add_rostest_gtest(examples_tests test/node/examples.test test/node/test_examples.cpp test/node/rostest_main.cpp)
 target_include_directories(examples_tests PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(examples_tests ${catkin_LIBRARIES})

@@ -32,10 +32,16 @@ def cloth_colour(image: np.ndarray) -> np.ndarray:
     return np.median(middle, axis=0)
 
 
+def colour_distance(image: np.ndarray, colour: np.ndarray) -> np.ndarray:
+    """Each pixel's Euclidean distance from ``colour`` in BGR [8-bit levels]."""
+    difference = cv2.absdiff(image, np.array([*np.round(colour), 0], np.float64)).astype(np.int32)
+    return np.sqrt((difference * difference).sum(axis=2).astype(np.float32))
+
+
 def cloth_region(image: np.ndarray, cloth: np.ndarray) -> np.ndarray:
     """The playing area: the convex hull of the largest cloth-coloured region, shrunk by 2 px
-    so that the cushions' noses stay out."""
-    near = (np.linalg.norm(image.astype(np.float32) - cloth, axis=2) < COLOUR_THRESHOLD).astype(np.uint8)
+    so that the cushions' noses stay out. For a camera that does not move, compute it once."""
+    near = (colour_distance(image, cloth) < COLOUR_THRESHOLD).astype(np.uint8)
     count, labels, stats, _ = cv2.connectedComponentsWithStats(near, connectivity=4)
     if count < 2:
         return np.zeros(image.shape[:2], np.uint8)
@@ -46,14 +52,17 @@ def cloth_region(image: np.ndarray, cloth: np.ndarray) -> np.ndarray:
     return cv2.erode(region, np.ones((5, 5), np.uint8))
 
 
-def detect_balls(image: np.ndarray, radius: float) -> np.ndarray:
+def detect_balls(image: np.ndarray, radius: float, region: np.ndarray | None = None) -> np.ndarray:
     """Ball centres [px] in a BGR image of the table, as an (N, 2) array of (u, v).
 
-    ``radius`` is a ball's apparent radius in pixels (focal length x R / distance).
+    ``radius`` is a ball's apparent radius in pixels (focal length x R / distance); ``region``
+    the playing area (:func:`cloth_region`), found in this image if not given.
     """
     cloth = cloth_colour(image)
-    on_cloth = np.linalg.norm(image.astype(np.float32) - cloth, axis=2) >= COLOUR_THRESHOLD
-    mask = (on_cloth & (cloth_region(image, cloth) > 0)).astype(np.uint8)
+    if region is None:
+        region = cloth_region(image, cloth)
+    on_cloth = colour_distance(image, cloth) >= COLOUR_THRESHOLD
+    mask = (on_cloth & (region > 0)).astype(np.uint8)
     distance = cv2.distanceTransform(mask, cv2.DIST_L2, 5)
     # Local maxima at least PEAK_SHARE x radius deep, one within 1.2 radius.
     window = max(3, int(round(1.2 * radius)) | 1)

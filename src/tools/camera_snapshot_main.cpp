@@ -3,6 +3,7 @@
 // and the camera's own checks by eye come from it.
 //   rosrun cue_sim camera_snapshot --rack eight --after-ms 40 --out break.png
 #include <CLI/CLI.hpp>
+#include <fstream>
 #include <iostream>
 #include <opencv2/imgcodecs.hpp>
 
@@ -32,6 +33,8 @@ int main(int argc, char** argv)
   app.add_option("--image-height", image_height, "[px] image height")->check(CLI::Range(16, 8192));
   app.add_option("--distortion", distortion, "plumb_bob k1 k2 p1 p2 k3")->expected(5);
   app.add_option("--out", out, "the PNG to write");
+  std::string truth_file;
+  app.add_option("--truth", truth_file, "also write the ground truth here, as CSV: id,u,v,radius,visible,x,y,z");
   CLI11_PARSE(app, argc, argv);
   try
   {
@@ -56,9 +59,24 @@ int main(int argc, char** argv)
     options.noise_stddev = noise;
     camera::TableCamera cam(*table, engine->params().ball_radius, engine->params().cushion_height, k, options);
     cam.setPose(camera::overheadPose(table->clothCentre(), height));
-    const camera::Frame frame = cam.render(camera::exposureOf(live, after, exposure));
+    const camera::Exposure shutter = camera::exposureOf(live, after, exposure);
+    const camera::Frame frame = cam.render(shutter);
     if (!cv::imwrite(out, frame.image))
       throw std::runtime_error("cannot write " + out);
+    if (!truth_file.empty())
+    {
+      std::ofstream csv(truth_file);
+      csv << "id,u,v,radius,visible,x,y,z\n";
+      const auto& middle = shutter.instants[shutter.instants.size() / 2];
+      for (std::size_t i = 0; i < frame.balls.size(); ++i)
+      {
+        const auto& b = frame.balls[i];
+        csv << b.id << "," << b.pixel.x() << "," << b.pixel.y() << "," << b.radius << "," << b.visible << ","
+            << middle[i].centre.x() << "," << middle[i].centre.y() << "," << middle[i].centre.z() << "\n";
+      }
+      if (!csv)
+        throw std::runtime_error("cannot write " + truth_file);
+    }
     int visible = 0;
     for (const auto& b : frame.balls)
       visible += b.visible;
