@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes urdf/table_7ft.urdf, table_9ft.urdf and table_carom.urdf.
 
-The link naming convention the simulator reads (README, "Describing a table in URDF"):
+The link naming convention the simulator reads (doc/tools.md, "Describing a table in URDF"):
   table          root link: the table frame, origin at the cloth's centre, cloth top at z = 0
   cloth          collision box: the playing surface is its footprint; its top at z = 0
   cushion_<name> collision box; the rubber nose is the top edge of the box face at local +y,

@@ -1,4 +1,4 @@
-// soak: a campaign of random shots, each checked at every event (README, "Soak campaign").
+// soak: a campaign of random shots, each checked at every event (doc/accuracy.md, "Soak campaign").
 //   rosrun cue_sim soak --shots 100000 --seed 7          (or devel/lib/cue_sim/soak)
 //   rosrun cue_sim soak --replay soak_violations/soak_7_123.yaml
 #include <CLI/CLI.hpp>

@@ -1,4 +1,4 @@
-// The README's planning examples, as a user runs them: the code in the README is the code in
+// The planning examples of doc/research.md, as a user runs them: the code there is the code in
 // src/examples/plan_shots.cpp and scripts/plan_shots.py, and both run against a real table,
 // strike the shot they chose, and the table then pockets what the prediction said.
 #include <gtest/gtest.h>
@@ -56,11 +56,11 @@ void runExample(TableClient& table, const std::string& command)
 TEST(Examples, TheReadmeShowsTheExamplesAsTheyAre)
 {
   const std::string root = CUE_SIM_SOURCE_DIR;
-  const std::string readme = readFile(root + "/README.md");
+  const std::string readme = readFile(root + "/doc/research.md");
   for (const std::string file : {"src/examples/plan_shots.cpp", "scripts/plan_shots.py"})
   {
     const std::string block = readmeBlock(readme, file);
-    ASSERT_FALSE(block.empty()) << "README.md has no code block after `" << file << "`";
+    ASSERT_FALSE(block.empty()) << "doc/research.md has no code block after `" << file << "`";
     EXPECT_EQ(block, readFile(root + "/" + file)) << file;
   }
 }

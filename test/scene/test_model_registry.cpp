@@ -1,5 +1,5 @@
 // The contact models are declared once (include/cue_sim/physics/contact_models.def): the C++
-// registry, scene files, config/physics.yaml and the README's model table agree with it.
+// registry, scene files, config/physics.yaml and the model table of doc/physics.md agree with it.
 // config/TableNode.cfg reads the declarations itself.
 #include <gtest/gtest.h>
 
@@ -23,13 +23,13 @@ std::string fileText(const std::string& relative)
   return s.str();
 }
 
-/// The model names in the README's "Models" table for one kind ("ball-ball", "ball-cushion"),
+/// The model names in doc/physics.md's "Models" table for one kind ("ball-ball", "ball-cushion"),
 /// and which of them it marks "(default)".
 std::set<std::string> readmeModels(const std::string& kind, std::string& marked_default)
 {
   std::set<std::string> names;
   const std::regex row("\\| " + kind + " \\| `([a-z0-9_]+)`( \\(default\\))? \\|");
-  const std::string readme = fileText("README.md");
+  const std::string readme = fileText("doc/physics.md");
   for (std::sregex_iterator it(readme.begin(), readme.end(), row), end; it != end; ++it)
   {
     names.insert((*it)[1]);

@@ -1,6 +1,6 @@
 // The soak campaign: random scenes on every bundled table, in every model, with every coefficient
 // across its whole accepted range and 1 to 200 balls, each run three ways and checked at every
-// event (README, "Soak campaign"). Scene k of a campaign depends on (seed, k) alone, so any shot
+// event (doc/accuracy.md, "Soak campaign"). Scene k of a campaign depends on (seed, k) alone, so any shot
 // can be made again, and each violation is written as a scene file that reproduces it.
 #pragma once
 

@@ -1,5 +1,5 @@
 // A ball-ball impact resolved with every ball touching the pair and the walls those balls touch,
-// as one impact (README, "Simultaneous impacts").
+// as one impact (doc/physics.md, "Simultaneous impacts").
 #include <algorithm>
 #include <cmath>
 

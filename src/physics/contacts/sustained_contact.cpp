@@ -1,5 +1,5 @@
 // Sustained contact: balls pressed together are joined instead of bouncing without end, and a
-// ball pressed onto a wall by its slip is held there (README, "Sustained contact").
+// ball pressed onto a wall by its slip is held there (doc/physics.md, "Sustained contact").
 #include <algorithm>
 #include <cmath>
 
