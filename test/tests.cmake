@@ -104,3 +104,8 @@ set_tests_properties(_ctest_cue_sim_rostest_test_node_node_load.test PROPERTIES 
 catkin_run_tests_target("pytest" "python" "pytest-python.xml"
   COMMAND "env CUE_SIM_SIMULATE=$<TARGET_FILE:simulate> /usr/bin/python3 -m pytest ${PROJECT_SOURCE_DIR}/test/python -q -p no:cacheprovider --junitxml=${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/pytest-python.xml"
   DEPENDENCIES cue_sim_python simulate)
+
+# rviz without complaints: 60 s of rviz under Xvfb while a client racks, breaks, previews, steps,
+# aims, strikes and starts games; fails on any error or warning rviz prints.
+add_test(NAME rviz_quiet COMMAND ${PROJECT_SOURCE_DIR}/scripts/rviz_quiet.sh 60)
+set_tests_properties(rviz_quiet PROPERTIES TIMEOUT 300 ENVIRONMENT "CUE_SIM_BUILD=${CMAKE_BINARY_DIR};CUE_SIM_DEVEL=${CATKIN_DEVEL_PREFIX}")

@@ -6,6 +6,7 @@
 
 #include "cue_sim/CameraGroundTruth.h"
 #include "cue_sim/camera/exposure.hpp"
+#include "node/thread_priority.hpp"
 
 namespace cue_sim
 {
@@ -102,6 +103,7 @@ void CameraPublisher::take(const session::LiveTable& table, const ros::Time& sta
 
 void CameraPublisher::loop()
 {
+  lowerThisThreadsPriority();  // rendering never delays tf
   while (true)
   {
     std::optional<Job> job;

@@ -1,9 +1,6 @@
 #include "node/prediction_services.hpp"
 
 #include <malloc.h>
-#include <sys/resource.h>
-#include <sys/syscall.h>
-#include <unistd.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include <algorithm>
@@ -12,21 +9,14 @@
 #include "node/game_messages.hpp"
 #include "node/ros_conversions.hpp"
 #include "node/shot_markers.hpp"
+#include "node/thread_priority.hpp"
 
 namespace cue_sim
 {
 namespace
 {
-/// Nice value of the threads that run predictions: below the publishing thread (0).
-constexpr int kPredictionNice = 10;
 /// How often, after heavy requests, the memory their replies took goes back to the system.
 const ros::WallDuration kTrimPeriod(2.0);
-
-void lowerThisThreadsPriority()
-{
-  // Linux gives each thread a nice value of its own; raising it needs no privilege.
-  setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), kPredictionNice);
-}
 
 /// The queue's thread: lowered once, on its first request.
 void lowerPriorityOnce()
