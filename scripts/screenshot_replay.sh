@@ -16,7 +16,7 @@ roslaunch cue_sim table.launch rviz:=false record:=true bag:="$bag" > "$CUE_SIM_
 launch=$!
 for i in $(seq 60); do rosservice list 2>/dev/null | grep -q /table/strike && break; sleep 0.5; done
 sleep 2  # the recorder subscribes
-rosservice call /table/strike '{ball_id: 0, speed: 8.0, phi: 0.0}' > /dev/null
+rosservice call /table/strike '{ball_id: 0, speed: 8.0, phi: 0.002}' > /dev/null
 sleep 8
 kill -INT $launch
 wait $launch || true
@@ -32,7 +32,8 @@ xvfb-run -a -s "-screen 0 1280x900x24" bash -c "
   rviz -d '$CUE_SIM_ROOT/rviz/table.rviz' > '$CUE_SIM_BUILD/replay_rviz.log' 2>&1 &
   sleep 6
   # Start 0.5 s before the first event (the cue ball meets the rack), and take the picture about
-  # 1 s into the playback (rosbag play waits a little before it starts).
+  # 1.5 s into the playback (rosbag play waits a little before it starts; the markers, sent
+  # every second, come in on the way).
   start=\$(python3 - '$bag' <<'PY'
 import sys, rosbag
 bag = rosbag.Bag(sys.argv[1])
@@ -42,7 +43,7 @@ print(max(0.0, min(t.to_sec() for t in events) - first - 0.5) if events else 0)
 PY
 )
   rosbag play --clock -s \$start '$bag' > '$CUE_SIM_BUILD/replay_play.log' 2>&1 &
-  sleep 1.6
+  sleep 2.2
   import -window root '$out'
 "
 echo "screenshot: $out"

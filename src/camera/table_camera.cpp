@@ -161,14 +161,35 @@ std::vector<BallPixel> TableCamera::groundTruth(const std::vector<BallPose>& bal
 
 Frame TableCamera::render(const Exposure& exposure)
 {
+  Frame frame;
+  frame.balls = render(exposure, frame.image);
+  return frame;
+}
+
+std::vector<BallPixel> TableCamera::render(const Exposure& exposure, cv::Mat& image)
+{
   if (!pose_set_)
     setPose(overheadPose(Eigen::Vector2d::Zero(), 2.4));
-  Frame frame;
-  frame.image = background_.clone();
-  if (exposure.instants.empty())
-    return frame;
+  background_.copyTo(image);
+  std::vector<BallPixel> truth;
+  if (!exposure.instants.empty())
+  {
+    truth = groundTruth(exposure.instants[exposure.instants.size() / 2]);
+    drawBalls(exposure, image);
+  }
+  if (options_.noise_stddev > 0)
+  {
+    noise_.create(image.size(), CV_16SC3);
+    cv::RNG rng(noise_rng_());
+    rng.fill(noise_, cv::RNG::NORMAL, 0, options_.noise_stddev);
+    cv::add(image, noise_, image, cv::noArray(), CV_8UC3);
+  }
+  return truth;
+}
+
+void TableCamera::drawBalls(const Exposure& exposure, cv::Mat& image)
+{
   const std::size_t middle = exposure.instants.size() / 2;
-  frame.balls = groundTruth(exposure.instants[middle]);
 
   const Intrinsics& k = intrinsics_;
   const Pose to_camera = pose_.inverse();
@@ -226,7 +247,7 @@ Frame TableCamera::render(const Exposure& exposure)
     const float count = static_cast<float>(instants.size());
     for (int y = box.y0; y <= box.y1; ++y)
     {
-      auto* row = frame.image.ptr<std::uint8_t>(y);
+      auto* row = image.ptr<std::uint8_t>(y);
       for (int x = box.x0; x <= box.x1; ++x)
       {
         const Eigen::Vector3f& d = scene_->rays[static_cast<std::size_t>(y) * k.width + x];
@@ -261,14 +282,6 @@ Frame TableCamera::render(const Exposure& exposure)
       }
     }
   }
-  if (options_.noise_stddev > 0)
-  {
-    cv::Mat noise(frame.image.size(), CV_16SC3);
-    cv::RNG rng(noise_rng_());
-    rng.fill(noise, cv::RNG::NORMAL, 0, options_.noise_stddev);
-    cv::add(frame.image, noise, frame.image, cv::noArray(), CV_8UC3);
-  }
-  return frame;
 }
 
 }  // namespace camera

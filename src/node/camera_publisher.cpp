@@ -186,7 +186,10 @@ void CameraPublisher::photograph(Job& job)
   if (pixels)
   {
     const camera::Exposure exposure = camera::exposureOf(job.table, start, parameters_.exposure);
-    frame = camera.render(exposure);
+    const camera::Intrinsics& k = camera.intrinsics();
+    image_.data.resize(static_cast<std::size_t>(k.width) * k.height * 3);
+    cv::Mat view(k.height, k.width, CV_8UC3, image_.data.data());
+    frame.balls = camera.render(exposure, view);
     middle = exposure.instants[exposure.instants.size() / 2];
   }
   else
@@ -217,16 +220,14 @@ void CameraPublisher::photograph(Job& job)
   truth_publisher_.publish(truth);
   if (!pixels)
     return;
-  sensor_msgs::Image image;
-  image.header = truth.header;
-  image.height = static_cast<std::uint32_t>(frame.image.rows);
-  image.width = static_cast<std::uint32_t>(frame.image.cols);
-  image.encoding = sensor_msgs::image_encodings::BGR8;
-  image.step = static_cast<std::uint32_t>(frame.image.cols * 3);
-  image.data.assign(frame.image.datastart, frame.image.dataend);
+  image_.header = truth.header;
+  image_.height = static_cast<std::uint32_t>(intrinsics_.height);
+  image_.width = static_cast<std::uint32_t>(intrinsics_.width);
+  image_.encoding = sensor_msgs::image_encodings::BGR8;
+  image_.step = image_.width * 3;
   sensor_msgs::CameraInfo info = info_;
   info.header = truth.header;
-  image_publisher_.publish(image, info);
+  image_publisher_.publish(image_, info);
 }
 
 }  // namespace cue_sim

@@ -64,6 +64,7 @@ private:
   std::optional<camera::TableCamera> camera_;
   double camera_radius_ = 0, camera_cushion_ = 0;  ///< what camera_ was made for
   std::uint64_t frames_ = 0;
+  sensor_msgs::Image image_;  ///< its buffer kept between frames: the camera draws straight into it
 
   mutable std::mutex mutex_;  ///< guards job_, busy_, next_due_, stop_
   std::condition_variable wake_;

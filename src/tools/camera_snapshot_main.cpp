@@ -3,6 +3,7 @@
 // and the camera's own checks by eye come from it.
 //   rosrun cue_sim camera_snapshot --rack eight --after-ms 40 --out break.png
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <fstream>
 #include <iostream>
 #include <opencv2/imgcodecs.hpp>
@@ -34,6 +35,9 @@ int main(int argc, char** argv)
   app.add_option("--distortion", distortion, "plumb_bob k1 k2 p1 p2 k3")->expected(5);
   app.add_option("--out", out, "the PNG to write");
   std::string truth_file;
+  int repeat = 1;
+  app.add_option("--repeat", repeat, "render this many times and print the time per frame (exposure and picture)")
+      ->check(CLI::Range(1, 100000));
   app.add_option("--truth", truth_file, "also write the ground truth here, as CSV: id,u,v,radius,visible,x,y,z");
   CLI11_PARSE(app, argc, argv);
   try
@@ -59,8 +63,18 @@ int main(int argc, char** argv)
     options.noise_stddev = noise;
     camera::TableCamera cam(*table, engine->params().ball_radius, engine->params().cushion_height, k, options);
     cam.setPose(camera::overheadPose(table->clothCentre(), height));
-    const camera::Exposure shutter = camera::exposureOf(live, after, exposure);
-    const camera::Frame frame = cam.render(shutter);
+    camera::Exposure shutter;
+    camera::Frame frame;
+    const auto started = std::chrono::steady_clock::now();
+    for (int i = 0; i < repeat; ++i)
+    {
+      shutter = camera::exposureOf(live, after, exposure);
+      frame = cam.render(shutter);
+    }
+    const std::chrono::duration<double, std::milli> spent = std::chrono::steady_clock::now() - started;
+    if (repeat > 1)
+      std::cout << "camera_snapshot: " << spent.count() / repeat << " ms a frame (" << shutter.instants.size()
+                << " instants), over " << repeat << " frames\n";
     if (!cv::imwrite(out, frame.image))
       throw std::runtime_error("cannot write " + out);
     if (!truth_file.empty())

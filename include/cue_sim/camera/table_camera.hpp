@@ -79,11 +79,16 @@ public:
   const Pose& pose() const { return pose_; }
   /// The picture of one exposure, and each ball's ground truth at its middle instant.
   Frame render(const Exposure& exposure);
+  /// The same into `image` (8-bit BGR, reallocated only if it is not the image's size): a caller
+  /// that keeps its buffer (a message's) draws each frame without allocating it again.
+  std::vector<BallPixel> render(const Exposure& exposure, cv::Mat& image);
   /// The ground truth alone (cheap: no pixels drawn).
   std::vector<BallPixel> groundTruth(const std::vector<BallPose>& balls) const;
 
 private:
   class Scene;
+  /// Each ball over its box, at every instant of the exposure, averaged with what lies behind.
+  void drawBalls(const Exposure& exposure, cv::Mat& image);
   Intrinsics intrinsics_;
   CameraOptions options_;
   Pose pose_ = Pose::Identity();
@@ -92,6 +97,7 @@ private:
   double cushion_height_ = 0;
   std::unique_ptr<Scene> scene_;
   cv::Mat background_;
+  cv::Mat noise_;  ///< kept between frames, as the image's buffer is
   std::mt19937_64 noise_rng_;
 };
 
