@@ -68,6 +68,13 @@ CameraPublisher::CameraPublisher(ros::NodeHandle& private_node, const CameraPara
   transport_ = std::make_unique<image_transport::ImageTransport>(camera_node_);
   image_publisher_ = transport_->advertiseCamera("image_raw", 2);
   truth_publisher_ = camera_node_.advertise<cue_sim::CameraGroundTruth>("ground_truth", 10);
+  if (!parameters.publish_frame)
+  {
+    // Something else places the frame (a robot's tf): listen from the start, so that the first
+    // frame finds it.
+    tf_buffer_ = std::make_unique<tf2_ros::Buffer>();
+    tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_);
+  }
   thread_ = std::thread([this] { loop(); });
 }
 
@@ -93,9 +100,14 @@ void CameraPublisher::take(const session::LiveTable& table, const ros::Time& sta
 {
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    const ros::Duration period(1.0 / parameters_.rate);
-    // On the rate's grid while it keeps up; from this frame on after a gap.
-    next_due_ = stamp - next_due_ < period ? next_due_ + period : stamp + period;
+    // Frames on the rate's grid of stamp time, each at the first tick at or after its time; a
+    // time missed while the last frame was drawn is skipped, and no two frames are closer than
+    // half a period (a late frame is not followed at once by the next grid time's).
+    const double period = 1.0 / parameters_.rate;
+    if (next_due_.isZero() || (stamp - next_due_).toSec() >= period)
+      next_due_ = stamp;  // the first frame, or after a gap: the grid starts again here
+    while (next_due_ <= stamp || (next_due_ - stamp).toSec() < period / 2)
+      next_due_ += ros::Duration(period);
     job_.emplace(Job{table, stamp});
   }
   wake_.notify_one();
@@ -129,17 +141,27 @@ void CameraPublisher::loop()
   }
 }
 
+camera::Pose CameraPublisher::poseOf(const CameraParameters& parameters)
+{
+  const auto& x = parameters.pose;
+  camera::Pose pose = camera::Pose::Identity();
+  pose.translation() = Eigen::Vector3d(x[0], x[1], x[2]);
+  pose.linear() =
+      (Eigen::AngleAxisd(x[5], Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(x[4], Eigen::Vector3d::UnitY()) *
+       Eigen::AngleAxisd(x[3], Eigen::Vector3d::UnitX()))
+          .toRotationMatrix();
+  return pose;
+}
+
 camera::Pose CameraPublisher::lookUpPose(const physics::TableModel& table)
 {
-  if (!tf_buffer_)
-  {
-    tf_buffer_ = std::make_unique<tf2_ros::Buffer>();
-    tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_);
-  }
+  // The node placed the frame itself: no need to ask tf (and no wait for it).
+  if (parameters_.publish_frame)
+    return poseOf(parameters_);
   try
   {
-    const geometry_msgs::TransformStamped t = tf_buffer_->lookupTransform(table_frame_, parameters_.frame, ros::Time(0),
-                                                                          ros::Duration(frames_ == 0 ? 0.5 : 0));
+    const geometry_msgs::TransformStamped t =
+        tf_buffer_->lookupTransform(table_frame_, parameters_.frame, ros::Time(0));
     camera::Pose pose = camera::Pose::Identity();
     pose.translation() =
         Eigen::Vector3d(t.transform.translation.x, t.transform.translation.y, t.transform.translation.z);
@@ -151,10 +173,10 @@ camera::Pose CameraPublisher::lookUpPose(const physics::TableModel& table)
   }
   catch (const tf2::TransformException& e)
   {
-    ROS_WARN_THROTTLE(
-        10.0,
-        "cue_sim: camera: no transform %s -> %s in tf (%s); the camera looks down from %.1f m over the table's centre",
-        table_frame_.c_str(), parameters_.frame.c_str(), e.what(), kDefaultHeight);
+    ROS_WARN_THROTTLE(10.0,
+                      "cue_sim: camera: no transform %s -> %s in tf yet (%s); until there is one, the camera looks "
+                      "down from %.1f m over the table's centre",
+                      table_frame_.c_str(), parameters_.frame.c_str(), e.what(), kDefaultHeight);
     return camera::overheadPose(table.clothCentre(), kDefaultHeight);
   }
 }

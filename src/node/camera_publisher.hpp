@@ -36,6 +36,8 @@ public:
   bool due(const ros::Time& stamp) const;
   /// Hands the camera the table as of `stamp` (call it holding the table's lock; it copies).
   void take(const session::LiveTable& table, const ros::Time& stamp);
+  /// The pose ~camera/x ... yaw give the camera's frame in the table frame.
+  static camera::Pose poseOf(const CameraParameters& parameters);
 
 private:
   struct Job
@@ -45,8 +47,10 @@ private:
   };
   void loop();
   void photograph(Job& job);
-  /// The camera's pose in the table frame from tf, or the default overhead pose (warned about).
+  /// The camera's pose in the table frame: where the node put its frame, else from tf, else (warned
+  /// about) the default overhead pose.
   camera::Pose lookUpPose(const physics::TableModel& table);
+
   /// The renderer for this table and ball size, made anew when the physics changed them.
   camera::TableCamera& cameraFor(const session::LiveTable& table);
 
@@ -59,7 +63,7 @@ private:
   std::unique_ptr<image_transport::ImageTransport> transport_;
   image_transport::CameraPublisher image_publisher_;
   ros::Publisher truth_publisher_;
-  std::unique_ptr<tf2_ros::Buffer> tf_buffer_;  ///< made at the first frame
+  std::unique_ptr<tf2_ros::Buffer> tf_buffer_;  ///< only when something else places the frame
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
   std::optional<camera::TableCamera> camera_;
   double camera_radius_ = 0, camera_cushion_ = 0;  ///< what camera_ was made for

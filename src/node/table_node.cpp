@@ -124,11 +124,9 @@ void TableNode::publishStaticFrames(const std::string& urdf_xml)
   const CameraParameters& camera = parameters_.camera;
   if (camera.enabled && camera.publish_frame)
   {
-    const auto& x = camera.pose;
-    const Eigen::Quaterniond q = Eigen::AngleAxisd(x[5], Eigen::Vector3d::UnitZ()) *
-                                 Eigen::AngleAxisd(x[4], Eigen::Vector3d::UnitY()) *
-                                 Eigen::AngleAxisd(x[3], Eigen::Vector3d::UnitX());
-    frames.push_back(makeTransform(parameters_.table_frame, camera.frame, Eigen::Vector3d(x[0], x[1], x[2]), q, now));
+    const camera::Pose pose = CameraPublisher::poseOf(camera);
+    frames.push_back(makeTransform(parameters_.table_frame, camera.frame, pose.translation(),
+                                   Eigen::Quaterniond(pose.linear()), now));
   }
   static_broadcaster_.sendTransform(frames);
 }
