@@ -15,7 +15,8 @@ namespace cue_sim
 {
 namespace
 {
-/// How often, after heavy requests, the memory their replies took goes back to the system.
+/// How often the node looks whether heavy requests have stopped, to give the memory their replies
+/// took back to the system.
 const ros::WallDuration kTrimPeriod(2.0);
 
 /// The queue's thread: lowered once, on its first request.
@@ -69,13 +70,18 @@ void PredictionServices::clearPreview()
 void PredictionServices::trimMemory()
 {
   // glibc keeps freed memory in its arenas: a batch's reply would stay with the node for good.
+  // Trim once the requests stop, not while they run: malloc_trim holds the arenas' locks while it
+  // returns memory (30 to 80 ms after batches of 3000 shots), and the publishing thread's own
+  // allocations wait on them, pausing tf.
+  if (recent_.exchange(false))
+    return;
   if (ran_.exchange(false))
     malloc_trim(0);
 }
 
 bool PredictionServices::onPredict(Predict::Request& request, Predict::Response& response)
 {
-  ran_ = true;
+  ran_ = recent_ = true;
   session::PredictionStart start;
   std::string why = session::whyBadSamplePeriod(request.sample_period);
   long layout = 0, strikes = 0;  // the table the preview is of
@@ -116,7 +122,7 @@ bool PredictionServices::onPredict(Predict::Request& request, Predict::Response&
 
 bool PredictionServices::onPredictBatch(PredictBatch::Request& request, PredictBatch::Response& response)
 {
-  ran_ = true;
+  ran_ = recent_ = true;
   const session::PredictionLimits& limits = parameters_.table.limits;
   session::PredictionStart start;
   std::string why = session::whyBadSamplePeriod(request.sample_period);

@@ -39,6 +39,7 @@ private:
   ros::CallbackQueue queue_;
   std::unique_ptr<physics::ThreadPool> pool_;  ///< batches' threads
   std::atomic<bool> ran_{false};               ///< a request ran since the last trim
+  std::atomic<bool> recent_{false};            ///< a request ran since the trim timer last fired
   ros::Publisher preview_publisher_;
   ros::WallTimer trim_timer_;
   std::vector<ros::ServiceServer> services_;
