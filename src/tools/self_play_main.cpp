@@ -1,4 +1,5 @@
-// self_play: whole games between two shot planners, with execution noise (README, "Playing a game"; doc/tools.md, "Games and the referee").
+// self_play: whole games between two shot planners, with execution noise (README, "Playing a game"; doc/tools.md,
+// "Games and the referee").
 //   rosrun cue_sim self_play --rules nine_ball --games 100 --seed 7 --out self_play_records
 // Prints progress, then games finished, who won, shots and fouls per game; with --out, each game
 // as scene files that `simulate` replays shot by shot.
