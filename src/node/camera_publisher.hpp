@@ -2,7 +2,8 @@
 // calibration from camera_info_manager) and ~camera/ground_truth, at ~camera/rate of stamp time.
 // It lives in the table node because its motion blur needs the balls' exact trajectories: at a
 // frame's time the publishing thread hands it a copy of the live table, and its own thread
-// advances the copy across the exposure and renders it (camera::TableCamera). Nothing is copied
+// advances the copy across the exposure and renders it (camera::TableCamera), stamped at the
+// exposure's middle: a strike that lands inside an exposure shows from the next frame on. Nothing is copied
 // or drawn while no one subscribes; a frame that comes due while the last one is still drawn is
 // skipped, so tf never waits on the camera.
 #pragma once

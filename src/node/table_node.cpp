@@ -1,7 +1,9 @@
 #include "node/table_node.hpp"
 
 #include <geometry_msgs/TransformStamped.h>
+#include <pthread.h>
 #include <rosgraph_msgs/Clock.h>
+#include <sched.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include "cue_sim/TableState.h"
@@ -35,6 +37,10 @@ constexpr int kLightServiceThreads = 2;
 /// rviz shows every ball on a replay (frame-locked markers that came before their frames are not
 /// shown).
 const ros::WallDuration kMarkerRefresh(1.0);
+
+/// The publishing thread's SCHED_FIFO priority where granted: low among real-time threads (1-99),
+/// above every normal one.
+constexpr int kPublishingRealTimePriority = 10;
 }  // namespace
 
 TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
@@ -140,6 +146,7 @@ void TableNode::run()
   tick();
   if (!shared_.sim_time)
   {
+    raisePublishingPriority();
     ros::Rate rate(parameters_.publish_rate);
     while (ros::ok())
     {
@@ -167,6 +174,19 @@ void TableNode::run()
     if (factor > 0)
       period.sleep();
   }
+}
+
+void TableNode::raisePublishingPriority()
+{
+  // tf before anything else the machine does: a real-time priority where the system grants one
+  // (root, or CAP_SYS_NICE, or an rtprio limit). The loop sleeps every period and a tick takes
+  // well under a millisecond, so it cannot starve the rest. Without the grant, as before.
+  sched_param priority{};
+  priority.sched_priority = kPublishingRealTimePriority;
+  if (pthread_setschedparam(pthread_self(), SCHED_FIFO, &priority) == 0)
+    ROS_INFO("cue_sim: the publishing thread runs at real-time priority %d (SCHED_FIFO)", priority.sched_priority);
+  else
+    ROS_DEBUG("cue_sim: no real-time priority for the publishing thread; it runs at the normal one");
 }
 
 void TableNode::advanceSimClock(const ros::Duration& by)

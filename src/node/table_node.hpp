@@ -39,6 +39,8 @@ private:
   /// Brings the table up to now and publishes tf, ~state, ~events (and ~markers when the
   /// balls were placed anew, and every second) stamped with it.
   void tick();
+  /// Without sim time: the calling (publishing) thread at a real-time priority, where granted.
+  void raisePublishingPriority();
   /// With use_sim_time: moves the node's /clock on by `by` and ticks there.
   void advanceSimClock(const ros::Duration& by);
   void publishStaticFrames(const std::string& urdf_xml);
