@@ -1,7 +1,6 @@
 // Simulation control through a real master, with use_sim_time: the node drives /clock as fast
 // as possible; ~pause, ~step, ~set_state, ~place_ball, ~remove_ball; and a rosbag of a shot whose
 // every ball transform is the engine's exact trajectory at its stamp, with the shot played in it.
-#include <cue_sim/CameraGroundTruth.h>
 #include <cue_sim/ExecutedShot.h>
 #include <cue_sim/PlaceBall.h>
 #include <cue_sim/RemoveBall.h>
@@ -17,7 +16,6 @@
 #include <tf2_msgs/TFMessage.h>
 #include <visualization_msgs/MarkerArray.h>
 
-#include <algorithm>
 #include <cstdlib>
 #include <mutex>
 #include <thread>
@@ -342,75 +340,5 @@ TEST_F(SimControlTest, EveryBallTransformInTheBagIsTheExactTrajectoryAtItsStamp)
   EXPECT_GT(compared, 4u * 100u) << "transforms of the four balls over the shot";
   EXPECT_GT(moved, 0.3);
   EXPECT_LE(largest, 1e-9) << "largest distance of a recorded pose from the exact trajectory [m]";
-}
-TEST_F(SimControlTest, TheCameraFollowsSimTimeAndItsGroundTruthIsTheExactTrajectory)
-{
-  // With sim time as fast as possible, ~camera/ground_truth (alone: no pixels drawn) comes at
-  // ~camera/rate of sim time or slower, never two frames within half a period, each ball's
-  // position at its stamp (the exposure's middle) the exact trajectory's.
-  const std::vector<int> ids = {0, 1, 2, 3};
-  ASSERT_TRUE(table_.rack("custom", ids, {{-0.6, 0.0}, {0.0, 0.02}, {0.15, -0.2}, {0.3, 0.25}}).success);
-  const cue_sim::TableState rack = *table_.atRest(10);
-  std::mutex mutex;
-  std::vector<cue_sim::CameraGroundTruth> truths;
-  ros::Subscriber sub = nh_.subscribe<cue_sim::CameraGroundTruth>("/table/camera/ground_truth", 1000,
-                                                                  [&](const cue_sim::CameraGroundTruthConstPtr& m) {
-                                                                    std::lock_guard<std::mutex> lock(mutex);
-                                                                    truths.push_back(*m);
-                                                                  });
-  ros::WallDuration(1.0).sleep();  // subscribed
-  const cue_sim::Shot shot = TableClient::shot(0, 1.5, 0.05, 0.1, 0.2, -0.1);
-  const cue_sim::Strike::Response struck = table_.strike(shot);
-  ASSERT_TRUE(struck.success) << struck.message;
-  table_.atRest(60);
-  // Ten frames from the strike on, however fast the sim runs against the camera's thread, which
-  // yields to the node's publishing thread.
-  const auto framesSinceStrike = [&] {
-    std::lock_guard<std::mutex> lock(mutex);
-    return std::count_if(truths.begin(), truths.end(),
-                         [&](const cue_sim::CameraGroundTruth& t) { return t.header.stamp >= struck.stamp; });
-  };
-  for (int i = 0; i < 300 && framesSinceStrike() < 10; ++i)
-    ros::WallDuration(0.1).sleep();
-  sub.shutdown();
-
-  const cue_sim::physics::Engine<double> engine = nodesEngine();
-  cue_sim::physics::TableState<double> state = struckOnEngine(engine, rack, shot);
-  std::lock_guard<std::mutex> lock(mutex);
-  double rate = 0, exposure = 0;
-  ASSERT_TRUE(nh_.getParam("/table/camera/rate", rate));
-  ASSERT_TRUE(nh_.getParam("/table/camera/exposure", exposure));
-  std::size_t compared = 0;
-  double largest = 0;
-  ros::Time previous;
-  for (const auto& truth : truths)
-  {
-    // A frame's exposure is drawn from the table as it is when the exposure opens: a strike that
-    // lands inside one shows from the next frame on. Frames opened after the strike are exact.
-    if (truth.header.stamp - ros::Duration(exposure / 2) < struck.stamp)
-      continue;
-    if (!previous.isZero())
-      EXPECT_GE((truth.header.stamp - previous).toSec(), 0.5 / rate) << "never two frames within half a period";
-    previous = truth.header.stamp;
-    engine.advance(state, (truth.header.stamp - struck.stamp).toSec());
-    const auto balls = engine.snapshot(state);
-    ASSERT_EQ(truth.balls.size(), ids.size());
-    for (const auto& b : truth.balls)
-    {
-      const auto& exact = balls[state.indexOf(b.id)].r;
-      largest = std::max(largest, std::hypot(b.position.x - exact.x(), b.position.y - exact.y()));
-      EXPECT_TRUE(b.visible) << "ball " << b.id;
-      ++compared;
-    }
-  }
-  const double seconds = (previous - struck.stamp).toSec();
-  const double frames = static_cast<double>(compared) / ids.size();
-  std::printf(
-      "camera under sim time: %.0f frames in %.2f s of the shot, largest distance from the exact "
-      "trajectory %.2e m\n",
-      frames, seconds, largest);
-  EXPECT_GT(frames, 10) << "frames of the shot";
-  EXPECT_LE(frames, seconds * rate + 1) << "no more frames than the rate makes";
-  EXPECT_LE(largest, 1e-9) << "largest distance of a ground-truth position from the exact trajectory [m]";
 }
 }  // namespace
