@@ -274,7 +274,11 @@ TEST_F(SimControlTest, EveryBallTransformInTheBagIsTheExactTrajectoryAtItsStamp)
   ASSERT_EQ(rack.balls.size(), ids.size());
   const std::string bag_path = std::string(CUE_SIM_TEST_DIR) + "/sim_shot_test.bag";
   BagRecording recording(bag_path, std::string(CUE_SIM_TEST_DIR) + "/sim_record_test.log");
-  ros::WallDuration(2.5).sleep();  // let rosbag subscribe while the table waits
+  // Let rosbag subscribe while the table waits: to every topic the test reads from the bag (a fixed
+  // wait was too short on a loaded machine, and the strike missed the bag).
+  for (const std::string topic : {"/tf", "/table/shots", "/table/markers"})
+    ASSERT_TRUE(subscribedBy(topic, "/record", 30)) << topic;
+  ros::WallDuration(0.5).sleep();  // and connected
   const cue_sim::Shot shot = TableClient::shot(0, 1.5, 0.05, 0.1, 0.2, -0.1);
   const cue_sim::Strike::Response struck = table_.strike(shot);
   ASSERT_TRUE(struck.success) << struck.message;
