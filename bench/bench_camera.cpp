@@ -32,9 +32,10 @@ void CameraFrame1280x800(benchmark::State& bench)
   const auto& params = scene.engine->params();
   cue_sim::camera::CameraOptions options;
   options.noise_stddev = static_cast<double>(bench.range(1));
+  const cue_sim::camera::Pose pose =
+      cue_sim::camera::overheadPose(scene.engine->table().clothCentre(), cue_sim::camera::kOverheadHeight);
   cue_sim::camera::TableCamera camera(scene.engine->table(), params.ball_radius, params.cushion_height,
-                                      cue_sim::camera::Intrinsics{}.scaled(1280, 800), options);
-  camera.setPose(cue_sim::camera::overheadPose(scene.engine->table().clothCentre(), 2.4));
+                                      cue_sim::camera::Intrinsics{}.scaled(1280, 800), pose, options);
   std::size_t instants = 0;
   for (auto _ : bench)
   {

@@ -16,17 +16,24 @@ import tempfile
 
 import cv2
 import numpy as np
+import yaml
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "python"))
 from cue_sim import detection  # noqa: E402
 
 RADIUS = 0.028575
-HEIGHT = 2.4
-K = np.array([[1365.0, 0, 959.5], [0, 1365.0, 599.5], [0, 0, 1]])
-D = np.array([-0.08, 0.03, 0, 0, 0])
+HEIGHT = 2.4  # camera_snapshot's default: the camera over the cloth's centre [m]
 # The overhead pose (table.launch's default): optical x along the table's x, y along -y, z down.
 ROTATION = np.diag([1.0, -1.0, -1.0])
+CALIBRATION = os.path.join(HERE, "..", "config", "camera", "overhead_1920x1200.yaml")
+
+
+def calibration(path):
+    """The camera matrix and distortion of a calibration file (camera_info_manager's YAML)."""
+    with open(path) as f:
+        c = yaml.safe_load(f)
+    return np.array(c["camera_matrix"]["data"]).reshape(3, 3), np.array(c["distortion_coefficients"]["data"])
 
 
 def main():
@@ -38,11 +45,12 @@ def main():
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
         image_path, truth_path = os.path.join(tmp, "camera.png"), os.path.join(tmp, "truth.csv")
-        subprocess.run([args.snapshot, "--after-ms", str(args.after_ms), "--out", image_path, "--truth", truth_path],
-                       check=True)
+        subprocess.run([args.snapshot, "--after-ms", str(args.after_ms), "--calibration", CALIBRATION, "--out",
+                        image_path, "--truth", truth_path], check=True)
         image = cv2.imread(image_path)
         with open(truth_path) as f:
             truth = [row for row in csv.DictReader(f) if row["visible"] == "1"]
+    K, D = calibration(CALIBRATION)
     radius = K[0, 0] * RADIUS / (HEIGHT - RADIUS)
     pixels = detection.detect_balls(image, radius)
     positions = detection.table_positions(pixels, K, D, ROTATION, np.array([0, 0, HEIGHT]), RADIUS)

@@ -88,8 +88,8 @@ public:
 };
 
 TableCamera::TableCamera(const physics::TableModel& table, double ball_radius, double cushion_height,
-                         const Intrinsics& intrinsics, const CameraOptions& options)
-  : intrinsics_(intrinsics), options_(options), ball_radius_(ball_radius), noise_rng_(options.noise_seed)
+                         const Intrinsics& intrinsics, const Pose& pose, const CameraOptions& options)
+  : intrinsics_(intrinsics), options_(options), pose_(pose), ball_radius_(ball_radius), noise_rng_(options.noise_seed)
 {
   std::string why = intrinsics.whyInvalid();
   if (why.empty())
@@ -100,6 +100,7 @@ TableCamera::TableCamera(const physics::TableModel& table, double ball_radius, d
     throw std::invalid_argument("ball radius and cushion height must be positive");
   cushion_height_ = cushion_height;
   scene_ = std::make_unique<Scene>(table, intrinsics);
+  drawBackground();
 }
 
 TableCamera::~TableCamera() = default;
@@ -107,11 +108,16 @@ TableCamera::TableCamera(TableCamera&&) noexcept = default;
 
 void TableCamera::setPose(const Pose& pose)
 {
-  if (pose_set_ && pose.isApprox(pose_, 1e-12))
+  if (pose.isApprox(pose_, 1e-12))
     return;
   pose_ = pose;
-  pose_set_ = true;
+  drawBackground();
+}
+
+void TableCamera::drawBackground()
+{
   const Intrinsics& k = intrinsics_;
+  const Pose& pose = pose_;
   background_.create(k.height, k.width, CV_8UC3);
   const Eigen::Matrix3d rotation = pose.linear();
   const Eigen::Vector3d origin = pose.translation();
@@ -168,8 +174,6 @@ Frame TableCamera::render(const Exposure& exposure)
 
 std::vector<BallPixel> TableCamera::render(const Exposure& exposure, cv::Mat& image)
 {
-  if (!pose_set_)
-    setPose(overheadPose(Eigen::Vector2d::Zero(), 2.4));
   background_.copyTo(image);
   std::vector<BallPixel> truth;
   if (!exposure.instants.empty())

@@ -12,9 +12,6 @@ namespace cue_sim
 {
 namespace
 {
-/// The default pose when tf has no camera frame: over the cloth's centre, this high [m].
-constexpr double kDefaultHeight = 2.4;
-
 camera::Intrinsics intrinsicsOf(const sensor_msgs::CameraInfo& info)
 {
   camera::Intrinsics k;
@@ -24,7 +21,6 @@ camera::Intrinsics intrinsicsOf(const sensor_msgs::CameraInfo& info)
   k.fy = info.K[4];
   k.cx = info.K[2];
   k.cy = info.K[5];
-  k.name = "calibrated";
   for (std::size_t i = 0; i < k.distortion.size() && i < info.D.size(); ++i)
     k.distortion[i] = info.D[i];
   return k;
@@ -55,12 +51,8 @@ CameraPublisher::CameraPublisher(ros::NodeHandle& private_node, const CameraPara
       !info_manager_->isCalibrated())
     throw std::runtime_error("~camera/info_url: cannot load a calibration from '" + parameters.info_url + "'");
   intrinsics_ = intrinsicsOf(info_manager_->getCameraInfo());
-  if (parameters.width > 0 || parameters.height > 0)
-  {
-    if (parameters.width <= 0 || parameters.height <= 0)
-      throw std::runtime_error("~camera/width and ~camera/height: set both or neither");
+  if (parameters.width > 0)  // and height: readNodeParameters takes both or neither
     intrinsics_ = intrinsics_.scaled(parameters.width, parameters.height);
-  }
   const std::string why = intrinsics_.whyInvalid();
   if (!why.empty())
     throw std::runtime_error("~camera/info_url '" + parameters.info_url + "': " + why);
@@ -176,8 +168,8 @@ camera::Pose CameraPublisher::lookUpPose(const physics::TableModel& table)
     ROS_WARN_THROTTLE(10.0,
                       "cue_sim: camera: no transform %s -> %s in tf yet (%s); until there is one, the camera looks "
                       "down from %.1f m over the table's centre",
-                      table_frame_.c_str(), parameters_.frame.c_str(), e.what(), kDefaultHeight);
-    return camera::overheadPose(table.clothCentre(), kDefaultHeight);
+                      table_frame_.c_str(), parameters_.frame.c_str(), e.what(), camera::kOverheadHeight);
+    return camera::overheadPose(table.clothCentre(), camera::kOverheadHeight);
   }
 }
 
@@ -188,7 +180,7 @@ camera::TableCamera& CameraPublisher::cameraFor(const session::LiveTable& table)
   {
     camera::CameraOptions options;
     options.noise_stddev = parameters_.noise;
-    camera_.emplace(table.table(), p.ball_radius, p.cushion_height, intrinsics_, options);
+    camera_.emplace(table.table(), p.ball_radius, p.cushion_height, intrinsics_, lookUpPose(table.table()), options);
     camera_radius_ = p.ball_radius;
     camera_cushion_ = p.cushion_height;
   }
@@ -207,7 +199,7 @@ void CameraPublisher::photograph(Job& job)
   std::vector<camera::BallPose> middle;
   if (pixels)
   {
-    const camera::Exposure exposure = camera::exposureOf(job.table, start, parameters_.exposure);
+    const camera::Exposure exposure = camera::exposureOf(std::move(job.table), start, parameters_.exposure);
     const camera::Intrinsics& k = camera.intrinsics();
     image_.data.resize(static_cast<std::size_t>(k.width) * k.height * 3);
     cv::Mat view(k.height, k.width, CV_8UC3, image_.data.data());
@@ -220,7 +212,6 @@ void CameraPublisher::photograph(Job& job)
     middle = camera::posesOf(job.table);
     frame.balls = camera.groundTruth(middle);
   }
-  ++frames_;
 
   cue_sim::CameraGroundTruth truth;
   truth.header.stamp = stamp;

@@ -3,9 +3,9 @@
 // It lives in the table node because its motion blur needs the balls' exact trajectories: at a
 // frame's time the publishing thread hands it a copy of the live table, and its own thread
 // advances the copy across the exposure and renders it (camera::TableCamera), stamped at the
-// exposure's middle: a strike that lands inside an exposure shows from the next frame on. Nothing is copied
-// or drawn while no one subscribes; a frame that comes due while the last one is still drawn is
-// skipped, so tf never waits on the camera.
+// exposure's middle: a strike that lands inside an exposure shows from the next frame on. Nothing
+// is copied or drawn while no one subscribes; a frame that comes due while the last one is still
+// drawn is skipped, so tf never waits on the camera.
 #pragma once
 
 #include <camera_info_manager/camera_info_manager.h>
@@ -68,7 +68,6 @@ private:
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
   std::optional<camera::TableCamera> camera_;
   double camera_radius_ = 0, camera_cushion_ = 0;  ///< what camera_ was made for
-  std::uint64_t frames_ = 0;
   sensor_msgs::Image image_;  ///< its buffer kept between frames: the camera draws straight into it
 
   mutable std::mutex mutex_;  ///< guards job_, busy_, next_due_, stop_

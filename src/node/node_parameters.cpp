@@ -131,6 +131,8 @@ void readCamera(ParameterReader& reader, CameraParameters& camera)
        {std::pair<const char*, int>{"camera/width", camera.width}, {"camera/height", camera.height}})
     if (value != 0 && (value < 16 || value > 8192))
       refuse(name, value, "{0} or [16, 8192] px");
+  if ((camera.width == 0) != (camera.height == 0))
+    throw std::runtime_error("~camera/width and ~camera/height: set both or neither");
   if (camera.frame.empty() || camera.frame.front() == '/')
     throw std::runtime_error("~camera/frame must be non-empty and without a leading '/', got '" + camera.frame + "'");
 }

@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 
+#include "cue_sim/camera/pinhole_camera.hpp"
 #include "cue_sim/physics/collision_models.hpp"
 #include "cue_sim/physics/physics_params.hpp"
 #include "cue_sim/physics/table_model.hpp"
@@ -30,7 +31,7 @@ struct CameraParameters
   bool publish_frame = true;
   /// The optical frame in the table frame: x, y, z [m], roll, pitch, yaw [rad] (tf's fixed-axis
   /// convention: R = Rz(yaw) Ry(pitch) Rx(roll)). Default: 2.4 m over the centre, looking down.
-  std::array<double, 6> pose{0, 0, 2.4, M_PI, 0, 0};
+  std::array<double, 6> pose{0, 0, camera::kOverheadHeight, M_PI, 0, 0};
 };
 
 struct NodeParameters

@@ -10,6 +10,7 @@
 #include "cue_sim/table_description/urdf_table_loader.hpp"
 #include "node/ros_conversions.hpp"
 #include "node/table_markers.hpp"
+#include "node/thread_priority.hpp"
 
 namespace cue_sim
 {
@@ -37,10 +38,6 @@ constexpr int kLightServiceThreads = 2;
 /// rviz shows every ball on a replay (frame-locked markers that came before their frames are not
 /// shown).
 const ros::WallDuration kMarkerRefresh(1.0);
-
-/// The publishing thread's SCHED_FIFO priority where granted: low among real-time threads (1-99),
-/// above every normal one.
-constexpr int kPublishingRealTimePriority = 10;
 }  // namespace
 
 TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
@@ -178,13 +175,10 @@ void TableNode::run()
 
 void TableNode::raisePublishingPriority()
 {
-  // tf before anything else the machine does: a real-time priority where the system grants one
-  // (root, or CAP_SYS_NICE, or an rtprio limit). The loop sleeps every period and a tick takes
-  // well under a millisecond, so it cannot starve the rest. Without the grant, as before.
-  sched_param priority{};
-  priority.sched_priority = kPublishingRealTimePriority;
-  if (pthread_setschedparam(pthread_self(), SCHED_FIFO, &priority) == 0)
-    ROS_INFO("cue_sim: the publishing thread runs at real-time priority %d (SCHED_FIFO)", priority.sched_priority);
+  // tf before anything else the machine does. The loop sleeps every period and a tick takes well
+  // under a millisecond, so it cannot starve the rest. Without the grant, as before.
+  if (raiseThisThreadToRealTime())
+    ROS_INFO("cue_sim: the publishing thread runs at real-time priority %d (SCHED_FIFO)", kPublishingRealTimePriority);
   else
     ROS_DEBUG("cue_sim: no real-time priority for the publishing thread; it runs at the normal one");
 }

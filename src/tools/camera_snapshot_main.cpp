@@ -8,6 +8,7 @@
 #include <iostream>
 #include <opencv2/imgcodecs.hpp>
 
+#include "cue_sim/camera/calibration_file.hpp"
 #include "cue_sim/camera/exposure.hpp"
 #include "cue_sim/table_description/table_catalog.hpp"
 #include "cue_sim/table_description/urdf_table_loader.hpp"
@@ -16,9 +17,9 @@ int main(int argc, char** argv)
 {
   CLI::App app{"Renders the simulated overhead camera's picture of a rack or a break to a PNG."};
   std::string table_name = "7ft", rack = "eight", out = "camera.png";
-  double after_ms = 0, speed = 8.0, phi = 0.002, exposure = 0.004, height = 2.4, noise = 0;
-  int width = 1920, image_height = 1200;
-  std::vector<double> distortion{-0.08, 0.03, 0, 0, 0};
+  double after_ms = 0, speed = 8.0, phi = 0.002, exposure = 0.004, height = cue_sim::camera::kOverheadHeight, noise = 0;
+  int width = 0, image_height = 0;
+  std::string calibration = cue_sim::camera::defaultCalibrationPath();
   app.add_option("--table", table_name, "a bundled table (7ft, 9ft, carom) or a URDF file");
   app.add_option("--rack", rack, "eight, nine or empty");
   app.add_option("--after-ms", after_ms, "photograph this long after the break's strike; 0: the rack, not struck")
@@ -29,10 +30,10 @@ int main(int argc, char** argv)
   app.add_option("--height", height, "[m] the camera over the cloth's centre, looking down")
       ->check(CLI::Range(0.3, 20.0));
   app.add_option("--noise", noise, "Gaussian sensor noise [8-bit levels]")->check(CLI::Range(0.0, 50.0));
-  app.add_option("--width", width, "[px] image width (the default 1920x1200 calibration, scaled)")
+  app.add_option("--calibration", calibration, "the camera's calibration file (camera_info_manager's YAML)");
+  app.add_option("--width", width, "[px] the calibrated image read out this wide (with --image-height)")
       ->check(CLI::Range(16, 8192));
-  app.add_option("--image-height", image_height, "[px] image height")->check(CLI::Range(16, 8192));
-  app.add_option("--distortion", distortion, "plumb_bob k1 k2 p1 p2 k3")->expected(5);
+  app.add_option("--image-height", image_height, "[px] and this high")->check(CLI::Range(16, 8192));
   app.add_option("--out", out, "the PNG to write");
   std::string truth_file;
   int repeat = 1;
@@ -57,12 +58,15 @@ int main(int argc, char** argv)
         throw std::invalid_argument(outcome.message);
       live.advanceTo(after);
     }
-    camera::Intrinsics k = camera::Intrinsics{}.scaled(width, image_height);
-    std::copy(distortion.begin(), distortion.end(), k.distortion.begin());
+    camera::Intrinsics k = camera::intrinsicsFromFile(calibration);
+    if ((width == 0) != (image_height == 0))
+      throw std::invalid_argument("--width and --image-height: give both or neither");
+    if (width > 0)
+      k = k.scaled(width, image_height);
     camera::CameraOptions options;
     options.noise_stddev = noise;
-    camera::TableCamera cam(*table, engine->params().ball_radius, engine->params().cushion_height, k, options);
-    cam.setPose(camera::overheadPose(table->clothCentre(), height));
+    camera::TableCamera cam(*table, engine->params().ball_radius, engine->params().cushion_height, k,
+                            camera::overheadPose(table->clothCentre(), height), options);
     camera::Exposure shutter;
     camera::Frame frame;
     const auto started = std::chrono::steady_clock::now();

@@ -8,6 +8,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "../session/live_table_fixtures.hpp"
+#include "cue_sim/camera/calibration_file.hpp"
 #include "cue_sim/camera/exposure.hpp"
 #include "cue_sim/camera/table_camera.hpp"
 
@@ -21,14 +22,13 @@ using session::fixtures::engineOn;
 using session::fixtures::kSecond;
 using session::fixtures::kStart;
 
-constexpr double kHeight = 2.4;  ///< [m] the camera above the cloth
+constexpr double kHeight = kOverheadHeight;  ///< [m] the camera above the cloth
 
 TableCamera overheadCamera(const physics::Engine<double>& engine, const Intrinsics& k = {},
                            const CameraOptions& options = {})
 {
-  TableCamera camera(engine.table(), engine.params().ball_radius, engine.params().cushion_height, k, options);
-  camera.setPose(overheadPose(engine.table().clothCentre(), kHeight));
-  return camera;
+  return TableCamera(engine.table(), engine.params().ball_radius, engine.params().cushion_height, k,
+                     overheadPose(engine.table().clothCentre(), kHeight), options);
 }
 
 /// Pixels that are not the cloth's colour: a ball's (cloth is dark green with little red).
@@ -81,6 +81,26 @@ TEST(PinholeCamera, ScalingKeepsTheFieldOfView)
   // The image's corners see the same rays.
   EXPECT_NEAR((-0.5 - k.cx) / k.fx, (-0.5 - 959.5) / 1365.0, 1e-12);
   EXPECT_NEAR((1279.5 - k.cx) / k.fx, (1919.5 - 959.5) / 1365.0, 1e-12);
+}
+
+TEST(CalibrationFile, TheBundledOneIsTheDefaultCameraAndABadOneIsNamed)
+{
+  const Intrinsics k = intrinsicsFromFile(defaultCalibrationPath());
+  EXPECT_EQ(k.width, 1920);
+  EXPECT_EQ(k.height, 1200);
+  EXPECT_EQ(k.fx, Intrinsics{}.fx);
+  EXPECT_EQ(k.cx, Intrinsics{}.cx);
+  EXPECT_EQ(k.distortion[0], -0.08);
+  EXPECT_EQ(k.distortion[1], 0.03);
+  try
+  {
+    intrinsicsFromFile("/nonexistent/calibration.yaml");
+    FAIL() << "read a file that is not there";
+  }
+  catch (const std::invalid_argument& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/calibration.yaml"), std::string::npos) << e.what();
+  }
 }
 
 TEST(TableCamera, RefusesBadIntrinsicsNamingThem)

@@ -17,6 +17,7 @@ import rostest
 from geometry_msgs.msg import PoseArray
 from sensor_msgs.msg import CameraInfo, Image
 
+from cue_sim.detection import match
 from cue_sim.msg import CameraGroundTruth
 from cue_sim.srv import Strike, StrikeRequest
 
@@ -64,12 +65,6 @@ class Recorder:
             errors, matched = match(found, visible, 2 * RADIUS)
             results.append((int(matched.sum()), len(visible), len(found), 1000 * errors))
         return results
-
-
-def match(detected, truth, gate):
-    from cue_sim import detection
-
-    return detection.match(detected, truth, gate)
 
 
 def wait_for(predicate, timeout, what):

@@ -18,7 +18,6 @@ struct Intrinsics
   double fx = 1365, fy = 1365;         ///< focal lengths [px]
   double cx = 959.5, cy = 599.5;       ///< principal point [px]
   std::array<double, 5> distortion{};  ///< plumb_bob: k1, k2, p1, p2, k3
-  std::string name = "overhead";
 
   /// The same lens on a sensor read out at width x height (binned or scaled): focal lengths and
   /// principal point scaled with the image.
@@ -30,6 +29,10 @@ struct Intrinsics
 
 /// Where the camera is: its optical frame in the table frame.
 using Pose = Eigen::Isometry3d;
+
+/// The default camera's height over the cloth [m]: an 8 mm lens on the default sensor sees a 9 ft
+/// table and its rails from there (config/camera/overhead_1920x1200.yaml).
+constexpr double kOverheadHeight = 2.4;
 
 /// The camera above the table's centre at `height` [m], looking straight down, the image's x along
 /// the table's x and its y along the table's -y (the head end on the left).

@@ -66,9 +66,9 @@ struct CameraOptions
 class TableCamera
 {
 public:
-  /// Throws std::invalid_argument naming the intrinsics' or option's problem.
+  /// The camera at `pose`. Throws std::invalid_argument naming the intrinsics' or option's problem.
   TableCamera(const physics::TableModel& table, double ball_radius, double cushion_height, const Intrinsics& intrinsics,
-              const CameraOptions& options = {});
+              const Pose& pose, const CameraOptions& options = {});
   ~TableCamera();
   TableCamera(TableCamera&&) noexcept;
 
@@ -87,12 +87,13 @@ public:
 
 private:
   class Scene;
+  /// The table (everything but the balls) from pose_, once per pose.
+  void drawBackground();
   /// Each ball over its box, at every instant of the exposure, averaged with what lies behind.
   void drawBalls(const Exposure& exposure, cv::Mat& image);
   Intrinsics intrinsics_;
   CameraOptions options_;
-  Pose pose_ = Pose::Identity();
-  bool pose_set_ = false;
+  Pose pose_;
   double ball_radius_;
   double cushion_height_ = 0;
   std::unique_ptr<Scene> scene_;
