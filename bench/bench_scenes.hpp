@@ -226,7 +226,7 @@ runScene(const BenchScene& scene, TableState<double>& state, double rate, std::v
 {
   if (rate == 0)
   {
-    ShotResult<double> result = scene.engine->simulateToRest(state);
+    ShotResult<double> result = simulateToRest(*scene.engine, state);
     if (events.empty())
       events.swap(result.events);
     else

@@ -106,6 +106,11 @@ add_dependencies(node_load_tests table_node ${PROJECT_NAME}_generate_messages_cp
 # It measures tf's rate: alone on the machine, not beside another test's node.
 set_tests_properties(_ctest_cue_sim_rostest_test_node_node_load.test PROPERTIES RUN_SERIAL TRUE)
 
+# The folder arrows run one way: the physics core's models and table, engine, contacts, search and
+# shots, and the package's layers around it (scripts/check_layers.py; doc/architecture.md).
+catkin_run_tests_target("layers" "check_layers" "layers-check_layers.xml"
+  COMMAND "/usr/bin/python3 ${PROJECT_SOURCE_DIR}/scripts/check_layers.py ${PROJECT_SOURCE_DIR} --junit ${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/layers-check_layers.xml")
+
 # The Python module (pytest, Debian's python3-pytest): test/python.
 catkin_run_tests_target("pytest" "python" "pytest-python.xml"
   COMMAND "env CUE_SIM_SIMULATE=$<TARGET_FILE:simulate> /usr/bin/python3 -m pytest ${PROJECT_SOURCE_DIR}/test/python -q -p no:cacheprovider --junitxml=${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/pytest-python.xml"

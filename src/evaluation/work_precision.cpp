@@ -5,6 +5,7 @@
 
 #include "cue_sim/physics/motion.hpp"
 #include "cue_sim/physics/rack.hpp"
+#include "cue_sim/physics/simulation.hpp"
 
 namespace cue_sim
 {
@@ -173,13 +174,13 @@ Samples referenceRun(const ShotScene& scene, double interval, double max_time)
   const Engine<long double> engine(scene.table, scene.params.cast<long double>(), scene.models);
   TableState<long double> state = scene.state.cast<long double>();
   TableState<long double> probe = state;
-  const ShotResult<long double> rest = engine.simulateToRest(probe);
+  const ShotResult<long double> rest = simulateToRest(engine, probe);
   const double end = std::min(static_cast<double>(rest.duration), max_time);
   Samples out;
   for (long k = 0; k * interval <= end + interval; ++k)
   {
     const double t = k * interval;
-    engine.advance(state, static_cast<long double>(t));
+    advance(engine, state, static_cast<long double>(t));
     out.times.push_back(t);
     std::vector<Eigen::Vector2d> row;
     for (std::size_t i = 0; i < state.balls.size(); ++i)
@@ -214,7 +215,7 @@ MethodResult runEventEngine(const ShotScene& scene, const Samples& reference, in
   {
     TableState<double> state = scene.state;
     const auto start = std::chrono::steady_clock::now();
-    const ShotResult<double> shot = engine.simulateToRest(state);
+    const ShotResult<double> shot = simulateToRest(engine, state);
     times.push_back(secondsSince(start));
     result.work = static_cast<long>(shot.events.size());
   }
@@ -225,7 +226,7 @@ MethodResult runEventEngine(const ShotScene& scene, const Samples& reference, in
   Samples run;
   for (double t : reference.times)
   {
-    engine.advance(state, t);
+    advance(engine, state, t);
     std::vector<Eigen::Vector2d> row;
     for (std::size_t i = 0; i < state.balls.size(); ++i)
       row.push_back(where(engine.ballAt(state, i, t), *scene.table));

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "cue_sim/physics/rack.hpp"
+#include "cue_sim/physics/simulation.hpp"
 
 namespace cue_sim
 {
@@ -106,7 +107,7 @@ Turn GamePlay::shoot(const physics::CueStrike<double>& strike, bool push_out)
     throw std::invalid_argument(why);
   physics::TableState<double> shot = table_;
   engine_->strike(shot, 0, strike);
-  std::vector<physics::Event<double>> events = engine_->simulateToRest(shot).events;
+  std::vector<physics::Event<double>> events = simulateToRest(*engine_, shot).events;
   Turn turn = judge(strike, push_out, std::move(events));
   finish(turn, shot);
   return turn;

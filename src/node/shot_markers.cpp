@@ -55,7 +55,7 @@ visualization_msgs::MarkerArray previewMarkers(const physics::Engine<double>& en
   physics::TableState<double> state = start;
   engine.strike(state, ball_id, strike);
   physics::TableState<double> to_rest = state;
-  const physics::ShotResult<double> result = engine.simulateToRest(to_rest);
+  const physics::ShotResult<double> result = simulateToRest(engine, to_rest);
   // Points at the sampling period and at every event, so that each bounce is a corner.
   const double period = std::max(0.02, result.duration / 2000);
   std::vector<double> times;

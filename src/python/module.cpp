@@ -163,7 +163,7 @@ session::ShotPrediction forDuration(const Engine<double>& engine, physics::Table
   engine.strike(state, shot.ball_id, shot.strike);
   prediction.samples = samplesTo(engine, state, sample_period, until);
   prediction.strike_time = state.time;
-  engine.advance(state, state.time + until, &prediction.events);
+  advance(engine, state, state.time + until, &prediction.events);
   prediction.at_rest = !state.anyMoving();
   prediction.time_to_rest = prediction.events.empty() ? 0 : prediction.events.back().time - prediction.strike_time;
   prediction.final_balls = engine.snapshot(state);

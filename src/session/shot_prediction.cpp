@@ -40,7 +40,7 @@ RunShot runToRest(const physics::Engine<double>& engine, const physics::TableSta
   physics::ShotResult<double> result;
   try
   {
-    result = engine.simulateToRest(state);
+    result = simulateToRest(engine, state);
   }
   catch (const physics::EventLimitError& e)
   {

@@ -9,6 +9,7 @@
 #include "cue_sim/game/game_play.hpp"
 #include "cue_sim/game/referee.hpp"
 #include "cue_sim/game/self_play.hpp"
+#include "cue_sim/physics/simulation.hpp"
 
 using namespace cue_sim;
 using namespace cue_sim::game;
@@ -69,7 +70,7 @@ ShotFacts play(const std::vector<Ball<double>>& balls, const Eigen::Vector2d& ta
   cue.speed = speed;
   cue.phi = std::atan2(target.y() - from.y(), target.x() - from.x());
   engine().strike(s, 0, cue);
-  return readShot(engine().simulateToRest(s).events, &engine().table());
+  return readShot(simulateToRest(engine(), s).events, &engine().table());
 }
 
 GameState eightBallAfterBreak(Group shooter_group)

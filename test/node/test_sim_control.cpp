@@ -21,6 +21,7 @@
 #include <thread>
 
 #include "cue_sim/physics/engine.hpp"
+#include "cue_sim/physics/simulation.hpp"
 #include "cue_sim/table_description/urdf_table_loader.hpp"
 #include "physics_of_msgs.hpp"
 #include "shell_commands.hpp"
@@ -325,7 +326,7 @@ TEST_F(SimControlTest, EveryBallTransformInTheBagIsTheExactTrajectoryAtItsStamp)
     if (!tf || tf->transforms.empty() || tf->transforms[0].header.stamp < struck.stamp)
       continue;
     const double t = (tf->transforms[0].header.stamp - struck.stamp).toSec();
-    engine.advance(state, t);
+    advance(engine, state, t);
     const auto balls = engine.snapshot(state);
     for (const auto& transform : tf->transforms)
     {

@@ -70,7 +70,7 @@ TEST(Batch, EqualsShotsRunOneByOne)
     if (why.empty())
     {
       engine.strike(alone, shots[i].ball_id, shots[i].cue);
-      result = engine.simulateToRest(alone);
+      result = simulateToRest(engine, alone);
     }
     EXPECT_EQ(batch[i].error, why) << "shot " << i;
     ASSERT_EQ(batch[i].result.events.size(), result.events.size()) << "shot " << i;

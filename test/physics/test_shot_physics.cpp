@@ -6,6 +6,7 @@
 
 #include "cue_sim/physics/engine.hpp"
 #include "cue_sim/physics/motion.hpp"
+#include "cue_sim/physics/scan.hpp"
 
 using namespace cue_sim::physics;
 
@@ -45,7 +46,7 @@ TableState<double> afterCut(const Engine<double>& engine, double cut, double spe
     s.balls[0].w = Vec3<double>(0, speed / p.ball_radius, 0);
   settleMotion(s.balls[0], p.ball_radius);
   for (int i = 0; i < 20; ++i)
-    if (engine.step(s).kind == EventKind::BallBall)
+    if (scanStep(engine, s).kind == EventKind::BallBall)
       return s;
   ADD_FAILURE() << "no ball-ball event";
   return s;
@@ -57,7 +58,7 @@ double headingWhenRollingAgain(const Engine<double>& engine, TableState<double>&
 {
   for (int i = 0; i < 20; ++i)
   {
-    const Event<double> e = engine.step(s);
+    const Event<double> e = scanStep(engine, s);
     if (e.kind == EventKind::SlideToRoll && e.ball == 0)
       return headingOf(s.balls[s.indexOf(0)].v);
     if (!e.valid() || (e.isCollision() && e.ball == 0))
@@ -174,7 +175,7 @@ TEST(ShotPhysics, DrawComesBackAndFollowRollsOn)
     double rolling_vx = NAN;
     for (int i = 0; i < 20 && std::isnan(rolling_vx); ++i)
     {
-      const Event<double> e = engine.step(s);
+      const Event<double> e = scanStep(engine, s);
       ASSERT_TRUE(e.valid());
       if (e.kind == EventKind::BallBall && e.ball == 0)
       {
@@ -217,9 +218,9 @@ TEST(ShotPhysics, SideSpinChangesTheRebound)
     engine.strike(s, 0, cue);
     for (int i = 0; i < 10; ++i)
     {
-      const Event<double> e = engine.nextEvent(s);
+      const Event<double> e = scanNextEvent(engine, s);
       const Vec3<double> in = engine.ballAt(s, 0, e.time).v;
-      engine.step(s);
+      scanStep(engine, s);
       if (e.kind == EventKind::BallCushion)
       {
         const Vec3<double> out = s.balls[0].v;
@@ -405,7 +406,7 @@ TEST(ShotPhysics, BallsRattleInTheJawsOrDropCleanly)
     bool touched_jaw = false, dropped = false;
     for (int i = 0; i < 30 && !dropped; ++i)
     {
-      const Event<double> e = engine.step(s);
+      const Event<double> e = scanStep(engine, s);
       if (!e.valid() || e.kind == EventKind::BallCushion)
         break;
       if (e.kind == EventKind::BallCircle)

@@ -73,7 +73,7 @@ public:
 
   // A shot run elsewhere (the node's live table runs it in real time): judge it from its
   // events when it is struck, then finish it when its balls rest. shoot() is the two at once.
-  /// The turn `strike` makes with these events (Engine::simulateToRest's, from table()): the
+  /// The turn `strike` makes with these events (simulateToRest's, from table()): the
   /// ruling, the shot cap's included, and the state after it. Changes nothing.
   Turn judge(const physics::CueStrike<double>& strike, bool push_out, std::vector<physics::Event<double>> events) const;
   /// Takes the turn judged from table(): the balls as the shot left them at rest, then made

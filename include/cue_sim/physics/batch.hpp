@@ -1,11 +1,11 @@
 // Many shots from one table state, run on all cores of a ThreadPool. Each outcome is exactly
-// what Engine::strike and Engine::simulateToRest give for that shot alone, bit for bit.
+// what Engine::strike and simulateToRest give for that shot alone, bit for bit.
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "cue_sim/physics/engine.hpp"
+#include "cue_sim/physics/simulation.hpp"
 #include "cue_sim/physics/thread_pool.hpp"
 
 namespace cue_sim

@@ -3,13 +3,15 @@
 // closed-form trajectory; the next event is the earliest root of the transition, ball-ball,
 // ball-cushion and pocket polynomials; the simulation jumps to it and resolves it.
 //
-// An Engine holds no simulation state, so one engine can run any number of table states, from
-// any number of threads. A Simulation (simulation.hpp) keeps a state and its event search alive
-// between calls; the calls here that advance a state run one for the call's length.
+// An Engine is the model only (as MuJoCo's mjModel): it holds no simulation state and runs
+// nothing, so one engine serves any number of table states, from any number of threads. What
+// it answers is closed form: a ball at a time, whether a state or a strike is valid, a strike
+// applied. A Simulation (simulation.hpp) runs a state on it, keeping the event search alive
+// between calls; simulateToRest and advance there run one for a call's length, and scan.hpp
+// finds events afresh, the reference the kept search is checked against.
 #pragma once
 
 #include <memory>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -24,21 +26,16 @@ namespace cue_sim
 {
 namespace physics
 {
-/// The table's geometry in the engine's scalar type, as the event search reads it, and the
-/// parts of the core that read it (internal: src/physics/).
+/// The table's geometry in the engine's scalar type, with the boxes the event search culls by:
+/// internal to the physics core (src/physics/engine/table_geometry.hpp), which reads it through
+/// Engine::geometry().
 template <typename S>
 struct TableGeometry;
-template <typename S>
-class CandidateFinder;
-template <typename S>
-class EventResolver;
-template <typename S>
-class EventSearch;
 
 struct EngineLimits
 {
   /// Events a shot may have before the simulation gives up: from one edit of a Simulation (a
-  /// strike, a placement) to the next, or in one call of Engine::advance or simulateToRest. A
+  /// strike, a placement) to the next, or in one call of advance or simulateToRest. A
   /// real 8-ball break has a few hundred; FastFiz stops at 5000.
   long max_events = 20000;
   /// Longest shot [s] simulateToRest() runs (a table without rolling resistance never stops).
@@ -64,21 +61,6 @@ struct EngineLimits
   long collapse_events = 256;
 };
 
-/// Thrown when a shot reaches EngineLimits::max_events; the state is left at the last event.
-class EventLimitError : public std::runtime_error
-{
-public:
-  using std::runtime_error::runtime_error;
-};
-
-template <typename S>
-struct ShotResult
-{
-  std::vector<Event<S>> events;
-  S duration = S(0);     ///< from the strike to the last event [s]
-  bool at_rest = false;  ///< false if max_shot_time was reached first
-};
-
 template <typename S>
 class Engine
 {
@@ -99,21 +81,6 @@ public:
   const BallBallModel<S>& ballBallModel() const { return *ball_ball_; }
   const CushionModel<S>& cushionModel() const { return *cushion_; }
 
-  /// Processes every event with time <= t_end (appending them to `events` if given) and sets
-  /// state.time = t_end. Throws EventLimitError after limits().max_events events. To advance
-  /// the same table again and again, keep a Simulation instead: it keeps its event search.
-  void advance(TableState<S>& state, S t_end, std::vector<Event<S>>* events = nullptr) const;
-
-  /// Advances until no ball moves (or max_shot_time after state.time).
-  ShotResult<S> simulateToRest(TableState<S>& state) const;
-
-  /// The earliest event after state.event_time, or an invalid event if nothing moves: every ball
-  /// and pair looked at afresh (the reference the kept search of a Simulation is checked against).
-  Event<S> nextEvent(const TableState<S>& state) const;
-  /// Processes exactly that event (advancing state.time to it) and returns it; an invalid
-  /// event, and no change, if nothing moves.
-  Event<S> step(TableState<S>& state) const;
-
   /// A ball of the state at time t (>= the state's last event): pure, closed form.
   Ball<S> ballAt(const TableState<S>& state, std::size_t index, S t) const;
   /// Every ball at state.time.
@@ -131,12 +98,11 @@ public:
   /// state.time included), else why not.
   std::string whyNotPlaceable(const TableState<S>& state, const Ball<S>& ball, double tolerance = 1e-9) const;
 
-private:
-  friend class CandidateFinder<S>;
-  friend class EventResolver<S>;
-  friend class EventSearch<S>;
+  /// The table's geometry as the event search and the contacts read it: an internal type, whose
+  /// definition only the physics core sees (the core's own interface, not part of the API).
   const TableGeometry<S>& geometry() const { return *geometry_; }
 
+private:
   std::shared_ptr<const TableModel> table_;
   PhysicsParams<S> params_;
   ModelChoice model_choice_;

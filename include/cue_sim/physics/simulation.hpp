@@ -6,6 +6,7 @@
 #pragma once
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,21 @@ namespace cue_sim
 {
 namespace physics
 {
+/// Thrown when a shot reaches EngineLimits::max_events; the state is left at the last event.
+class EventLimitError : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
+template <typename S>
+struct ShotResult
+{
+  std::vector<Event<S>> events;
+  S duration = S(0);     ///< from the strike to the last event [s]
+  bool at_rest = false;  ///< false if max_shot_time was reached first
+};
+
 /// The search a simulation keeps (internal: src/physics/search/event_search.hpp).
 template <typename S>
 class EventSearch;
@@ -105,6 +121,18 @@ private:
   bool moving_ = false;
   long events_in_shot_ = 0;  ///< since the last edit, for EngineLimits::max_events
 };
+
+/// A Simulation of `state` on `engine` for one call: processes every event with time <= t_end
+/// (appending them to `events` if given) and sets state.time = t_end. Throws EventLimitError
+/// after limits().max_events events, leaving the state at its last event. To advance the same
+/// table again and again, keep a Simulation instead: it keeps its event search.
+template <typename S>
+void advance(const Engine<S>& engine, TableState<S>& state, S t_end, std::vector<Event<S>>* events = nullptr);
+
+/// A Simulation of `state` on `engine` for one call: advances until no ball moves (or for
+/// max_shot_time after state.time).
+template <typename S>
+ShotResult<S> simulateToRest(const Engine<S>& engine, TableState<S>& state);
 
 }  // namespace physics
 }  // namespace cue_sim

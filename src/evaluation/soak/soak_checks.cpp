@@ -6,6 +6,7 @@
 
 #include "cue_sim/evaluation/soak.hpp"
 #include "cue_sim/physics/motion.hpp"
+#include "cue_sim/physics/scan.hpp"
 #include "cue_sim/physics/simulation.hpp"
 
 namespace cue_sim
@@ -190,7 +191,7 @@ void runScanned(const Engine<double>& engine, const TableState<double>& struck, 
   state = struck;
   while (events.size() < count)
   {
-    const Event<double> e = engine.step(state);
+    const Event<double> e = scanStep(engine, state);
     if (!e.valid())
       break;
     events.push_back(e);

@@ -6,96 +6,12 @@
 #include <sstream>
 
 #include "cue_sim/physics/motion.hpp"
-#include "cue_sim/physics/simulation.hpp"
-#include "physics/contacts/event_resolution.hpp"
 #include "physics/engine/table_geometry.hpp"
-#include "physics/search/full_scan.hpp"
 
 namespace cue_sim
 {
 namespace physics
 {
-const char* eventKindName(EventKind kind)
-{
-  switch (kind)
-  {
-    case EventKind::None:
-      return "none";
-    case EventKind::SlideToRoll:
-      return "slide_to_roll";
-    case EventKind::RollToSpin:
-      return "roll_to_spin";
-    case EventKind::RollToStop:
-      return "roll_to_stop";
-    case EventKind::SpinToStop:
-      return "spin_to_stop";
-    case EventKind::SlideToSpin:
-      return "slide_to_spin";
-    case EventKind::SlideToStop:
-      return "slide_to_stop";
-    case EventKind::BallBall:
-      return "ball_ball";
-    case EventKind::BallCushion:
-      return "ball_cushion";
-    case EventKind::BallCircle:
-      return "ball_circle";
-    case EventKind::Pocketed:
-      return "pocketed";
-  }
-  return "unknown";
-}
-
-template <typename S>
-TableGeometry<S>::TableGeometry(const TableModel& table, S R)
-{
-  const S margin = S(kBoxMargin);
-  const Vec2<S> spread(R + margin, R + margin);
-  for (const auto& s : table.segments())
-  {
-    const Vec2<S> a = s.start.cast<S>(), b = s.end.cast<S>();
-    segments.push_back(
-        {a, s.direction.cast<S>(), s.normal.cast<S>(), S(s.length), a.cwiseMin(b) - spread, a.cwiseMax(b) + spread});
-  }
-  for (const auto& c : table.circles())
-  {
-    const Vec2<S> centre = c.centre.cast<S>(), reach = Vec2<S>::Constant(R + S(c.radius) + margin);
-    circles.push_back({centre, S(c.radius), centre - reach, centre + reach});
-  }
-  for (const auto& p : table.pockets())
-  {
-    const Vec2<S> centre = p.centre.cast<S>(), reach = Vec2<S>::Constant(S(p.radius) + margin);
-    pockets.push_back({centre, S(p.radius), centre - reach, centre + reach});
-  }
-  const Vec2<S> half(S(table.clothLength() / 2), S(table.clothWidth() / 2));
-  cloth_low = table.clothCentre().cast<S>() - half;
-  cloth_high = table.clothCentre().cast<S>() + half;
-  // The clear box: the cloth, cut back on each side past every obstacle's box that reaches into
-  // it (the side it reaches in from is the one nearest the box).
-  clear_low = cloth_low;
-  clear_high = cloth_high;
-  const Vec2<S> centre = table.clothCentre().cast<S>();
-  const auto cutBack = [&](const Vec2<S>& low, const Vec2<S>& high) {
-    if ((low.array() > clear_high.array()).any() || (high.array() < clear_low.array()).any())
-      return;
-    // How far the clear box would shrink on each of its four sides to leave the box outside.
-    const S cuts[4] = {high.x() - clear_low.x(), clear_high.x() - low.x(), high.y() - clear_low.y(),
-                       clear_high.y() - low.y()};
-    const int side = static_cast<int>(std::min_element(cuts, cuts + 4) - cuts);
-    if (side == 0)
-      clear_low.x() = std::min(high.x(), centre.x());
-    else if (side == 1)
-      clear_high.x() = std::max(low.x(), centre.x());
-    else if (side == 2)
-      clear_low.y() = std::min(high.y(), centre.y());
-    else
-      clear_high.y() = std::max(low.y(), centre.y());
-  };
-  for (const auto& s : segments)
-    cutBack(s.low, s.high);
-  for (const auto& c : circles)
-    cutBack(c.low, c.high);
-}
-
 template <typename S>
 Engine<S>::Engine(std::shared_ptr<const TableModel> table, const PhysicsParams<S>& params, const ModelChoice& models,
                   const EngineLimits& limits)
@@ -114,61 +30,6 @@ Engine<S>::Engine(std::shared_ptr<const TableModel> table, const PhysicsParams<S
 
 template <typename S>
 Engine<S>::~Engine() = default;
-
-template <typename S>
-void Engine<S>::advance(TableState<S>& state, S t_end, std::vector<Event<S>>* events) const
-{
-  Simulation<S> simulation(*this, std::move(state));
-  try
-  {
-    simulation.advance(t_end, events);
-  }
-  catch (...)
-  {
-    state = std::move(simulation).release();
-    throw;
-  }
-  state = std::move(simulation).release();
-}
-
-template <typename S>
-ShotResult<S> Engine<S>::simulateToRest(TableState<S>& state) const
-{
-  Simulation<S> simulation(*this, std::move(state));
-  ShotResult<S> result;
-  try
-  {
-    result = simulation.runToRest();
-  }
-  catch (...)
-  {
-    state = std::move(simulation).release();
-    throw;
-  }
-  state = std::move(simulation).release();
-  return result;
-}
-
-template <typename S>
-Event<S> Engine<S>::nextEvent(const TableState<S>& state) const
-{
-  return scanNextEvent(*this, state);
-}
-
-template <typename S>
-Event<S> Engine<S>::step(TableState<S>& state) const
-{
-  const Event<S> event = scanNextEvent(*this, state);
-  if (event.valid())
-  {
-    EventContext<S> context;
-    context.index = state.indexOf(event.ball);
-    context.other_index = event.other >= 0 ? state.indexOf(event.other) : -1;
-    resolveEvent(*this, state, event, context);
-    state.time = std::max(state.time, event.time);
-  }
-  return event;
-}
 
 template <typename S>
 Ball<S> Engine<S>::ballAt(const TableState<S>& state, std::size_t index, S t) const
@@ -296,8 +157,6 @@ std::string Engine<S>::whyNotPlaceable(const TableState<S>& state, const Ball<S>
   return {};
 }
 
-template struct TableGeometry<double>;
-template struct TableGeometry<long double>;
 template class Engine<double>;
 template class Engine<long double>;
 

@@ -4,7 +4,8 @@
 
 #include <vector>
 
-#include "cue_sim/physics/engine.hpp"
+#include "cue_sim/physics/table_model.hpp"
+#include "cue_sim/physics/types.hpp"
 
 namespace cue_sim
 {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "cue_sim/physics/simulation.hpp"
 #include "physics/contacts/event_resolution.hpp"
 #include "physics/search/contact_times.hpp"
 

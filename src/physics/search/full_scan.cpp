@@ -1,7 +1,8 @@
-#include "physics/search/full_scan.hpp"
-
+#include <algorithm>
 #include <cmath>
 
+#include "cue_sim/physics/scan.hpp"
+#include "physics/contacts/event_resolution.hpp"
 #include "physics/search/candidates.hpp"
 
 namespace cue_sim
@@ -36,8 +37,25 @@ Event<S> scanNextEvent(const Engine<S>& engine, const TableState<S>& state)
   return found ? finder.eventOf(state, best) : Event<S>();
 }
 
+template <typename S>
+Event<S> scanStep(const Engine<S>& engine, TableState<S>& state)
+{
+  const Event<S> event = scanNextEvent(engine, state);
+  if (event.valid())
+  {
+    EventContext<S> context;
+    context.index = state.indexOf(event.ball);
+    context.other_index = event.other >= 0 ? state.indexOf(event.other) : -1;
+    resolveEvent(engine, state, event, context);
+    state.time = std::max(state.time, event.time);
+  }
+  return event;
+}
+
 template Event<double> scanNextEvent(const Engine<double>&, const TableState<double>&);
 template Event<long double> scanNextEvent(const Engine<long double>&, const TableState<long double>&);
+template Event<double> scanStep(const Engine<double>&, TableState<double>&);
+template Event<long double> scanStep(const Engine<long double>&, TableState<long double>&);
 
 }  // namespace physics
 }  // namespace cue_sim

@@ -213,8 +213,47 @@ void Simulation<S>::refresh()
   moving_ = state_.anyMoving();
 }
 
+template <typename S>
+void advance(const Engine<S>& engine, TableState<S>& state, S t_end, std::vector<Event<S>>* events)
+{
+  Simulation<S> simulation(engine, std::move(state));
+  try
+  {
+    simulation.advance(t_end, events);
+  }
+  catch (...)
+  {
+    state = std::move(simulation).release();
+    throw;
+  }
+  state = std::move(simulation).release();
+}
+
+template <typename S>
+ShotResult<S> simulateToRest(const Engine<S>& engine, TableState<S>& state)
+{
+  Simulation<S> simulation(engine, std::move(state));
+  ShotResult<S> result;
+  try
+  {
+    result = simulation.runToRest();
+  }
+  catch (...)
+  {
+    state = std::move(simulation).release();
+    throw;
+  }
+  state = std::move(simulation).release();
+  return result;
+}
+
 template class Simulation<double>;
 template class Simulation<long double>;
+template void advance(const Engine<double>&, TableState<double>&, double, std::vector<Event<double>>*);
+template void advance(const Engine<long double>&, TableState<long double>&, long double,
+                      std::vector<Event<long double>>*);
+template ShotResult<double> simulateToRest(const Engine<double>&, TableState<double>&);
+template ShotResult<long double> simulateToRest(const Engine<long double>&, TableState<long double>&);
 
 }  // namespace physics
 }  // namespace cue_sim

@@ -18,7 +18,7 @@ std::vector<ShotOutcome<S>> simulateBatch(const Engine<S>& engine, const TableSt
     engine.strike(outcome.state, shots[i].ball_id, shots[i].cue);
     try
     {
-      outcome.result = engine.simulateToRest(outcome.state);
+      outcome.result = simulateToRest(engine, outcome.state);
     }
     catch (const EventLimitError& e)
     {
