@@ -6,6 +6,7 @@
 #include "bench_scenes.hpp"
 #include "cue_sim/camera/exposure.hpp"
 #include "cue_sim/camera/table_camera.hpp"
+#include "cue_sim/session/live_table.hpp"
 
 namespace
 {
@@ -39,7 +40,8 @@ void CameraFrame1280x800(benchmark::State& bench)
   std::size_t instants = 0;
   for (auto _ : bench)
   {
-    const cue_sim::camera::Exposure exposure = cue_sim::camera::exposureOf(table, after, kExposure);
+    const cue_sim::camera::Exposure exposure =
+        cue_sim::camera::exposureOf(table.motion(), table.clock(), after, kExposure);
     instants = exposure.instants.size();
     const cue_sim::camera::Frame frame = camera.render(exposure);
     benchmark::DoNotOptimize(frame.image.data);

@@ -32,13 +32,13 @@ void LiveTableBreakTicks(benchmark::State& bench)
     bench.ResumeTiming();
     cue_sim::session::Stamp now = 0;
     table.strike(shot, now);
-    while (!table.atRest())
+    while (!table.motion().atRest())
     {
       now += kTick;
       table.advanceTo(now);
       ++ticks;
     }
-    benchmark::DoNotOptimize(table.orientations().data());
+    benchmark::DoNotOptimize(table.motion().orientations().data());
   }
   bench.counters["ticks_per_break"] = benchmark::Counter(static_cast<double>(ticks) / bench.iterations());
 }

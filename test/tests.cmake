@@ -50,7 +50,7 @@ target_compile_definitions(scene_tests PRIVATE
   CUE_SIM_SELF_PLAY="$<TARGET_FILE:self_play>")
 add_dependencies(scene_tests simulate self_play)
 
-catkin_add_gtest(session_tests test/session/test_live_table.cpp test/session/test_live_game.cpp
+catkin_add_gtest(session_tests test/session/test_live_table.cpp test/session/test_live_game.cpp test/session/test_live_parts.cpp test/session/test_shot_preview.cpp
   test/session/test_ball_orientations.cpp)
 target_link_libraries(session_tests cue_sim_session cue_sim_table_description gtest_main)
 

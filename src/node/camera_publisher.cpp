@@ -100,7 +100,7 @@ void CameraPublisher::take(const session::LiveTable& table, const ros::Time& sta
       next_due_ = stamp;  // the first frame, or after a gap: the grid starts again here
     while (next_due_ <= stamp || (next_due_ - stamp).toSec() < period / 2)
       next_due_ += ros::Duration(period);
-    job_.emplace(Job{table, stamp});
+    job_.emplace(Job{table.motion(), table.clock(), stamp});
   }
   wake_.notify_one();
 }
@@ -173,14 +173,14 @@ camera::Pose CameraPublisher::lookUpPose(const physics::TableModel& table)
   }
 }
 
-camera::TableCamera& CameraPublisher::cameraFor(const session::LiveTable& table)
+camera::TableCamera& CameraPublisher::cameraFor(const physics::Engine<double>& engine)
 {
-  const auto& p = table.engine().params();
+  const auto& p = engine.params();
   if (!camera_ || camera_radius_ != p.ball_radius || camera_cushion_ != p.cushion_height)
   {
     camera::CameraOptions options;
     options.noise_stddev = parameters_.noise;
-    camera_.emplace(table.table(), p.ball_radius, p.cushion_height, intrinsics_, lookUpPose(table.table()), options);
+    camera_.emplace(engine.table(), p.ball_radius, p.cushion_height, intrinsics_, lookUpPose(engine.table()), options);
     camera_radius_ = p.ball_radius;
     camera_cushion_ = p.cushion_height;
   }
@@ -189,8 +189,8 @@ camera::TableCamera& CameraPublisher::cameraFor(const session::LiveTable& table)
 
 void CameraPublisher::photograph(Job& job)
 {
-  camera::TableCamera& camera = cameraFor(job.table);
-  camera.setPose(lookUpPose(job.table.table()));
+  camera::TableCamera& camera = cameraFor(job.balls.engine());
+  camera.setPose(lookUpPose(job.balls.engine().table()));
   const ros::Duration half(parameters_.exposure / 2);
   const session::Stamp start = static_cast<session::Stamp>(job.stamp.toNSec());
   const ros::Time stamp = job.stamp + half;  // the middle of the exposure
@@ -199,7 +199,7 @@ void CameraPublisher::photograph(Job& job)
   std::vector<camera::BallPose> middle;
   if (pixels)
   {
-    const camera::Exposure exposure = camera::exposureOf(std::move(job.table), start, parameters_.exposure);
+    const camera::Exposure exposure = camera::exposureOf(std::move(job.balls), job.clock, start, parameters_.exposure);
     const camera::Intrinsics& k = camera.intrinsics();
     image_.data.resize(static_cast<std::size_t>(k.width) * k.height * 3);
     cv::Mat view(k.height, k.width, CV_8UC3, image_.data.data());
@@ -208,8 +208,8 @@ void CameraPublisher::photograph(Job& job)
   }
   else
   {
-    job.table.advanceTo(static_cast<session::Stamp>(stamp.toNSec()));
-    middle = camera::posesOf(job.table);
+    camera::advanceTo(job.balls, job.clock, static_cast<session::Stamp>(stamp.toNSec()));
+    middle = camera::posesOf(job.balls);
     frame.balls = camera.groundTruth(middle);
   }
 

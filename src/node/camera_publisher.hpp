@@ -41,9 +41,11 @@ public:
   static camera::Pose poseOf(const CameraParameters& parameters);
 
 private:
+  /// What a frame is drawn from: the live table's balls and clock as of `stamp`, copied.
   struct Job
   {
-    session::LiveTable table;
+    session::LiveBalls balls;
+    session::TableClock clock;
     ros::Time stamp;
   };
   void loop();
@@ -53,7 +55,7 @@ private:
   camera::Pose lookUpPose(const physics::TableModel& table);
 
   /// The renderer for this table and ball size, made anew when the physics changed them.
-  camera::TableCamera& cameraFor(const session::LiveTable& table);
+  camera::TableCamera& cameraFor(const physics::Engine<double>& engine);
 
   CameraParameters parameters_;
   std::string table_frame_;

@@ -46,7 +46,7 @@ GameState toGameStateMsg(const session::LiveTable& table, const ros::Time& stamp
   msg.called_ball = -1;
   msg.winner = -1;
   msg.last_ruling = toRulingMsg(game::Ruling(), false);
-  const game::GamePlay* play = table.game();
+  const game::GamePlay* play = table.game().play();
   msg.active = play != nullptr;
   if (!play)
     return msg;
@@ -61,7 +61,7 @@ GameState toGameStateMsg(const session::LiveTable& table, const ros::Time& stamp
   msg.turn = state.turn;
   msg.break_shot = state.break_shot;
   msg.push_out_allowed = state.push_out_allowed;
-  msg.push_out_called = table.pushOutCalled();
+  msg.push_out_called = table.game().pushOutCalled();
   const std::vector<int> legal = play->legalFirst();
   msg.legal_first.assign(legal.begin(), legal.end());
   msg.called_ball = state.called_ball;
@@ -69,20 +69,20 @@ GameState toGameStateMsg(const session::LiveTable& table, const ros::Time& stamp
     msg.called_pocket = table.table().pockets()[static_cast<std::size_t>(state.called_pocket)].name;
   msg.ball_in_hand = inHandName(state.ball_in_hand);
   Eigen::Vector2d low, high;
-  if (!table.pendingTurn() &&
+  if (!table.game().pendingTurn() &&
       game::inHandRegion(table.table(), table.engine().params().ball_radius, state.ball_in_hand, low, high))
   {
     msg.place_min = pointAt(low);
     msg.place_max = pointAt(high);
   }
   msg.shots = state.shots;
-  msg.shot_in_progress = table.pendingTurn().has_value();
+  msg.shot_in_progress = table.game().pendingTurn().has_value();
   msg.over = state.over;
   msg.winner = state.winner;
-  if (table.pendingTurn())
-    msg.last_ruling = toRulingMsg(table.pendingTurn()->ruling, true);
-  else if (table.lastTurn())
-    msg.last_ruling = toRulingMsg(table.lastTurn()->ruling, true);
+  if (table.game().pendingTurn())
+    msg.last_ruling = toRulingMsg(table.game().pendingTurn()->ruling, true);
+  else if (table.game().lastTurn())
+    msg.last_ruling = toRulingMsg(table.game().lastTurn()->ruling, true);
   return msg;
 }
 

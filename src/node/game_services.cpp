@@ -23,9 +23,9 @@ GameServices::GameServices(ros::NodeHandle& private_node, SharedTable& shared, c
 
 void GameServices::publishIfChanged(const session::LiveTable& table, const ros::Time& stamp)
 {
-  if (table.gameVersion() == published_)
+  if (table.game().version() == published_)
     return;
-  published_ = table.gameVersion();
+  published_ = table.game().version();
   const GameState state = toGameStateMsg(table, stamp, parameters_.table_frame);
   state_publisher_.publish(state);
   marker_publisher_.publish(gameMarkers(state, table.table(), table.engine().params().cushion_height));

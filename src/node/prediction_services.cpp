@@ -89,8 +89,8 @@ bool PredictionServices::onPredict(Predict::Request& request, Predict::Response&
   {
     std::lock_guard<std::mutex> lock(shared_.mutex);
     why = shared_.live->predictionStart(toBallInputs(request.balls), toStamp(shared_.now()), start);
-    layout = shared_.live->layoutVersion();
-    strikes = shared_.live->strikeCount();
+    layout = shared_.live->motion().layoutVersion();
+    strikes = shared_.live->motion().strikeCount();
   }
   if (!why.empty())
   {
@@ -98,8 +98,9 @@ bool PredictionServices::onPredict(Predict::Request& request, Predict::Response&
     response.prediction.message = why;
     return true;
   }
+  // The shot runs once: its trajectories draw the preview.
   const session::PredictionOptions options{request.sample_period, request.noise ? &parameters_.table.noise : nullptr,
-                                           request.seed};
+                                           request.seed, true};
   const session::ShotPrediction prediction =
       session::predictShot(*start.engine, start.table, toSessionShot(request.shot), options, parameters_.table.limits);
   response.prediction =
@@ -109,12 +110,12 @@ bool PredictionServices::onPredict(Predict::Request& request, Predict::Response&
   response.prediction.ruling = toRulingMsg(ruling, refereed);
   if (prediction.success)
   {
-    const visualization_msgs::MarkerArray preview = previewMarkers(*start.engine, start.table, request.shot.ball_id,
-                                                                   prediction.executed.strike, parameters_.table_frame);
+    const visualization_msgs::MarkerArray preview =
+        previewMarkers(session::previewPaths(prediction, start.engine->params()), parameters_.table_frame);
     // Drawn only if the table has not moved on meanwhile (the publishing thread clears a preview
     // when it does, under the same lock).
     std::lock_guard<std::mutex> lock(shared_.mutex);
-    if (shared_.live->layoutVersion() == layout && shared_.live->strikeCount() == strikes)
+    if (shared_.live->motion().layoutVersion() == layout && shared_.live->motion().strikeCount() == strikes)
       preview_publisher_.publish(preview);
   }
   return true;

@@ -1,10 +1,7 @@
 #include "node/shot_markers.hpp"
 
 #include <Eigen/Geometry>
-#include <algorithm>
-#include <cmath>
 
-#include "cue_sim/physics/simulation.hpp"
 #include "node/ros_conversions.hpp"
 #include "node/table_markers.hpp"
 
@@ -46,63 +43,31 @@ visualization_msgs::MarkerArray clearedPreview()
   return out;
 }
 
-visualization_msgs::MarkerArray previewMarkers(const physics::Engine<double>& engine,
-                                               const physics::TableState<double>& start, int ball_id,
-                                               const physics::CueStrike<double>& strike, const std::string& frame)
+visualization_msgs::MarkerArray previewMarkers(const std::vector<session::PreviewPath>& paths, const std::string& frame)
 {
   visualization_msgs::MarkerArray out = clearedPreview();
-
-  physics::TableState<double> state = start;
-  engine.strike(state, ball_id, strike);
-  physics::TableState<double> to_rest = state;
-  const physics::ShotResult<double> result = simulateToRest(engine, to_rest);
-  // Points at the sampling period and at every event, so that each bounce is a corner.
-  const double period = std::max(0.02, result.duration / 2000);
-  std::vector<double> times;
-  for (double t = state.time; t < state.time + result.duration; t += period)
-    times.push_back(t);
-  for (const auto& e : result.events)
-    times.push_back(e.time);
-  times.push_back(state.time + result.duration);
-  std::sort(times.begin(), times.end());
-
-  std::vector<Marker> paths(state.balls.size());
-  for (std::size_t i = 0; i < state.balls.size(); ++i)
+  for (const session::PreviewPath& path : paths)
   {
-    Marker& m = paths[i];
+    Marker m;
     m.header.frame_id = frame;
     m.ns = "preview";
-    m.id = state.balls[i].id;
+    m.id = path.id;
     m.type = Marker::LINE_STRIP;
     m.action = Marker::ADD;
     m.pose.orientation.w = 1.0;
     m.scale.x = 0.004;
-    m.color = poolColour(state.balls[i].id);
+    m.color = poolColour(path.id);
     m.color.a = 0.9f;
-  }
-  physics::Simulation<double> simulation(engine, state);
-  for (double t : times)
-  {
-    simulation.advance(t);
-    const auto balls = simulation.snapshot();
-    for (std::size_t i = 0; i < balls.size(); ++i)
-      if (balls[i].inPlay())
-      {
-        geometry_msgs::Point p;
-        p.x = balls[i].r.x();
-        p.y = balls[i].r.y();
-        p.z = 0.002;  // just above the cloth
-        paths[i].points.push_back(p);
-      }
-  }
-  for (auto& m : paths)
-  {
-    // Only the balls that move have a path worth drawing.
-    const auto moved = std::any_of(m.points.begin(), m.points.end(), [&](const geometry_msgs::Point& p) {
-      return p.x != m.points.front().x || p.y != m.points.front().y;
-    });
-    if (moved)
-      out.markers.push_back(m);
+    m.points.reserve(path.points.size());
+    for (const Eigen::Vector2d& point : path.points)
+    {
+      geometry_msgs::Point p;
+      p.x = point.x();
+      p.y = point.y();
+      p.z = 0.002;  // just above the cloth
+      m.points.push_back(p);
+    }
+    out.markers.push_back(m);
   }
   return out;
 }

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "cue_sim/physics/cue_aim.hpp"
-#include "cue_sim/physics/engine.hpp"
+#include "cue_sim/session/shot_preview.hpp"
 
 namespace cue_sim
 {
@@ -15,12 +15,10 @@ namespace cue_sim
 visualization_msgs::Marker cueStickMarker(const physics::CueStick& cue, const std::string& frame,
                                           const ros::Time& stamp, double lifetime);
 
-/// DELETEALL, then one line strip per ball that moves, in its colour, through its positions
-/// from the strike to rest (`start` struck by `ball_id` with `strike`; sampled so that no path
-/// has more than about 2000 points, and at every event).
-visualization_msgs::MarkerArray previewMarkers(const physics::Engine<double>& engine,
-                                               const physics::TableState<double>& start, int ball_id,
-                                               const physics::CueStrike<double>& strike, const std::string& frame);
+/// DELETEALL, then one line strip per path, in its ball's colour (session::previewPaths: drawn
+/// from a prediction's own trajectories, without running the shot again).
+visualization_msgs::MarkerArray previewMarkers(const std::vector<session::PreviewPath>& paths,
+                                               const std::string& frame);
 
 /// What takes a preview off the screen: one DELETEALL.
 visualization_msgs::MarkerArray clearedPreview();

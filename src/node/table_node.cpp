@@ -163,7 +163,7 @@ void TableNode::run()
     bool paused = false;
     {
       std::lock_guard<std::mutex> lock(shared_.mutex);
-      paused = shared_.live->paused();
+      paused = shared_.live->clock().paused();
     }
     const double factor = paused && shared_.clock_factor == 0 ? 1.0 : shared_.clock_factor.load();
     advanceSimClock(factor == 0 ? ros::Duration(period.toSec()) : ros::Duration((wall - last).toSec() * factor));
@@ -214,15 +214,15 @@ void TableNode::tick()
       return;  // tf must never see the same stamp twice (TF_REPEATED_DATA)
     session::LiveTable& table = *shared_.live;
     table.advanceTo(toStamp(stamp), &events);
-    balls = table.balls();
-    orientations = table.orientations();
-    at_rest = table.atRest();
-    layout = table.layoutVersion();
-    if (layout != preview_layout_ || table.strikeCount() != preview_strikes_)
+    balls = table.motion().balls();
+    orientations = table.motion().orientations();
+    at_rest = table.motion().atRest();
+    layout = table.motion().layoutVersion();
+    if (layout != preview_layout_ || table.motion().strikeCount() != preview_strikes_)
     {
       predictions_->clearPreview();  // the table moved on: the preview is stale
       preview_layout_ = layout;
-      preview_strikes_ = table.strikeCount();
+      preview_strikes_ = table.motion().strikeCount();
     }
     if (layout != markers_drawn_ || ros::WallTime::now() - markers_sent_ > kMarkerRefresh)
       publishMarkers(table);
@@ -258,10 +258,10 @@ void TableNode::publishMarkers(const session::LiveTable& table)
 {
   const physics::PhysicsParams<double>& params = table.engine().params();
   physics::TableState<double> state;
-  state.balls = table.balls();
+  state.balls = table.motion().balls();
   marker_publisher_.publish(tableMarkers(table.table(), state, params.ball_radius, params.cushion_height,
                                          {parameters_.table_frame, parameters_.ball_frame_prefix}));
-  markers_drawn_ = table.layoutVersion();
+  markers_drawn_ = table.motion().layoutVersion();
   markers_sent_ = ros::WallTime::now();
 }
 

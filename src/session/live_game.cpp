@@ -1,17 +1,12 @@
-// A game on the live table: started, called and placed through the game, struck like any shot
-// but refereed, and made ready for the next shot when its balls rest. The game (game::GamePlay)
-// keeps the rules and whose turn it is; the live table keeps the balls and runs the shot in
-// real time.
-#include <sstream>
+#include "cue_sim/session/live_game.hpp"
 
-#include "cue_sim/session/live_table.hpp"
+#include <algorithm>
 
 namespace cue_sim
 {
 namespace session
 {
-
-std::string LiveTable::whyNotFreeEdit() const
+std::string LiveGame::whyNotFreeEdit() const
 {
   if (!game_)
     return "";
@@ -20,18 +15,19 @@ std::string LiveTable::whyNotFreeEdit() const
          "new game, ~end_game for free play)";
 }
 
-std::string LiveTable::whyNotGameShot(const Shot& shot) const
+std::string LiveGame::whyNotShot(const Shot& shot, bool at_rest) const
 {
   if (const std::string over = game_->whyOver(); !over.empty())
     return over + " (~start_game for another, ~end_game for free play)";
   if (shot.ball_id != 0)
     return "ball_id must be 0 in a game: only the cue ball is struck, got " + std::to_string(shot.ball_id);
-  if (!live_.atRest() || pending_turn_)
+  if (!at_rest || pending_turn_)
     return "balls are still moving: a game shot is played from rest";
   return "";
 }
 
-Outcome LiveTable::startGame(const GameRequest& request, Stamp now)
+std::string LiveGame::whyNotStart(const GameRequest& request, const physics::Engine<double>& engine,
+                                  std::optional<game::GamePlay>& started) const
 {
   const std::vector<std::string> names = game::rulesNames();
   if (std::find(names.begin(), names.end(), request.rules) == names.end())
@@ -39,124 +35,107 @@ Outcome LiveTable::startGame(const GameRequest& request, Stamp now)
     std::string known;
     for (const auto& n : names)
       known += (known.empty() ? "" : ", ") + n;
-    return Outcome::refused("rules must be one of " + known + "; got '" + request.rules + "'");
+    return "rules must be one of " + known + "; got '" + request.rules + "'";
   }
   if (request.breaker != 0 && request.breaker != 1)
-    return Outcome::refused("first_player must be 0 or 1, got " + std::to_string(request.breaker));
+    return "first_player must be 0 or 1, got " + std::to_string(request.breaker);
   for (std::size_t i = 0; i < request.players.size(); ++i)
     if (request.players[i].empty())
-      return Outcome::refused("players[" + std::to_string(i) + "] must not be empty");
-  if (table().pockets().empty())
-    return Outcome::refused("a game needs a table with pockets; '" + table().name() + "' has none");
+      return "players[" + std::to_string(i) + "] must not be empty";
+  const physics::TableModel& table = engine.table();
+  if (table.pockets().empty())
+    return "a game needs a table with pockets; '" + table.name() + "' has none";
   physics::TableState<double> position;
   if (!request.balls.empty())
   {
-    std::string why = stateFromInputs(request.balls, table(), engine_->params().ball_radius, position);
+    std::string why = stateFromInputs(request.balls, table, engine.params().ball_radius, position);
     if (why.empty() && position.anyMoving())
       why = "balls: a game is played from rest; every ball must be at rest";
     if (!why.empty())
-      return Outcome::refused(why);
+      return why;
   }
-  game::GamePlay started(*engine_, request.rules, request.players, game::gameRack(request.seed), request.breaker);
+  started.emplace(engine, request.rules, request.players, game::gameRack(request.seed), request.breaker);
   if (!request.balls.empty())
-    if (const std::string why = started.setPosition(position, false); !why.empty())
-      return Outcome::refused("balls: " + why);
-  advanceTo(now);
+    if (const std::string why = started->setPosition(position, false); !why.empty())
+    {
+      started.reset();
+      return "balls: " + why;
+    }
+  return "";
+}
+
+void LiveGame::start(game::GamePlay started)
+{
   game_.emplace(std::move(started));
   pending_turn_.reset();
   last_turn_.reset();
   push_out_called_ = false;
-  ++game_version_;
-  startFrom(physics::atTimeZero(game_->table()), now);
-  const game::GameState& state = game_->state();
-  return Outcome::done("started " + request.rules + ": " + state.players[0] + " against " + state.players[1] + ", " +
-                       state.players[static_cast<std::size_t>(state.turn)] +
-                       (state.break_shot ? " to break" : " to shoot"));
+  ++version_;
 }
 
-Outcome LiveTable::endGame(Stamp now)
+std::string LiveGame::end()
 {
-  if (!game_)
-    return Outcome::refused("no game is on");
-  advanceTo(now);  // a shot still rolling rolls on, in free play, unrefereed
-  const std::string rules = game_->state().rules;
+  const std::string rules = game_ ? game_->state().rules : "";
   game_.reset();
   pending_turn_.reset();
   push_out_called_ = false;
-  ++game_version_;
-  return Outcome::done("ended the game of " + rules + "; free play, the balls where they are");
+  ++version_;
+  return rules;
 }
 
-Outcome LiveTable::placeCueBall(const Eigen::Vector2d& p, Stamp now)
+std::string LiveGame::placeCueBall(const Eigen::Vector2d& p, physics::Ball<double>& cue)
 {
-  if (!game_)
-    return Outcome::refused("no game is on: ~place_ball moves any ball in free play");
-  advanceTo(now);
   if (pending_turn_)
-    return Outcome::refused("balls are still moving: the cue ball is placed once they rest");
+    return "balls are still moving: the cue ball is placed once they rest";
   if (const std::string over = game_->whyOver(); !over.empty())
-    return Outcome::refused(over);
+    return over;
   if (const std::string why = game_->placeCueBall(p); !why.empty())
-    return Outcome::refused(why);
-  restartAtRest(now);
-  physics::Ball<double> cue = game_->table().balls[static_cast<std::size_t>(game_->table().indexOf(0))];
-  live_.place(cue);
-  balls_at_rest_ = false;
-  ++layout_version_;
-  ++game_version_;
-  advanceTo(now);
-  std::ostringstream message;
-  message << "cue ball placed at (" << p.x() << ", " << p.y() << ")";
-  return Outcome::done(message.str());
+    return why;
+  cue = game_->table().balls[static_cast<std::size_t>(game_->table().indexOf(0))];
+  ++version_;
+  return "";
 }
 
-Outcome LiveTable::callShot(const GameCall& call, Stamp now)
+std::string LiveGame::call(const GameCall& call, const physics::TableModel& table)
 {
-  if (!game_)
-    return Outcome::refused("no game is on: ~start_game first");
-  advanceTo(now);
   if (pending_turn_)
-    return Outcome::refused("balls are still moving: call the next shot once they rest");
+    return "balls are still moving: call the next shot once they rest";
   if (const std::string over = game_->whyOver(); !over.empty())
-    return Outcome::refused(over);
+    return over;
   int pocket = -1;
-  if (const std::string why = table().whyNoPocket(call.pocket, pocket); !why.empty())
-    return Outcome::refused(why);
+  if (const std::string why = table.whyNoPocket(call.pocket, pocket); !why.empty())
+    return why;
   if (call.push_out && !game_->state().push_out_allowed)
-    return Outcome::refused(
-        "push_out: a push-out may be declared only on the shot right after a legal 9-ball break (WPA 9-ball 2.4)");
+    return "push_out: a push-out may be declared only on the shot right after a legal 9-ball break (WPA 9-ball 2.4)";
   if (const std::string why = game_->call(call.ball, pocket); !why.empty())
-    return Outcome::refused(why);
+    return why;
   push_out_called_ = call.push_out;
-  ++game_version_;
-  std::ostringstream message;
-  message << (call.ball >= 0 ? "called ball " + std::to_string(call.ball) : std::string("no ball called"));
-  if (pocket >= 0)
-    message << " in " << call.pocket;
-  if (call.push_out)
-    message << ", a push-out";
-  return Outcome::done(message.str());
+  ++version_;
+  return "";
 }
 
-bool predictedRuling(const PredictionStart& start, const ShotPrediction& prediction, game::Ruling& ruling)
+const game::Ruling& LiveGame::struck(const physics::CueStrike<double>& strike,
+                                     const std::vector<physics::Event<double>>& events)
 {
-  if (!start.game || !prediction.success || prediction.executed.ball_id != 0 || start.game->state().over)
-    return false;
-  ruling = start.game->judge(prediction.executed.strike, start.push_out, prediction.events).ruling;
-  return true;
+  pending_turn_ = game_->judge(strike, push_out_called_, events);
+  ++version_;
+  return pending_turn_->ruling;
 }
 
-void LiveTable::finishGameShot(Stamp now)
+const physics::TableState<double>& LiveGame::finishShot(const physics::TableState<double>& at_rest)
 {
-  game_->finish(*pending_turn_, live_.state());
+  game_->finish(*pending_turn_, at_rest);
   last_turn_ = std::move(pending_turn_);
   pending_turn_.reset();
   push_out_called_ = false;
-  clock_.restart(now);
-  live_.reset(physics::atTimeZero(game_->table()));
-  balls_at_rest_ = false;
-  ++layout_version_;
-  ++game_version_;
+  ++version_;
+  return game_->table();
+}
+
+void LiveGame::setEngine(const physics::Engine<double>& engine)
+{
+  if (game_)
+    game_->setEngine(engine);
 }
 
 }  // namespace session

@@ -1,8 +1,10 @@
 #include "cue_sim/session/shot_prediction.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
+#include "cue_sim/physics/motion.hpp"
 #include "cue_sim/physics/simulation.hpp"
 
 namespace cue_sim
@@ -18,8 +20,55 @@ struct RunShot
   physics::TableState<double> struck;
 };
 
+bool sameState(const physics::Ball<double>& a, const physics::Ball<double>& b)
+{
+  return a.time == b.time && a.motion == b.motion && a.r == b.r && a.v == b.v && a.w == b.w && a.pocket == b.pocket;
+}
+
+/// A new piece for every ball the event at `time` changed.
+void recordChanges(const physics::TableState<double>& state, double time, std::vector<BallTrajectory>& trajectories)
+{
+  for (std::size_t i = 0; i < state.balls.size(); ++i)
+    if (!sameState(state.balls[i], trajectories[i].pieces.back().ball))
+      trajectories[i].pieces.push_back({time, state.balls[i]});
+}
+
+/// simulateToRest, event by event, keeping each ball's trajectory: the same events and state.
+physics::ShotResult<double> runRecording(const physics::Engine<double>& engine, physics::TableState<double>& state,
+                                         std::vector<BallTrajectory>& trajectories)
+{
+  trajectories.clear();
+  for (const auto& b : state.balls)
+    trajectories.push_back({b.id, {{state.time, b}}});
+  physics::Simulation<double> simulation(engine, std::move(state));
+  const double start = simulation.time(), end = start + engine.limits().max_shot_time;
+  physics::ShotResult<double> result;
+  try
+  {
+    while (!simulation.atRest())
+    {
+      const physics::Event<double> event = simulation.step(end);
+      if (!event.valid())
+        break;
+      result.events.push_back(event);
+      recordChanges(simulation.state(), event.time, trajectories);
+    }
+    result.at_rest = simulation.atRest();
+    if (!result.at_rest)
+      simulation.advance(end);  // stopped by max_shot_time, as simulateToRest is
+  }
+  catch (...)
+  {
+    state = std::move(simulation).release();
+    throw;
+  }
+  result.duration = simulation.time() - start;
+  state = std::move(simulation).release();
+  return result;
+}
+
 RunShot runToRest(const physics::Engine<double>& engine, const physics::TableState<double>& start, const Shot& shot,
-                  const PredictionOptions& options)
+                  const PredictionOptions& options, bool record)
 {
   RunShot run;
   ShotPrediction& prediction = run.prediction;
@@ -40,7 +89,7 @@ RunShot runToRest(const physics::Engine<double>& engine, const physics::TableSta
   physics::ShotResult<double> result;
   try
   {
-    result = simulateToRest(engine, state);
+    result = record ? runRecording(engine, state, prediction.trajectories) : simulateToRest(engine, state);
   }
   catch (const physics::EventLimitError& e)
   {
@@ -76,8 +125,25 @@ std::size_t sampleCount(const ShotPrediction& prediction, double period)
   return static_cast<std::size_t>(std::floor(prediction.time_to_rest / period)) + 1;
 }
 
-/// Samples the shot along its own trajectories: advancing in steps processes the same events
-/// as the run to rest, and the search is kept from sample to sample.
+/// Samples the shot from its balls' trajectories, kept as it ran: closed form, no simulation.
+void samplesOfTrajectories(const physics::PhysicsParams<double>& params, double strike_time, double period,
+                           ShotPrediction& prediction)
+{
+  const std::size_t count = sampleCount(prediction, period);
+  prediction.samples.reserve(count);
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    const double t = strike_time + static_cast<double>(k) * period;
+    std::vector<physics::Ball<double>> sample;
+    sample.reserve(prediction.trajectories.size());
+    for (const BallTrajectory& trajectory : prediction.trajectories)
+      sample.push_back(trajectory.at(t, params));
+    prediction.samples.push_back(std::move(sample));
+  }
+}
+
+/// Samples the shot by running it again: advancing in steps processes the same events as the run
+/// to rest, and the search is kept from sample to sample (a batch, which keeps no trajectories).
 void takeSamples(const physics::Engine<double>& engine, const physics::TableState<double>& struck, double period,
                  ShotPrediction& prediction)
 {
@@ -91,6 +157,15 @@ void takeSamples(const physics::Engine<double>& engine, const physics::TableStat
   }
 }
 }  // namespace
+
+physics::Ball<double> BallTrajectory::at(double t, const physics::PhysicsParams<double>& params) const
+{
+  // The last piece that starts at or before t.
+  const auto after = std::upper_bound(pieces.begin(), pieces.end(), t,
+                                      [](double time, const Piece& piece) { return time < piece.start; });
+  const Piece& piece = after == pieces.begin() ? pieces.front() : *(after - 1);
+  return physics::evolve(piece.ball, t, params);
+}
 
 std::size_t ShotPrediction::replyBytes() const
 {
@@ -113,7 +188,7 @@ std::string whyBadSamplePeriod(double period)
 ShotPrediction predictShot(const physics::Engine<double>& engine, const physics::TableState<double>& start,
                            const Shot& shot, const PredictionOptions& options, const PredictionLimits& limits)
 {
-  RunShot run = runToRest(engine, start, shot, options);
+  RunShot run = runToRest(engine, start, shot, options, options.trajectories || options.sample_period > 0);
   ShotPrediction& prediction = run.prediction;
   const std::size_t count = sampleCount(prediction, options.sample_period);
   if (count > limits.max_samples_per_shot)
@@ -125,7 +200,9 @@ ShotPrediction predictShot(const physics::Engine<double>& engine, const physics:
     return prediction;
   }
   if (count > 0)
-    takeSamples(engine, run.struck, options.sample_period, prediction);
+    samplesOfTrajectories(engine.params(), run.struck.time, options.sample_period, prediction);
+  if (!options.trajectories)
+    prediction.trajectories.clear();
   return prediction;
 }
 
@@ -153,7 +230,7 @@ std::vector<ShotPrediction> predictBatch(const physics::Engine<double>& engine,
   pool.parallelFor(shots.size(), [&](std::size_t i) {
     PredictionOptions own = options;
     own.seed = options.seed + i;
-    runs[i] = runToRest(engine, start, shots[i], own);
+    runs[i] = runToRest(engine, start, shots[i], own, false);
   });
   std::size_t samples = 0, bytes = 0;
   for (RunShot& run : runs)

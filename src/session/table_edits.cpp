@@ -1,43 +1,57 @@
-// What is on the live table: racks, the last rack again, the whole table replaced, one ball
-// placed, moved or removed. Each request is checked in full before anything changes.
+#include "cue_sim/session/table_edits.hpp"
+
 #include <algorithm>
 #include <sstream>
 
 #include "cue_sim/physics/rack.hpp"
-#include "cue_sim/session/live_table.hpp"
+#include "cue_sim/session/live_balls.hpp"
 
 namespace cue_sim
 {
 namespace session
 {
-std::string LiveTable::whyNotRack(const RackRequest& request, physics::TableState<double>& rack) const
+namespace
 {
-  const double R = engine_->params().ball_radius;
-  std::ostringstream why;
-  if (!(request.jitter >= 0 && request.jitter <= options_.rack_gap / 2))
+/// The balls of a custom rack, each checked as a ball a request gives.
+std::string customRack(const RackRequest& request, const physics::Engine<double>& engine,
+                       physics::TableState<double>& rack)
+{
+  const double R = engine.params().ball_radius;
+  if (request.ids.size() != request.positions.size())
+    return "ids and positions must have the same length (got " + std::to_string(request.ids.size()) + " and " +
+           std::to_string(request.positions.size()) + ")";
+  if (request.jitter != 0)
+    return "jitter is for the standard layouts, not 'custom'";
+  for (std::size_t i = 0; i < request.ids.size(); ++i)
   {
-    why << "jitter must be in [0, rack_gap / 2] = [0, " << options_.rack_gap / 2 << "] m, got " << request.jitter;
+    BallInput input;
+    input.id = request.ids[i];
+    input.position = physics::Vec3<double>(request.positions[i].x(), request.positions[i].y(), R);
+    physics::Ball<double> b;
+    const std::string bad = ballFromInput(input, "balls[" + std::to_string(i) + "]", engine.table(), R, b);
+    if (!bad.empty())
+      return bad;
+    rack.balls.push_back(b);
+  }
+  return "";
+}
+}  // namespace
+
+std::string TableEdits::whyNotRack(const RackRequest& request, const physics::Engine<double>& engine,
+                                   physics::TableState<double>& rack) const
+{
+  const double R = engine.params().ball_radius;
+  std::ostringstream why;
+  if (!(request.jitter >= 0 && request.jitter <= rack_gap_ / 2))
+  {
+    why << "jitter must be in [0, rack_gap / 2] = [0, " << rack_gap_ / 2 << "] m, got " << request.jitter;
     return why.str();
   }
   rack = physics::TableState<double>();
   if (request.layout == "custom")
   {
-    if (request.ids.size() != request.positions.size())
-      return "ids and positions must have the same length (got " + std::to_string(request.ids.size()) + " and " +
-             std::to_string(request.positions.size()) + ")";
-    if (request.jitter != 0)
-      return "jitter is for the standard layouts, not 'custom'";
-    for (std::size_t i = 0; i < request.ids.size(); ++i)
-    {
-      BallInput input;
-      input.id = request.ids[i];
-      input.position = physics::Vec3<double>(request.positions[i].x(), request.positions[i].y(), R);
-      physics::Ball<double> b;
-      const std::string bad = ballFromInput(input, "balls[" + std::to_string(i) + "]", table(), R, b);
-      if (!bad.empty())
-        return bad;
-      rack.balls.push_back(b);
-    }
+    if (const std::string bad = customRack(request, engine, rack); !bad.empty())
+      return bad;
   }
   else
   {
@@ -47,109 +61,56 @@ std::string LiveTable::whyNotRack(const RackRequest& request, physics::TableStat
     if (std::find(names.begin(), names.end(), request.layout) == names.end())
       return "layout must be one of eight, nine, empty, custom; got '" + request.layout + "'";
     physics::RackOptions options;
-    options.gap = options_.rack_gap;
+    options.gap = rack_gap_;
     options.jitter = request.jitter;
     options.seed = request.seed;
-    rack = physics::rackLayout<double>(request.layout, table(), R, options);
+    rack = physics::rackLayout<double>(request.layout, engine.table(), R, options);
   }
-  const std::string invalid = engine_->whyInvalid(rack);
+  const std::string invalid = engine.whyInvalid(rack);
   if (invalid.empty())
     return "";
   if (request.layout == "custom")
     return "positions: " + invalid;
-  why << "layout '" << request.layout << "' does not fit table '" << table().name() << "' with ball_radius " << R
+  why << "layout '" << request.layout << "' does not fit table '" << engine.table().name() << "' with ball_radius " << R
       << " m: " << invalid;
   return why.str();
 }
 
-Outcome LiveTable::rack(const RackRequest& request, Stamp now)
+std::string TableEdits::whyNotReset(const physics::Engine<double>& engine) const
 {
-  if (const std::string why = whyNotFreeEdit(); !why.empty())
-    return Outcome::refused(why);
-  advanceTo(now);
-  physics::TableState<double> layout;
-  const std::string why = whyNotRack(request, layout);
-  if (!why.empty())
-    return Outcome::refused(why);
-  last_rack_ = layout;
-  startFrom(physics::atTimeZero(layout), now);
-  return Outcome::done("racked '" + request.layout + "': " + std::to_string(layout.balls.size()) + " balls");
+  const std::string why = engine.whyInvalid(last_rack_);
+  return why.empty() ? why : "the last rack does not fit the physics now (rack again): " + why;
 }
 
-Outcome LiveTable::reset(Stamp now)
+std::string TableEdits::whyNotState(const std::vector<BallInput>& balls, const physics::Engine<double>& engine,
+                                    physics::TableState<double>& state) const
 {
-  if (const std::string why = whyNotFreeEdit(); !why.empty())
-    return Outcome::refused(why);
-  advanceTo(now);
-  const std::string why = engine_->whyInvalid(last_rack_);
-  if (!why.empty())
-    return Outcome::refused("the last rack does not fit the physics now (rack again): " + why);
-  startFrom(physics::atTimeZero(last_rack_), now);
-  return Outcome::done("back to the last rack (" + std::to_string(last_rack_.balls.size()) + " balls)");
-}
-
-Outcome LiveTable::setState(const std::vector<BallInput>& balls, Stamp now)
-{
-  if (const std::string why = whyNotFreeEdit(); !why.empty())
-    return Outcome::refused(why);
-  physics::TableState<double> state;
-  std::string why = stateFromInputs(balls, table(), engine_->params().ball_radius, state);
+  std::string why = stateFromInputs(balls, engine.table(), engine.params().ball_radius, state);
   if (why.empty() && state.balls.empty())
     why = "balls: give at least one ball (~set_state replaces every ball on the table)";
   if (why.empty())
   {
-    why = engine_->whyInvalid(state);
+    why = engine.whyInvalid(state);
     if (!why.empty())
       why = "balls: " + why;
   }
-  if (!why.empty())
-    return Outcome::refused(why);
-  advanceTo(now);
-  startFrom(state, now);  // every ball at time 0: now
-  return Outcome::done("replaced the table by " + std::to_string(state.balls.size()) + " balls" +
-                       (state.anyMoving() ? ", some moving" : ", all at rest"));
+  return why;
 }
 
-Outcome LiveTable::placeBall(const BallInput& input, Stamp now)
+std::string TableEdits::whyNotRemovable(int id, const physics::TableState<double>& table)
 {
-  if (const std::string why = whyNotFreeEdit(); !why.empty())
-    return Outcome::refused(why);
-  physics::Ball<double> ball;
-  const std::string why = ballFromInput(input, "ball", table(), engine_->params().ball_radius, ball);
-  if (!why.empty())
-    return Outcome::refused(why);
-  advanceTo(now);
-  const std::string where = live_.whyNotPlaceable(ball);
-  if (!where.empty())
-    return Outcome::refused("ball: " + where);
-  const bool moved = live_.state().indexOf(ball.id) >= 0;
-  if (live_.atRest())
-    restartAtRest(now);
-  live_.place(ball);
-  balls_at_rest_ = false;
-  ++layout_version_;
-  advanceTo(now);
-  return Outcome::done(std::string(moved ? "moved" : "placed") + " ball " + std::to_string(ball.id));
+  if (table.indexOf(id) >= 0)
+    return "";
+  std::string on_table;
+  for (const auto& b : table.balls)
+    on_table += (on_table.empty() ? "" : ", ") + std::to_string(b.id);
+  return "ball_id " + std::to_string(id) + " is not on the table (on it: " + (on_table.empty() ? "none" : on_table) +
+         ")";
 }
 
-Outcome LiveTable::removeBall(int id, Stamp now)
+void TableEdits::onCloth(double R)
 {
-  if (const std::string why = whyNotFreeEdit(); !why.empty())
-    return Outcome::refused(why);
-  advanceTo(now);
-  if (live_.state().indexOf(id) < 0)
-  {
-    std::string on_table;
-    for (const auto& b : live_.state().balls)
-      on_table += (on_table.empty() ? "" : ", ") + std::to_string(b.id);
-    return Outcome::refused("ball_id " + std::to_string(id) +
-                            " is not on the table (on it: " + (on_table.empty() ? "none" : on_table) + ")");
-  }
-  live_.remove(id);
-  balls_at_rest_ = false;
-  ++layout_version_;
-  advanceTo(now);
-  return Outcome::done("removed ball " + std::to_string(id));
+  last_rack_ = session::onCloth(last_rack_, R);
 }
 
 }  // namespace session

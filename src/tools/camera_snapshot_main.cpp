@@ -10,6 +10,7 @@
 
 #include "cue_sim/camera/calibration_file.hpp"
 #include "cue_sim/camera/exposure.hpp"
+#include "cue_sim/session/live_table.hpp"
 #include "cue_sim/table_description/table_catalog.hpp"
 #include "cue_sim/table_description/urdf_table_loader.hpp"
 
@@ -72,7 +73,7 @@ int main(int argc, char** argv)
     const auto started = std::chrono::steady_clock::now();
     for (int i = 0; i < repeat; ++i)
     {
-      shutter = camera::exposureOf(live, after, exposure);
+      shutter = camera::exposureOf(live.motion(), live.clock(), after, exposure);
       frame = cam.render(shutter);
     }
     const std::chrono::duration<double, std::milli> spent = std::chrono::steady_clock::now() - started;

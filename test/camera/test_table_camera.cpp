@@ -286,20 +286,21 @@ TEST(CameraExposure, IsTheLiveTablesExactMotion)
   ASSERT_TRUE(table.strike(session::fixtures::shot(0, 3.0, 0.3, 0.0, 0.0), kStart).success);
   const session::Stamp start = kStart + kSecond / 20;
   table.advanceTo(start);
-  const double speed = table.balls()[0].v.norm() + table.engine().params().ball_radius * table.balls()[0].w.norm();
-  const Exposure exposure = exposureOf(table, start, 0.004);
+  const double speed =
+      table.motion().balls()[0].v.norm() + table.engine().params().ball_radius * table.motion().balls()[0].w.norm();
+  const Exposure exposure = exposureOf(table.motion(), table.clock(), start, 0.004);
   ASSERT_EQ(exposure.instants.size(), static_cast<std::size_t>(std::ceil(speed * 0.004 / kBlurStep)));
   session::LiveTable reference = table;
   for (std::size_t i = 0; i < exposure.instants.size(); ++i)
   {
     reference.advanceTo(start + static_cast<session::Stamp>(std::llround((i + 0.5) * 4e6 / exposure.instants.size())));
-    EXPECT_EQ(exposure.instants[i][0].centre, reference.balls()[0].r) << "instant " << i;
-    EXPECT_TRUE(exposure.instants[i][0].orientation.isApprox(reference.orientations()[0], 0));
+    EXPECT_EQ(exposure.instants[i][0].centre, reference.motion().balls()[0].r) << "instant " << i;
+    EXPECT_TRUE(exposure.instants[i][0].orientation.isApprox(reference.motion().orientations()[0], 0));
   }
-  EXPECT_EQ(table.lastStamp(), start) << "the table itself is not advanced";
+  EXPECT_EQ(table.clock().lastStamp(), start) << "the table itself is not advanced";
   // At rest, one instant.
   session::LiveTable resting(engineOn("7ft"), session::LiveTableOptions{}, "eight", kStart);
-  EXPECT_EQ(exposureOf(resting, kStart, 0.004).instants.size(), 1u);
+  EXPECT_EQ(exposureOf(resting.motion(), resting.clock(), kStart, 0.004).instants.size(), 1u);
 }
 
 }  // namespace camera

@@ -18,12 +18,12 @@ using namespace fixtures;
 /// The table advanced to rest in ticks of `tick` [s] from the strike at kStart.
 void toRest(LiveTable& table, double tick)
 {
-  for (Stamp now = kStart; !table.atRest() && now < kStart + 60 * kSecond;)
+  for (Stamp now = kStart; !table.motion().atRest() && now < kStart + 60 * kSecond;)
   {
     now += static_cast<Stamp>(tick * kSecond);
     table.advanceTo(now);
   }
-  ASSERT_TRUE(table.atRest());
+  ASSERT_TRUE(table.motion().atRest());
 }
 
 double angleBetween(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b)
@@ -36,13 +36,13 @@ TEST(BallOrientations, ABallStruckToRollTurnsByDistanceOverR)
 {
   // A level cue 2R/5 above the centre (b = 0.4) sends the ball off in natural roll.
   LiveTable table(engineOn("7ft"), LiveTableOptions{}, "empty", kStart);
-  const Eigen::Vector3d start = table.balls().at(0).r;
+  const Eigen::Vector3d start = table.motion().balls().at(0).r;
   ASSERT_TRUE(table.strike(shot(0, 0.25, 0.0, 0.0, 0.4), kStart).success);
-  ASSERT_EQ(table.balls().at(0).motion, physics::Motion::Rolling) << "rolling from the strike";
+  ASSERT_EQ(table.motion().balls().at(0).motion, physics::Motion::Rolling) << "rolling from the strike";
   toRest(table, 0.01);
-  const double distance = (table.balls().at(0).r - start).norm();
+  const double distance = (table.motion().balls().at(0).r - start).norm();
   ASSERT_GT(distance, 0.1);
-  const Eigen::AngleAxisd turned(table.orientations().at(0));
+  const Eigen::AngleAxisd turned(table.motion().orientations().at(0));
   EXPECT_NEAR(std::abs(turned.axis().y()), 1.0, 1e-9) << "about +y, across a path along +x";
   const double radius = table.engine().params().ball_radius;
   EXPECT_NEAR(std::remainder(turned.angle() * turned.axis().y() - distance / radius, 2 * M_PI), 0.0, 1e-9);
@@ -57,7 +57,7 @@ TEST(BallOrientations, ABreakTurnsTheBallsTheSameWhateverTheTicks)
     LiveTable table(engineOn("7ft"), LiveTableOptions{}, "eight", kStart);
     ASSERT_TRUE(table.strike(shot(0, 8.0, 0.002, 0.1, 0.2), kStart).success);
     toRest(table, ticks[k]);
-    seen[k] = table.orientations();
+    seen[k] = table.motion().orientations();
   }
   ASSERT_EQ(seen[0].size(), 16u);
   int turned = 0;

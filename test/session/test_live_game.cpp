@@ -41,9 +41,9 @@ protected:
   Stamp runToRest(Stamp from)
   {
     Stamp t = from;
-    for (int i = 0; i < 600 && (table_.pendingTurn() || !table_.atRest()); ++i)
+    for (int i = 0; i < 600 && (table_.game().pendingTurn() || !table_.motion().atRest()); ++i)
       table_.advanceTo(t += kSecond / 10);
-    EXPECT_FALSE(table_.pendingTurn());
+    EXPECT_FALSE(table_.game().pendingTurn());
     return t;
   }
 
@@ -71,21 +71,22 @@ TEST_F(LiveGameTest, StartingAGameRacksForTheBreakAndRefusesFreeEdits)
   request.breaker = 1;
   const Outcome started = table_.startGame(request, kStart);
   ASSERT_TRUE(started.success) << started.message;
-  ASSERT_NE(table_.game(), nullptr);
-  const game::GameState& state = table_.game()->state();
+  ASSERT_NE(table_.game().play(), nullptr);
+  const game::GameState& state = table_.game().play()->state();
   EXPECT_EQ(state.turn, 1);
   EXPECT_TRUE(state.break_shot);
   EXPECT_EQ(state.ball_in_hand, game::BallInHand::BehindHeadString);
-  EXPECT_EQ(table_.balls().size(), 16u);
+  EXPECT_EQ(table_.motion().balls().size(), 16u);
   // The cue ball stands behind the head string, not on it (WPA 8.1): where it is, it may be placed.
-  const auto& cue = table_.game()->table().balls[static_cast<std::size_t>(table_.game()->table().indexOf(0))];
+  const auto& cue =
+      table_.game().play()->table().balls[static_cast<std::size_t>(table_.game().play()->table().indexOf(0))];
   EXPECT_LT(cue.r.x(), table_.table().headStringX());
   EXPECT_TRUE(table_.placeCueBall(cue.r.head<2>(), kStart).success);
   const Outcome on_string = table_.placeCueBall(table_.table().headSpot(), kStart);
   EXPECT_FALSE(on_string.success);
   EXPECT_NE(on_string.message.find("not on it (WPA 8.1"), std::string::npos) << on_string.message;
 
-  const long version = table_.layoutVersion();
+  const long version = table_.motion().layoutVersion();
   RackRequest rack;
   rack.layout = "nine";
   for (const Outcome& refused :
@@ -104,8 +105,8 @@ TEST_F(LiveGameTest, StartingAGameRacksForTheBreakAndRefusesFreeEdits)
       kStart);
   EXPECT_FALSE(object_ball.success);
   EXPECT_NE(object_ball.message.find("ball_id must be 0"), std::string::npos) << object_ball.message;
-  EXPECT_EQ(table_.layoutVersion(), version);
-  EXPECT_EQ(table_.balls().size(), 16u);
+  EXPECT_EQ(table_.motion().layoutVersion(), version);
+  EXPECT_EQ(table_.motion().balls().size(), 16u);
 }
 
 TEST_F(LiveGameTest, BadGameRequestsAreRefusedNamingTheField)
@@ -134,7 +135,7 @@ TEST_F(LiveGameTest, BadGameRequestsAreRefusedNamingTheField)
   r = table_.startGame(request, kStart);
   EXPECT_FALSE(r.success);
   EXPECT_NE(r.message.find("cue ball (id 0) on the cloth"), std::string::npos) << r.message;
-  EXPECT_EQ(table_.game(), nullptr);
+  EXPECT_EQ(table_.game().play(), nullptr);
   EXPECT_FALSE(table_.callShot(GameCall{}, kStart).success);
   EXPECT_FALSE(table_.placeCueBall(Eigen::Vector2d(-0.5, 0), kStart).success);
   EXPECT_FALSE(table_.endGame(kStart).success);
@@ -154,13 +155,13 @@ TEST_F(LiveGameTest, ABreakIsRuledAsTheCoreGameRulesItAndTakenAtRest)
   request.rules = "eight_ball";
   request.seed = 3;
   ASSERT_TRUE(table_.startGame(request, kStart).success);
-  game::GamePlay core = *table_.game();
+  game::GamePlay core = *table_.game().play();
 
   const Stamp struck_at = kStart + kSecond;
   const StrikeOutcome outcome = table_.strike(cueShot(8, 0.002), struck_at);
   ASSERT_TRUE(outcome.success) << outcome.message;
   ASSERT_TRUE(outcome.refereed);
-  ASSERT_TRUE(table_.pendingTurn());
+  ASSERT_TRUE(table_.game().pendingTurn());
   const game::Turn expected = core.shoot(cueShot(8, 0.002).strike);
   EXPECT_EQ(outcome.ruling.reason, expected.ruling.reason);
   EXPECT_EQ(outcome.ruling.foul, expected.ruling.foul);
@@ -169,21 +170,21 @@ TEST_F(LiveGameTest, ABreakIsRuledAsTheCoreGameRulesItAndTakenAtRest)
 
   // While the balls roll the game waits: no call, no placement, no strike.
   table_.advanceTo(struck_at + kSecond / 10);
-  ASSERT_FALSE(table_.atRest());
+  ASSERT_FALSE(table_.motion().atRest());
   EXPECT_FALSE(table_.callShot(GameCall{}, struck_at + kSecond / 10).success);
   EXPECT_FALSE(table_.placeCueBall(Eigen::Vector2d(-0.6, 0), struck_at + kSecond / 10).success);
   const StrikeOutcome moving = table_.strike(cueShot(1, 0), struck_at + kSecond / 10);
   EXPECT_FALSE(moving.success);
   EXPECT_NE(moving.message.find("still moving"), std::string::npos) << moving.message;
-  EXPECT_EQ(table_.game()->state().shots, 0);
+  EXPECT_EQ(table_.game().play()->state().shots, 0);
 
   runToRest(struck_at);
-  ASSERT_TRUE(table_.lastTurn());
-  EXPECT_EQ(table_.lastTurn()->ruling.reason, expected.ruling.reason);
-  EXPECT_EQ(table_.game()->state().shots, 1);
-  EXPECT_EQ(table_.game()->state().turn, core.state().turn);
-  EXPECT_EQ(table_.game()->state().ball_in_hand, core.state().ball_in_hand);
-  const auto& live = table_.game()->table().balls;
+  ASSERT_TRUE(table_.game().lastTurn());
+  EXPECT_EQ(table_.game().lastTurn()->ruling.reason, expected.ruling.reason);
+  EXPECT_EQ(table_.game().play()->state().shots, 1);
+  EXPECT_EQ(table_.game().play()->state().turn, core.state().turn);
+  EXPECT_EQ(table_.game().play()->state().ball_in_hand, core.state().ball_in_hand);
+  const auto& live = table_.game().play()->table().balls;
   const auto& reference = core.table().balls;
   ASSERT_EQ(live.size(), reference.size());
   for (std::size_t i = 0; i < live.size(); ++i)
@@ -193,9 +194,9 @@ TEST_F(LiveGameTest, ABreakIsRuledAsTheCoreGameRulesItAndTakenAtRest)
     EXPECT_EQ(live[i].pocket, reference[i].pocket) << "ball " << live[i].id;
   }
   // What the live table shows is the game's table.
-  for (const auto& b : table_.balls())
+  for (const auto& b : table_.motion().balls())
     if (b.inPlay())
-      EXPECT_EQ(b.r, live[static_cast<std::size_t>(table_.game()->table().indexOf(b.id))].r);
+      EXPECT_EQ(b.r, live[static_cast<std::size_t>(table_.game().play()->table().indexOf(b.id))].r);
 }
 
 TEST_F(LiveGameTest, AScratchGivesTheOpponentBallInHandWhichTheRulesPlace)
@@ -213,25 +214,25 @@ TEST_F(LiveGameTest, AScratchGivesTheOpponentBallInHandWhichTheRulesPlace)
   runToRest(kStart + kSecond);
 
   // The cue ball is back on the cloth, in hand for bob, anywhere.
-  const game::GameState& state = table_.game()->state();
+  const game::GameState& state = table_.game().play()->state();
   EXPECT_EQ(state.turn, 1);
   EXPECT_EQ(state.consecutive_fouls[0], 1);
   EXPECT_EQ(state.ball_in_hand, game::BallInHand::Anywhere);
-  ASSERT_GE(table_.game()->table().indexOf(0), 0);
-  const long version = table_.gameVersion();
+  ASSERT_GE(table_.game().play()->table().indexOf(0), 0);
+  const long version = table_.game().version();
   const Eigen::Vector2d one = model.clothCentre() + Eigen::Vector2d(-0.5, -0.3);
   const Outcome on_ball = table_.placeCueBall(one + Eigen::Vector2d(0.02, 0), kStart + 20 * kSecond);
   EXPECT_FALSE(on_ball.success);
   EXPECT_NE(on_ball.message.find("overlap"), std::string::npos) << on_ball.message;
   const Outcome off_table = table_.placeCueBall(Eigen::Vector2d(5, 0), kStart + 20 * kSecond);
   EXPECT_FALSE(off_table.success);
-  EXPECT_EQ(table_.gameVersion(), version);
+  EXPECT_EQ(table_.game().version(), version);
 
   const Eigen::Vector2d foot = model.clothCentre() + Eigen::Vector2d(0.6, -0.2);  // past the head string: anywhere
   const Outcome placed = table_.placeCueBall(foot, kStart + 20 * kSecond);
   ASSERT_TRUE(placed.success) << placed.message;
   bool found = false;
-  for (const auto& b : table_.balls())
+  for (const auto& b : table_.motion().balls())
     if (b.id == 0)
     {
       found = true;
@@ -240,7 +241,7 @@ TEST_F(LiveGameTest, AScratchGivesTheOpponentBallInHandWhichTheRulesPlace)
       EXPECT_TRUE(b.inPlay());
     }
   EXPECT_TRUE(found);
-  EXPECT_GT(table_.gameVersion(), version);
+  EXPECT_GT(table_.game().version(), version);
 }
 
 TEST_F(LiveGameTest, CallsNameARealPocketAndAPushOutOnlyAfterTheBreak)
@@ -264,12 +265,13 @@ TEST_F(LiveGameTest, CallsNameARealPocketAndAPushOutOnlyAfterTheBreak)
   r = table_.callShot(call, kStart);
   EXPECT_FALSE(r.success);
   EXPECT_NE(r.message.find("2.4"), std::string::npos) << r.message;
-  EXPECT_EQ(table_.game()->state().called_ball, -1);
+  EXPECT_EQ(table_.game().play()->state().called_ball, -1);
   call.push_out = false;
   r = table_.callShot(call, kStart);
   ASSERT_TRUE(r.success) << r.message;
-  EXPECT_EQ(table_.game()->state().called_ball, 1);
-  EXPECT_EQ(model.pockets()[static_cast<std::size_t>(table_.game()->state().called_pocket)].name, "pocket_foot_ypos");
+  EXPECT_EQ(table_.game().play()->state().called_ball, 1);
+  EXPECT_EQ(model.pockets()[static_cast<std::size_t>(table_.game().play()->state().called_pocket)].name,
+            "pocket_foot_ypos");
 }
 
 TEST_F(LiveGameTest, AWonGameTakesNoMoreShotsAndEndingItFreesTheTable)
@@ -291,14 +293,14 @@ TEST_F(LiveGameTest, AWonGameTakesNoMoreShotsAndEndingItFreesTheTable)
   EXPECT_TRUE(outcome.ruling.game_over) << outcome.ruling.reason;
   EXPECT_EQ(outcome.ruling.winner, 0);
   const Stamp rest = runToRest(kStart + kSecond);
-  EXPECT_TRUE(table_.game()->state().over);
+  EXPECT_TRUE(table_.game().play()->state().over);
   const StrikeOutcome after = table_.strike(cueShot(1, 0), rest + kSecond);
   EXPECT_FALSE(after.success);
   EXPECT_NE(after.message.find("the game is over: player 1 won"), std::string::npos) << after.message;
-  const std::size_t balls = table_.balls().size();
+  const std::size_t balls = table_.motion().balls().size();
   ASSERT_TRUE(table_.endGame(rest + kSecond).success);
-  EXPECT_EQ(table_.game(), nullptr);
-  EXPECT_EQ(table_.balls().size(), balls);
+  EXPECT_EQ(table_.game().play(), nullptr);
+  EXPECT_EQ(table_.motion().balls().size(), balls);
   EXPECT_TRUE(table_.strike(cueShot(1, 0), rest + 2 * kSecond).success);
   RackRequest rack;
   rack.layout = "nine";
@@ -316,33 +318,39 @@ TEST_F(LiveGameTest, APushOutCalledAfterALegalBreakIsRuledAsOne)
     request.rules = "nine_ball";
     request.seed = seed;
     ASSERT_TRUE(table_.startGame(request, t).success);
-    const Eigen::Vector2d cue =
-        table_.game()->table().balls[static_cast<std::size_t>(table_.game()->table().indexOf(0))].r.head<2>();
+    const Eigen::Vector2d cue = table_.game()
+                                    .play()
+                                    ->table()
+                                    .balls[static_cast<std::size_t>(table_.game().play()->table().indexOf(0))]
+                                    .r.head<2>();
     const Eigen::Vector2d foot = table_.table().footSpot();
     ASSERT_TRUE(table_.strike(cueShot(8, std::atan2(foot.y() - cue.y(), foot.x() - cue.x())), t + kSecond).success);
     t = runToRest(t + kSecond) + kSecond;
-    ready = table_.game()->state().push_out_allowed && !table_.game()->state().over;
+    ready = table_.game().play()->state().push_out_allowed && !table_.game().play()->state().over;
   }
   ASSERT_TRUE(ready) << "no legal 9-ball break in 10 racks";
   GameCall push;
   push.push_out = true;
   const Outcome called = table_.callShot(push, t);
   ASSERT_TRUE(called.success) << called.message;
-  EXPECT_TRUE(table_.pushOutCalled());
-  const int shooter = table_.game()->state().turn;
+  EXPECT_TRUE(table_.game().pushOutCalled());
+  const int shooter = table_.game().play()->state().turn;
   // A soft roll towards the middle of the table: no scratch (a scratch stays a foul, WPA 2.4).
-  const Eigen::Vector2d cue =
-      table_.game()->table().balls[static_cast<std::size_t>(table_.game()->table().indexOf(0))].r.head<2>();
+  const Eigen::Vector2d cue = table_.game()
+                                  .play()
+                                  ->table()
+                                  .balls[static_cast<std::size_t>(table_.game().play()->table().indexOf(0))]
+                                  .r.head<2>();
   const Eigen::Vector2d middle = table_.table().clothCentre();
   const StrikeOutcome pushed =
       table_.strike(cueShot(0.3, std::atan2(middle.y() - cue.y(), middle.x() - cue.x())), t + kSecond);
   ASSERT_TRUE(pushed.success) << pushed.message;
   EXPECT_EQ(pushed.ruling.rule, "WPA 2.4") << pushed.ruling.reason;
   runToRest(t + kSecond);
-  EXPECT_FALSE(table_.pushOutCalled());
-  EXPECT_FALSE(table_.game()->state().push_out_allowed);  // only the shot right after the break
+  EXPECT_FALSE(table_.game().pushOutCalled());
+  EXPECT_FALSE(table_.game().play()->state().push_out_allowed);  // only the shot right after the break
   EXPECT_FALSE(pushed.ruling.foul) << pushed.ruling.reason;
-  EXPECT_EQ(table_.game()->state().turn, 1 - shooter);  // the simulator's choice after a push-out
+  EXPECT_EQ(table_.game().play()->state().turn, 1 - shooter);  // the simulator's choice after a push-out
 }
 
 TEST_F(LiveGameTest, EndingAGameMidShotLetsTheBallsRollOnUnrefereed)
@@ -353,20 +361,20 @@ TEST_F(LiveGameTest, EndingAGameMidShotLetsTheBallsRollOnUnrefereed)
   ASSERT_TRUE(table_.strike(cueShot(8, 0.002), kStart + kSecond).success);
   const Stamp mid = kStart + kSecond + kSecond / 2;
   table_.advanceTo(mid);
-  ASSERT_FALSE(table_.atRest());
-  const std::vector<physics::Ball<double>> rolling = table_.balls();
+  ASSERT_FALSE(table_.motion().atRest());
+  const std::vector<physics::Ball<double>> rolling = table_.motion().balls();
   ASSERT_TRUE(table_.endGame(mid).success);
-  EXPECT_EQ(table_.game(), nullptr);
-  EXPECT_FALSE(table_.pendingTurn());
-  EXPECT_FALSE(table_.atRest());
-  ASSERT_EQ(table_.balls().size(), rolling.size());
+  EXPECT_EQ(table_.game().play(), nullptr);
+  EXPECT_FALSE(table_.game().pendingTurn());
+  EXPECT_FALSE(table_.motion().atRest());
+  ASSERT_EQ(table_.motion().balls().size(), rolling.size());
   for (std::size_t i = 0; i < rolling.size(); ++i)
   {
-    EXPECT_EQ(table_.balls()[i].r, rolling[i].r) << "ball " << rolling[i].id;
-    EXPECT_EQ(table_.balls()[i].v, rolling[i].v) << "ball " << rolling[i].id;
+    EXPECT_EQ(table_.motion().balls()[i].r, rolling[i].r) << "ball " << rolling[i].id;
+    EXPECT_EQ(table_.motion().balls()[i].v, rolling[i].v) << "ball " << rolling[i].id;
   }
   runToRest(mid);
-  EXPECT_TRUE(table_.atRest());
+  EXPECT_TRUE(table_.motion().atRest());
 }
 
 }  // namespace

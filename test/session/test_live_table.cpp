@@ -61,7 +61,7 @@ TEST_F(LiveTableTest, AStrikeFromRestIsItsPredictionBitForBit)
   EXPECT_EQ(outcome.time_to_rest, predicted.time_to_rest);
   std::vector<StampedEvent> events;
   table_.advanceTo(struck_at + static_cast<Stamp>(std::ceil(predicted.time_to_rest * 1e9)) + kSecond, &events);
-  EXPECT_TRUE(table_.atRest());
+  EXPECT_TRUE(table_.motion().atRest());
   ASSERT_EQ(events.size(), predicted.events.size());
   for (std::size_t i = 0; i < events.size(); ++i)
   {
@@ -69,13 +69,13 @@ TEST_F(LiveTableTest, AStrikeFromRestIsItsPredictionBitForBit)
     EXPECT_GE(events[i].stamp, struck_at);
     EXPECT_NEAR(static_cast<double>(events[i].stamp - struck_at) * 1e-9, predicted.events[i].time, 1e-9);
   }
-  expectSameBalls(table_.balls(), predicted.final_balls);
+  expectSameBalls(table_.motion().balls(), predicted.final_balls);
 }
 
 TEST_F(LiveTableTest, RefusedRequestsNameTheFieldAndChangeNothing)
 {
-  const std::vector<Ball<double>> before = table_.balls();
-  const long layout = table_.layoutVersion();
+  const std::vector<Ball<double>> before = table_.motion().balls();
+  const long layout = table_.motion().layoutVersion();
   const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
 
   EXPECT_FALSE(table_.setRealTimeFactor(nan, kStart).success);
@@ -144,9 +144,9 @@ TEST_F(LiveTableTest, RefusedRequestsNameTheFieldAndChangeNothing)
   EXPECT_FALSE(table_.removeBall(16, kStart).success);
 
   table_.advanceTo(kStart + kSecond);
-  EXPECT_EQ(table_.layoutVersion(), layout);
-  expectSameBalls(table_.balls(), before);
-  EXPECT_TRUE(table_.atRest());
+  EXPECT_EQ(table_.motion().layoutVersion(), layout);
+  expectSameBalls(table_.motion().balls(), before);
+  EXPECT_TRUE(table_.motion().atRest());
 }
 
 TEST_F(LiveTableTest, ALargeBallOnAnEmptyTableStillLetsTheTableBeRackedAgain)
@@ -167,16 +167,16 @@ TEST_F(LiveTableTest, ALargeBallOnAnEmptyTableStillLetsTheTableBeRackedAgain)
   ASSERT_TRUE(table_.setPhysics(PhysicsParams<double>(), {}, kStart).success);
   const Outcome racked = table_.rack(eight, kStart);
   EXPECT_TRUE(racked.success) << racked.message;
-  EXPECT_EQ(table_.balls().size(), 16u);
+  EXPECT_EQ(table_.motion().balls().size(), 16u);
 }
 
 TEST_F(LiveTableTest, OneBallIsPlacedMovedOrRemovedAndTheOthersStay)
 {
-  const std::vector<Ball<double>> before = table_.balls();
+  const std::vector<Ball<double>> before = table_.motion().balls();
   // Ball in hand: the cue ball moved behind the head string.
   const Outcome moved = table_.placeBall(ballAt(0, -0.6, 0.2), kStart);
   ASSERT_TRUE(moved.success) << moved.message;
-  std::vector<Ball<double>> after = table_.balls();
+  std::vector<Ball<double>> after = table_.motion().balls();
   ASSERT_EQ(after.size(), before.size());
   for (std::size_t i = 0; i < after.size(); ++i)
   {
@@ -188,7 +188,7 @@ TEST_F(LiveTableTest, OneBallIsPlacedMovedOrRemovedAndTheOthersStay)
 
   const Outcome removed = table_.removeBall(8, kStart);
   ASSERT_TRUE(removed.success) << removed.message;
-  EXPECT_EQ(table_.balls().size(), 15u);
+  EXPECT_EQ(table_.motion().balls().size(), 15u);
   const Outcome again = table_.removeBall(8, kStart);
   EXPECT_FALSE(again.success);
   EXPECT_NE(again.message.find("not on the table"), std::string::npos) << again.message;
@@ -199,14 +199,14 @@ TEST_F(LiveTableTest, OneBallIsPlacedMovedOrRemovedAndTheOthersStay)
       const Outcome respotted = table_.placeBall(ballAt(8, b.r.x(), b.r.y()), kStart);
       EXPECT_TRUE(respotted.success) << respotted.message;
     }
-  EXPECT_EQ(table_.balls().size(), 16u);
+  EXPECT_EQ(table_.motion().balls().size(), 16u);
   // A ball placed moving rolls off from now.
   BallInput rolling = ballAt(0, -0.6, 0.2);
   rolling.velocity = physics::Vec3<double>(-0.5, 0, 0);
   ASSERT_TRUE(table_.placeBall(rolling, kStart).success);
-  EXPECT_FALSE(table_.atRest());
+  EXPECT_FALSE(table_.motion().atRest());
   table_.advanceTo(kStart + kSecond / 10);
-  for (const auto& b : table_.balls())
+  for (const auto& b : table_.motion().balls())
   {
     if (b.id == 0)
     {
@@ -222,25 +222,25 @@ TEST_F(LiveTableTest, AJitteredRackIsSeededAndKeepsItsBallsApart)
   rack.jitter = table_.options().rack_gap / 2;
   rack.seed = 7;
   ASSERT_TRUE(table_.rack(rack, kStart).success);
-  const std::vector<Ball<double>> first = table_.balls();
+  const std::vector<Ball<double>> first = table_.motion().balls();
   ASSERT_TRUE(table_.rack(rack, kStart).success);
-  expectSameBalls(table_.balls(), first);
+  expectSameBalls(table_.motion().balls(), first);
   rack.seed = 8;
   ASSERT_TRUE(table_.rack(rack, kStart).success);
   int differ = 0;
   for (std::size_t i = 0; i < first.size(); ++i)
-    differ += table_.balls()[i].r != first[i].r;
+    differ += table_.motion().balls()[i].r != first[i].r;
   EXPECT_GT(differ, 10);
-  EXPECT_EQ(table_.engine().whyInvalid(physics::TableState<double>{0, 0, 0, table_.balls()}), "");
+  EXPECT_EQ(table_.engine().whyInvalid(physics::TableState<double>{0, 0, 0, table_.motion().balls()}), "");
 }
 
 TEST_F(LiveTableTest, PauseStopsPhysicsAndAStepMovesItByExactlyTheDuration)
 {
   ASSERT_TRUE(table_.strike(shot(0, 1.0, 0.3), kStart).success);
   ASSERT_TRUE(table_.pause(true, kStart + kSecond / 10).success);
-  const std::vector<Ball<double>> paused = table_.balls();
+  const std::vector<Ball<double>> paused = table_.motion().balls();
   table_.advanceTo(kStart + 5 * kSecond);
-  expectSameBalls(table_.balls(), paused);
+  expectSameBalls(table_.motion().balls(), paused);
   EXPECT_FALSE(table_.step(0, kStart + 5 * kSecond).success);
   EXPECT_FALSE(table_.step(61, kStart + 5 * kSecond).success);
   ASSERT_TRUE(table_.step(0.25, kStart + 5 * kSecond).success);
@@ -250,7 +250,8 @@ TEST_F(LiveTableTest, PauseStopsPhysicsAndAStepMovesItByExactlyTheDuration)
   ASSERT_TRUE(reference.strike(shot(0, 1.0, 0.3), kStart).success);
   reference.advanceTo(kStart + 35 * kSecond / 100);
   for (std::size_t i = 0; i < paused.size(); ++i)
-    EXPECT_NEAR((table_.balls()[i].r - reference.balls()[i].r).norm(), 0, 1e-12) << "ball " << paused[i].id;
+    EXPECT_NEAR((table_.motion().balls()[i].r - reference.motion().balls()[i].r).norm(), 0, 1e-12)
+        << "ball " << paused[i].id;
 }
 
 TEST(PredictionLimits, ABatchOverALimitIsRefusedWithItsSizeBeforeAnyWork)

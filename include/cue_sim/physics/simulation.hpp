@@ -122,6 +122,11 @@ private:
   long events_in_shot_ = 0;  ///< since the last edit, for EngineLimits::max_events
 };
 
+/// Event searches started on the calling thread so far: one each time a Simulation is made,
+/// copied, reset or moved to another engine, so one for every advance or simulateToRest. What a
+/// caller counts to know how often a shot was simulated (a prediction's tests do).
+long searchesStartedOnThisThread();
+
 /// A Simulation of `state` on `engine` for one call: processes every event with time <= t_end
 /// (appending them to `events` if given) and sets state.time = t_end. Throws EventLimitError
 /// after limits().max_events events, leaving the state at its last event. To advance the same

@@ -54,6 +54,25 @@ struct PredictionOptions
   double sample_period = 0;                        ///< [s]; 0: no samples
   const physics::ExecutionNoise* noise = nullptr;  ///< null: the shot as asked
   std::uint64_t seed = 0;                          ///< of the noise
+  bool trajectories = false;                       ///< keep each ball's trajectory (a preview draws them)
+};
+
+/// One ball's exact path through a shot, as its closed-form pieces: its state from the strike, and
+/// again after each event that changed it. Where it is at any time of the shot is
+/// physics::evolve of the last piece that starts at or before that time: no simulation.
+struct BallTrajectory
+{
+  struct Piece
+  {
+    double start = 0;  ///< [s] physics time from which `ball` holds (the event that made it)
+    physics::Ball<double> ball;
+  };
+  int id = -1;
+  std::vector<Piece> pieces;  ///< by start, the first at the strike
+
+  /// The ball at physics time t (from the first piece's start on), exactly as the shot's own
+  /// simulation has it then: events at t included.
+  physics::Ball<double> at(double t, const physics::PhysicsParams<double>& params) const;
 };
 
 struct ShotPrediction
@@ -67,6 +86,7 @@ struct ShotPrediction
   std::vector<physics::Ball<double>> final_balls;
   std::vector<physics::Event<double>> events;
   std::vector<std::vector<physics::Ball<double>>> samples;  ///< at strike_time + k sample_period
+  std::vector<BallTrajectory> trajectories;                 ///< each ball's, in the table's order, if asked
 
   /// The bytes of this prediction in a reply (ReplySize).
   std::size_t replyBytes() const;
@@ -75,13 +95,15 @@ struct ShotPrediction
 /// Empty if `period` [s] is 0 (no samples) or in [0.001, 10], else why not.
 std::string whyBadSamplePeriod(double period);
 
-/// Strikes `start` and runs it to rest; samples it if asked (at most
-/// limits.max_samples_per_shot samples). A refused shot gives success false and the reason, by
-/// field.
+/// Strikes `start` and runs it to rest, once: the samples (at most limits.max_samples_per_shot)
+/// and trajectories asked for are taken from that one run. A refused shot gives success false and
+/// the reason, by field.
 ShotPrediction predictShot(const physics::Engine<double>& engine, const physics::TableState<double>& start,
                            const Shot& shot, const PredictionOptions& options, const PredictionLimits& limits = {});
 
-/// Many shots from one table on the pool's threads; shot i uses seed + i. Refused as a whole
+/// Many shots from one table on the pool's threads; shot i uses seed + i. Each runs to rest once,
+/// and, if sampled, once more once the reply is known to fit (its samples are taken then, so that
+/// a batch that will not fit holds no samples). Trajectories are not kept. Refused as a whole
 /// (`why` says how big the request is and which limit it passes) if it has more shots than
 /// max_batch_shots, or, once every shot has run to rest, if their samples or the reply would
 /// pass max_samples or max_reply_bytes: no samples are then taken and nothing is returned.

@@ -47,10 +47,21 @@ private:
   const TableState<S>& state_;
 };
 
+namespace
+{
+thread_local long searches_started = 0;
+}  // namespace
+
+long searchesStartedOnThisThread()
+{
+  return searches_started;
+}
+
 template <typename S>
 EventSearch<S>::EventSearch(const Engine<S>& engine, const TableState<S>& state, BroadPhase broad_phase)
   : engine_(engine), finder_(engine), queue_(state.balls.size())
 {
+  ++searches_started;
   const int n = static_cast<int>(state.balls.size());
   // A few balls are simply all looked at; beyond that a grid keeps each look local.
   if (broad_phase == BroadPhase::Grid || (broad_phase == BroadPhase::Automatic && state.balls.size() > kGridFrom))
