@@ -19,6 +19,8 @@ PACKAGES=(
   # camera_info_manager; the detector example reads images with cv_bridge
   libopencv-dev libimage-transport-dev libcamera-info-manager-dev libsensor-msgs-dev ros-sensor-msgs
   libcv-bridge-dev python3-opencv python3-cv-bridge python3-sensor-msgs python3-tf2-ros image-transport-tools
+  # the table as a nodelet (cue_sim/TableNodelet), and image_proc's nodelets beside it in one manager
+  libnodelet-dev libnodeletlib-dev libnodeletlib-tools python3-nodelet pluginlib-dev ros-image-proc libimage-proc0d
   # rviz, and rviz without a screen (screenshots)
   rviz xvfb xauth imagemagick
   # plots of the work-precision report

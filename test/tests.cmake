@@ -93,6 +93,12 @@ add_rostest(test/node/camera.test DEPENDENCIES table_node)
 # record or time things.
 set_tests_properties(_ctest_cue_sim_rostest_test_node_camera.test PROPERTIES RUN_SERIAL TRUE)
 
+# The table as a nodelet beside image_proc's rectify in one manager, and unloaded from it.
+add_rostest_gtest(nodelet_tests test/node/nodelet.test test/node/test_nodelet.cpp test/node/rostest_main.cpp)
+target_include_directories(nodelet_tests PRIVATE ${catkin_INCLUDE_DIRS})
+target_link_libraries(nodelet_tests ${catkin_LIBRARIES})
+add_dependencies(nodelet_tests cue_sim_nodelets ${PROJECT_NAME}_generate_messages_cpp)
+
 add_rostest_gtest(examples_tests test/node/examples.test test/node/test_examples.cpp test/node/rostest_main.cpp)
 target_include_directories(examples_tests PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(examples_tests ${catkin_LIBRARIES})

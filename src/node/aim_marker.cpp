@@ -17,7 +17,7 @@ const char* const kName = "aim";
 
 AimMarker::AimMarker(const std::string& topic_ns, const std::string& frame, double ball_radius, ShotCallback strike,
                      ShotCallback predict)
-  : server_(topic_ns),
+  : server_(topic_ns, "", true),
     frame_(frame),
     ball_radius_(ball_radius),
     strike_(std::move(strike)),

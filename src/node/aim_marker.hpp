@@ -20,8 +20,8 @@ public:
   static constexpr double kSpeedPerMetre = 4.0;  ///< [m/s per m]: 0.5 m of arrow is a 2 m/s cue
   using ShotCallback = std::function<void(const Shot&)>;
 
-  /// Serves the marker on <topic_ns>/update and <topic_ns>/feedback; callbacks run in the
-  /// node's own spinner (no thread of their own). place() may be called from another thread.
+  /// Serves the marker on <topic_ns>/update and <topic_ns>/feedback; callbacks run on the
+  /// server's own thread. place() may be called from another thread.
   AimMarker(const std::string& topic_ns, const std::string& frame, double ball_radius, ShotCallback strike,
             ShotCallback predict);
 

@@ -197,12 +197,14 @@ void CameraPublisher::photograph(Job& job)
   const bool pixels = image_publisher_.getNumSubscribers() > 0;
   camera::Frame frame;
   std::vector<camera::BallPose> middle;
+  sensor_msgs::ImagePtr image;
   if (pixels)
   {
     const camera::Exposure exposure = camera::exposureOf(std::move(job.balls), job.clock, start, parameters_.exposure);
     const camera::Intrinsics& k = camera.intrinsics();
-    image_.data.resize(static_cast<std::size_t>(k.width) * k.height * 3);
-    cv::Mat view(k.height, k.width, CV_8UC3, image_.data.data());
+    image = freeImage();
+    image->data.resize(static_cast<std::size_t>(k.width) * k.height * 3);
+    cv::Mat view(k.height, k.width, CV_8UC3, image->data.data());
     frame.balls = camera.render(exposure, view);
     middle = exposure.instants[exposure.instants.size() / 2];
   }
@@ -233,14 +235,29 @@ void CameraPublisher::photograph(Job& job)
   truth_publisher_.publish(truth);
   if (!pixels)
     return;
-  image_.header = truth.header;
-  image_.height = static_cast<std::uint32_t>(intrinsics_.height);
-  image_.width = static_cast<std::uint32_t>(intrinsics_.width);
-  image_.encoding = sensor_msgs::image_encodings::BGR8;
-  image_.step = image_.width * 3;
-  sensor_msgs::CameraInfo info = info_;
-  info.header = truth.header;
-  image_publisher_.publish(image_, info);
+  image->header = truth.header;
+  image->height = static_cast<std::uint32_t>(intrinsics_.height);
+  image->width = static_cast<std::uint32_t>(intrinsics_.width);
+  image->encoding = sensor_msgs::image_encodings::BGR8;
+  image->step = image->width * 3;
+  const sensor_msgs::CameraInfoPtr info = boost::make_shared<sensor_msgs::CameraInfo>(info_);
+  info->header = truth.header;
+  // As shared pointers: subscribers in this process get them as they are, others a serialised copy.
+  image_publisher_.publish(image, info);
+}
+
+sensor_msgs::ImagePtr CameraPublisher::freeImage()
+{
+  // Images a subscriber in this process still holds are not drawn into; a few are kept, so that
+  // a slow subscriber costs at most that many images.
+  constexpr std::size_t kKeptImages = 4;
+  for (const sensor_msgs::ImagePtr& image : images_)
+    if (image.use_count() == 1)
+      return image;
+  auto image = boost::make_shared<sensor_msgs::Image>();
+  if (images_.size() < kKeptImages)
+    images_.push_back(image);
+  return image;
 }
 
 }  // namespace cue_sim

@@ -19,6 +19,7 @@
 #include <mutex>
 #include <optional>
 #include <thread>
+#include <vector>
 
 #include "cue_sim/camera/table_camera.hpp"
 #include "cue_sim/session/live_table.hpp"
@@ -70,7 +71,12 @@ private:
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
   std::optional<camera::TableCamera> camera_;
   double camera_radius_ = 0, camera_cushion_ = 0;  ///< what camera_ was made for
-  sensor_msgs::Image image_;  ///< its buffer kept between frames: the camera draws straight into it
+  /// Images a frame is drawn into and published as a shared pointer: a subscriber in the same
+  /// process (a nodelet in the node's manager) gets the pointer, not a copy. An image is drawn
+  /// into again once no one else holds it, so its pages are not allocated anew every frame.
+  std::vector<sensor_msgs::ImagePtr> images_;
+  /// An image no subscriber holds any more, or a new one if all are held (at most kKeptImages kept).
+  sensor_msgs::ImagePtr freeImage();
 
   mutable std::mutex mutex_;  ///< guards job_, busy_, next_due_, stop_
   std::condition_variable wake_;

@@ -40,10 +40,13 @@ constexpr int kLightServiceThreads = 2;
 const ros::WallDuration kMarkerRefresh(1.0);
 }  // namespace
 
-TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
+TableNode::TableNode(const ros::NodeHandle& node, const ros::NodeHandle& private_node)
+  : node_(node), private_node_(private_node)
 {
+  node_.setCallbackQueue(&queue_);
+  private_node_.setCallbackQueue(&queue_);
   shared_.sim_time = ros::Time::isSimTime();
-  parameters_ = readNodeParameters(node, private_node, shared_.sim_time);
+  parameters_ = readNodeParameters(node_, private_node_, shared_.sim_time);
   shared_.clock_factor = parameters_.real_time_factor;
   const NodeParameters& p = parameters_;
   std::shared_ptr<const physics::Engine<double>> engine;
@@ -59,7 +62,7 @@ TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
   {
     // This node's clock starts at the wall time (never 0) and only ever moves forward. The node
     // stamps with it directly; roscpp's own time follows it through /clock, never backwards.
-    clock_publisher_ = node.advertise<rosgraph_msgs::Clock>("/clock", 10);
+    clock_publisher_ = node_.advertise<rosgraph_msgs::Clock>("/clock", 10);
     shared_.sim_now = ros::Time(ros::WallTime::now().sec, ros::WallTime::now().nsec);
   }
   try
@@ -70,17 +73,17 @@ TableNode::TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node)
   {
     throw std::runtime_error("~" + std::string(e.what()));
   }
-  state_publisher_ = private_node.advertise<cue_sim::TableState>("state", 10);
-  marker_publisher_ = private_node.advertise<visualization_msgs::MarkerArray>("markers", 1, true);
-  event_publisher_ = private_node.advertise<cue_sim::Event>("events", 1000);
+  state_publisher_ = private_node_.advertise<cue_sim::TableState>("state", 10);
+  marker_publisher_ = private_node_.advertise<visualization_msgs::MarkerArray>("markers", 1, true);
+  event_publisher_ = private_node_.advertise<cue_sim::Event>("events", 1000);
   publishStaticFrames(p.urdf_xml);
-  services_ = std::make_unique<TableServices>(private_node, shared_, parameters_);
-  games_ = std::make_unique<GameServices>(private_node, shared_, parameters_);
-  predictions_ = std::make_unique<PredictionServices>(private_node, shared_, parameters_);
-  reconfigure_ = std::make_unique<PhysicsReconfigure>(private_node, shared_);
-  startAimMarker(private_node);
+  services_ = std::make_unique<TableServices>(private_node_, shared_, parameters_);
+  games_ = std::make_unique<GameServices>(private_node_, shared_, parameters_);
+  predictions_ = std::make_unique<PredictionServices>(private_node_, shared_, parameters_);
+  reconfigure_ = std::make_unique<PhysicsReconfigure>(private_node_, shared_);
+  startAimMarker();
   if (p.camera.enabled)
-    camera_ = std::make_unique<CameraPublisher>(private_node, p.camera, p.table_frame);
+    camera_ = std::make_unique<CameraPublisher>(private_node_, p.camera, p.table_frame);
   ROS_INFO("cue_sim: table '%s' (%zu cushions, %zu pockets), rack '%s', models %s/%s, tf at %.0f Hz",
            p.table_model->name().c_str(), p.table_model->segments().size(), p.table_model->pockets().size(),
            p.rack.c_str(), p.models.ball_ball.c_str(), p.models.cushion.c_str(), p.publish_rate);
@@ -92,7 +95,7 @@ TableNode::~TableNode()
     spinner_->stop();
 }
 
-void TableNode::startAimMarker(ros::NodeHandle& private_node)
+void TableNode::startAimMarker()
 {
   if (!parameters_.aim_marker)
     return;
@@ -111,7 +114,7 @@ void TableNode::startAimMarker(ros::NodeHandle& private_node)
     if (!response.prediction.success)
       ROS_WARN("cue_sim: aim marker: %s", response.prediction.message.c_str());
   };
-  aim_marker_ = std::make_unique<AimMarker>(private_node.resolveName("aim"), parameters_.table_frame,
+  aim_marker_ = std::make_unique<AimMarker>(private_node_.resolveName("aim"), parameters_.table_frame,
                                             parameters_.physics.ball_radius, strike, predict);
 }
 
@@ -137,7 +140,7 @@ void TableNode::publishStaticFrames(const std::string& urdf_xml)
 void TableNode::run()
 {
   // Services on their own threads from here on: this thread only publishes.
-  spinner_ = std::make_unique<ros::AsyncSpinner>(kLightServiceThreads);
+  spinner_ = std::make_unique<ros::AsyncSpinner>(kLightServiceThreads, &queue_);
   spinner_->start();
   // The balls' frames exist from the start, even on a table started paused.
   tick();
@@ -145,7 +148,7 @@ void TableNode::run()
   {
     raisePublishingPriority();
     ros::Rate rate(parameters_.publish_rate);
-    while (ros::ok())
+    while (running())
     {
       tick();
       rate.sleep();
@@ -157,7 +160,7 @@ void TableNode::run()
   // sim-time clients never wait on it.
   const ros::WallDuration period(1.0 / parameters_.publish_rate);
   ros::WallTime last = ros::WallTime::now();
-  while (ros::ok())
+  while (running())
   {
     const ros::WallTime wall = ros::WallTime::now();
     bool paused = false;

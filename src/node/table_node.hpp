@@ -1,14 +1,19 @@
-// table_node: the ROS adapter around the live table (session::LiveTable). Its own thread
+// The table node: the ROS adapter around the live table (session::LiveTable), run as its own
+// process (table_node) or in a nodelet manager (cue_sim/TableNodelet), the same either way: it
+// serves everything on callback queues and threads of its own. The thread that calls run()
 // publishes tf, ~state, ~events, ~markers, ~game_state and (with use_sim_time) /clock at
-// ~publish_rate and does nothing else (but hand the camera a copy of the table when a frame is due); the light services
-// (TableServices, GameServices), dynamic_reconfigure and the aim marker run on two threads of their own, predictions
-// (PredictionServices) on a third. All share the table under one lock, held only while the table itself is touched.
+// ~publish_rate and does nothing else (but hand the camera a copy of the balls when a frame is
+// due); the light services (TableServices, GameServices) and dynamic_reconfigure run on two
+// threads of their own, the aim marker on one, predictions (PredictionServices) on another. All
+// share the table under one lock, held only while the table itself is touched.
 #pragma once
 
+#include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
 
+#include <atomic>
 #include <memory>
 #include <string>
 
@@ -27,13 +32,15 @@ class TableNode
 {
 public:
   /// Reads parameters and the table description; throws std::runtime_error saying which
-  /// parameter is wrong and why.
-  TableNode(ros::NodeHandle& node, ros::NodeHandle& private_node);
+  /// parameter is wrong and why. `node` is the node's namespace, `private_node` its own (~).
+  TableNode(const ros::NodeHandle& node, const ros::NodeHandle& private_node);
   ~TableNode();
 
-  /// Publishes at ~publish_rate until ROS shuts down; services are answered meanwhile on
-  /// their own threads.
+  /// Publishes at ~publish_rate until ROS shuts down or stop() is called; services are
+  /// answered meanwhile on their own threads.
   void run();
+  /// Makes run() return soon (from another thread): a nodelet being unloaded.
+  void stop() { stopping_ = true; }
 
 private:
   /// Brings the table up to now and publishes tf, ~state, ~events (and ~markers when the
@@ -46,8 +53,16 @@ private:
   void publishStaticFrames(const std::string& urdf_xml);
   /// ~markers, from the table as it is (call it holding the lock).
   void publishMarkers(const session::LiveTable& table);
-  void startAimMarker(ros::NodeHandle& private_node);
+  void startAimMarker();
 
+  /// Whether run() goes on publishing.
+  bool running() const { return ros::ok() && !stopping_; }
+
+  /// What the light services, dynamic_reconfigure and the camera's calibration service are
+  /// answered from (by spinner_), and the node handles that file them there.
+  ros::CallbackQueue queue_;
+  ros::NodeHandle node_, private_node_;
+  std::atomic<bool> stopping_{false};
   NodeParameters parameters_;
   SharedTable shared_;
   long markers_drawn_ = -1;  ///< the layout version last drawn on ~markers
