@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Configures and builds cue_sim (the node, the library, the simulate program and the tests)
-# into build/, outside the source tree.
+# Configures and builds cue_sim into build/, outside the source tree: the targets given, or
+# everything (the node, the libraries, the programs, the Python module and the tests).
+#   scripts/build.sh [TARGET...]
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/env.sh"
 mkdir -p "$CUE_SIM_BUILD"
@@ -8,4 +9,5 @@ cmake -S "$CUE_SIM_ROOT" -B "$CUE_SIM_BUILD" -DCMAKE_BUILD_TYPE=Release \
   -DCATKIN_DEVEL_PREFIX="$CUE_SIM_DEVEL" \
   -DPYTHON_EXECUTABLE=/usr/bin/python3 -DPython3_EXECUTABLE=/usr/bin/python3 >"$CUE_SIM_BUILD/cmake.log" 2>&1 \
   || { cat "$CUE_SIM_BUILD/cmake.log"; exit 1; }
-cmake --build "$CUE_SIM_BUILD" -j"$(nproc)" --target all tests
+if [ $# -eq 0 ]; then set -- all tests; fi
+cmake --build "$CUE_SIM_BUILD" -j"$(nproc)" --target "$@"

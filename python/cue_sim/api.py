@@ -8,9 +8,10 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Dict, List, Optional, Tuple
 
-import numpy as np
+from cue_sim._interpreter import core
 
-from cue_sim import _core
+_core = core()  # first: it says which Python to use if this one cannot load the engine or NumPy
+import numpy as np  # noqa: E402
 
 #: Event kinds by number (the `kind` column of Shot.events), as cue_sim/Event.msg numbers them.
 EVENT_KINDS: Dict[int, str] = {0: "slide_to_roll", 1: "roll_to_spin", 2: "roll_to_stop", 3: "spin_to_stop",

@@ -17,8 +17,7 @@ import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.patheffects import Normal, Stroke
 
-from cue_sim import _core
-from cue_sim.api import EVENT_KINDS, Engine, Shot, State, ball_colour, is_striped, simulate
+from cue_sim.api import EVENT_KINDS, Engine, Shot, State, _core, ball_colour, is_striped, simulate
 
 #: Points a path gets between the strike and rest (the engine's sample period is clamped to
 #: [1 ms, 10 s] and 10000 samples, so long shots get fewer).

@@ -5,10 +5,8 @@ import json
 from dataclasses import dataclass
 from typing import Dict, List, Optional, Tuple
 
-import numpy as np
-
-from cue_sim import _core
-from cue_sim.api import EVENT_DTYPE, Engine, State
+from cue_sim.api import EVENT_DTYPE, Engine, State, _core
+import numpy as np  # noqa: E402 (after cue_sim.api, which checks this Python can load it)
 
 
 @dataclass

@@ -2,6 +2,9 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 namespace cue_sim
@@ -10,7 +13,25 @@ namespace camera
 {
 std::string defaultCalibrationPath()
 {
-  return CUE_SIM_DEFAULT_CALIBRATION;
+  // As table names find their URDF files: $CUE_SIM_CONFIG_DIR first, then the source tree, then
+  // the install space (CUE_SIM_CONFIG_DIRS).
+  std::string dirs;
+  if (const char* env = std::getenv("CUE_SIM_CONFIG_DIR"))
+    dirs = std::string(env) + ":";
+  dirs += CUE_SIM_CONFIG_DIRS;
+  std::istringstream list(dirs);
+  std::string dir, tried;
+  while (std::getline(list, dir, ':'))
+  {
+    if (dir.empty())
+      continue;
+    const std::string candidate = dir + "/" + kDefaultCalibrationFile;
+    if (std::ifstream(candidate).good())
+      return candidate;
+    tried += (tried.empty() ? "" : ", ") + candidate;
+  }
+  throw std::invalid_argument("the default calibration is in none of " + tried +
+                              " (set CUE_SIM_CONFIG_DIR to the package's config folder)");
 }
 
 Intrinsics intrinsicsFromFile(const std::string& path)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace cue_sim
 {
@@ -99,8 +100,11 @@ Choice breakChoice(const GamePlay& game)
   Choice c;
   const auto& table = game.engine().table();
   if (game.state().ball_in_hand != BallInHand::None)
+  {
+    c.place_cue_ball = true;
     c.cue_ball = breakSpot(table, game.engine().params().ball_radius);
-  const Eigen::Vector2d from = c.cue_ball.value_or(positionOf(game, 0));
+  }
+  const Eigen::Vector2d from = c.place_cue_ball ? c.cue_ball : positionOf(game, 0);
   c.strike = aimedAt(from, table.footSpot(), PottingPlanner::kBreakSpeed);
   return c;
 }
@@ -115,8 +119,8 @@ Choice PottingPlanner::choose(const GamePlay& game) const
   const bool in_hand = game.state().ball_in_hand != BallInHand::None;
   const bool calls = game.state().rules == "eight_ball";
   const int shooter = game.state().turn;
-  std::optional<Choice> best;
-  double best_score = -1e300;
+  Choice best;  // none yet while best_score is -inf
+  double best_score = -std::numeric_limits<double>::infinity();
   const std::vector<int> legal = game.legalFirst();
   for (const int ball : legal)
     for (int pocket = 0; pocket < static_cast<int>(table.pockets().size()); ++pocket)
@@ -136,8 +140,9 @@ Choice PottingPlanner::choose(const GamePlay& game) const
         GamePlay trial = game;
         if (in_hand)
         {
+          c.place_cue_ball = true;
           c.cue_ball = ghost - back * to_pocket;
-          if (!trial.placeCueBall(*c.cue_ball).empty())
+          if (!trial.placeCueBall(c.cue_ball).empty())
             continue;
         }
         const Eigen::Vector2d cue = positionOf(trial, 0);
@@ -162,8 +167,8 @@ Choice PottingPlanner::choose(const GamePlay& game) const
           break;  // the placement distance matters only with the ball in hand
       }
     }
-  if (best)
-    return *best;
+  if (best_score > -std::numeric_limits<double>::infinity())
+    return best;
   Choice fallback;
   if (!legal.empty())
     fallback.strike = aimedAt(positionOf(game, 0), positionOf(game, legal.front()), 2.0);
@@ -192,8 +197,8 @@ SelfPlaySummary selfPlay(const physics::Engine<double>& engine, const SelfPlayOp
     while (!game.state().over)
     {
       Choice choice = planner.choose(game);
-      if (choice.cue_ball && !game.placeCueBall(*choice.cue_ball).empty())
-        choice.cue_ball.reset();
+      if (choice.place_cue_ball && !game.placeCueBall(choice.cue_ball).empty())
+        choice.place_cue_ball = false;
       game.call(choice.ball, choice.pocket);
       record.before.push_back(game.table());
       record.state_before.push_back(game.state());

@@ -190,6 +190,12 @@ NodeParameters readNodeParameters(ros::NodeHandle& node, ros::NodeHandle& privat
   reader.read("aim_marker", p.aim_marker);
   reader.read("allow_strike_while_moving", options.allow_strike_while_moving);
   reader.read("rack_gap", options.rack_gap);
+  reader.read("rack_jitter", options.rack_jitter);
+  int rack_seed = 0;
+  reader.read("rack_seed", rack_seed);
+  if (rack_seed < 0)
+    refuse("rack_seed", rack_seed, "[0, 2147483647]");
+  options.rack_seed = static_cast<std::uint32_t>(rack_seed);
   reader.read("paused", options.paused);
   options.limits.max_batch_shots = reader.count("max_batch_shots", options.limits.max_batch_shots);
   options.limits.max_samples = reader.count("max_samples", options.limits.max_samples);

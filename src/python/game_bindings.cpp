@@ -71,7 +71,7 @@ void bindGames(py::module_& m)
   py::class_<Game>(m, "Game")
       .def(py::init(&startGame))
       .def("copy", [](const Game& g) { return Game(g); })
-      .def("state_json", [](const Game& g) { return gameStateJson(g.play.state()).dump(); })
+      .def("state_json", [](const Game& g) { return gameStateJson(g.play.state(), g.play.engine().table()).dump(); })
       .def("table", [](const Game& g) { return toArrays(g.play.table()); })
       .def("legal_first", [](const Game& g) { return g.play.legalFirst(); })
       .def("place_cue_ball",

@@ -83,7 +83,7 @@ int writeGameRecord(const game::GameRecord& record, const std::string& dir, cons
     summary["shots"].push_back(turnJson(record, k, engine.table()));
     summary["shots"].back()["file"] = name;
   }
-  summary["end"] = gameStateJson(record.end);
+  summary["end"] = gameStateJson(record.end, engine.table());
   std::ofstream out(std::filesystem::path(dir) / "game.json");
   out << summary.dump(1) << "\n";
   if (!out)

@@ -195,6 +195,33 @@ bool flag(const YAML::Node& node, const std::string& key)
   return value;
 }
 
+/// The pocket a game block calls: by its URDF link name (pocket_foot_ypos), or by its index among
+/// the table's pockets, which are in the order of their link names; -1 (or absent) for none.
+int calledPocket(const YAML::Node& node, const physics::TableModel& table)
+{
+  if (!node)
+    return -1;
+  const int count = static_cast<int>(table.pockets().size());
+  std::string names;
+  for (const auto& p : table.pockets())
+    names += (names.empty() ? "" : ", ") + p.name;
+  const std::string why = "game.called_pocket must be a pocket of table '" + table.name() + "' by name (" + names +
+                          ") or index (0 to " + std::to_string(count - 1) + ", in that order), or -1 for none; got '" +
+                          (node.IsScalar() ? node.Scalar() : std::string("not a scalar")) + "'";
+  if (!node.IsScalar())
+    throw SceneError(why);
+  int index = -1;
+  if (YAML::convert<int>::decode(node, index))
+  {
+    if (index < -1 || index >= count)
+      throw SceneError(why);
+    return index;
+  }
+  if (!table.whyNoPocket(node.Scalar(), index).empty() || index < 0)
+    throw SceneError(why);
+  return index;
+}
+
 const std::vector<std::string> kGroupNames{"open", "solids", "stripes"};
 const std::vector<std::string> kBallInHandNames{"none", "anywhere", "behind_head_string"};
 
@@ -240,7 +267,6 @@ game::GameState gameFrom(const YAML::Node& node)
       throw SceneError("game.groups must be both open, or solids and stripes one each");
   }
   g.called_ball = node["called_ball"] ? integer(node["called_ball"], "game.called_ball") : -1;
-  g.called_pocket = node["called_pocket"] ? integer(node["called_pocket"], "game.called_pocket") : -1;
   if (g.called_ball < -1 || g.called_ball > 15)
     throw SceneError("game.called_ball must be an object ball 1-15, or -1 for none; got " +
                      std::to_string(g.called_ball));
@@ -327,11 +353,7 @@ Scene loadScene(const std::string& yaml_text)
     if (root["game"])
     {
       scene.game = gameFrom(root["game"]);
-      if (scene.game->called_pocket < -1 ||
-          scene.game->called_pocket >= static_cast<int>(scene.table->pockets().size()))
-        throw SceneError("game.called_pocket must be a pocket index in [0, " +
-                         std::to_string(scene.table->pockets().size() - 1) + "], or -1 for none; got " +
-                         std::to_string(scene.game->called_pocket));
+      scene.game->called_pocket = calledPocket(root["game"]["called_pocket"], *scene.table);
       if (scene.shot && scene.shot->ball != 0)
         throw SceneError("shot.ball must be 0 in a game: only the cue ball is struck");
       if (root["duration"])
@@ -399,7 +421,9 @@ std::string sceneYaml(const Scene& scene, const std::string& comment)
     out << "game:\n  rules: " << g.rules << "\n  players: [" << YAML::Node(g.players[0]) << ", "
         << YAML::Node(g.players[1]) << "]\n  turn: " << g.turn << "\n  break: " << (g.break_shot ? "true" : "false")
         << "\n  groups: [" << groups(0) << ", " << groups(1) << "]\n  called_ball: " << g.called_ball
-        << "\n  called_pocket: " << g.called_pocket
+        << "\n  called_pocket: "
+        << (g.called_pocket >= 0 ? scene.table->pockets()[static_cast<std::size_t>(g.called_pocket)].name
+                                 : std::string("-1"))
         << "\n  ball_in_hand: " << kBallInHandNames[static_cast<std::size_t>(g.ball_in_hand)] << "\n  fouls: ["
         << g.consecutive_fouls[0] << ", " << g.consecutive_fouls[1]
         << "]\n  push_out_allowed: " << (g.push_out_allowed ? "true" : "false") << "\n";

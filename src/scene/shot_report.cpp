@@ -68,8 +68,10 @@ json rulingJson(const game::Ruling& r)
           {"groups", {game::groupName(r.groups[0]), game::groupName(r.groups[1])}}};
 }
 
-json gameStateJson(const game::GameState& g)
+json gameStateJson(const game::GameState& g, const physics::TableModel& table)
 {
+  const json called_pocket =
+      g.called_pocket >= 0 ? json(table.pockets()[static_cast<std::size_t>(g.called_pocket)].name) : json(-1);
   const std::string in_hand = game::ballInHandName(g.ball_in_hand);
   return {{"rules", g.rules},
           {"players", g.players},
@@ -77,7 +79,7 @@ json gameStateJson(const game::GameState& g)
           {"break", g.break_shot},
           {"groups", {game::groupName(g.groups[0]), game::groupName(g.groups[1])}},
           {"called_ball", g.called_ball},
-          {"called_pocket", g.called_pocket},
+          {"called_pocket", called_pocket},
           {"ball_in_hand", in_hand.empty() ? "none" : in_hand},
           {"fouls", g.consecutive_fouls},
           {"push_out_allowed", g.push_out_allowed},

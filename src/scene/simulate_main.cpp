@@ -89,7 +89,7 @@ int main(int argc, char** argv)
           cue_sim::game::judgeShot(*cue_sim::game::makeRules(scene.game->rules), *scene.game, on_table,
                                    {cue_sim::game::readShot(events, scene.table.get()), scene.shot->push_out});
       report["ruling"] = cue_sim::rulingJson(ruling);
-      report["game"] = cue_sim::gameStateJson(cue_sim::game::afterRuling(*scene.game, ruling));
+      report["game"] = cue_sim::gameStateJson(cue_sim::game::afterRuling(*scene.game, ruling), *scene.table);
     }
     std::cout << report.dump(indent) << std::endl;
     return kExitOk;

@@ -27,6 +27,8 @@ std::string LiveTableOptions::whyInvalid() const
   std::ostringstream why;
   if (!(rack_gap >= 0 && rack_gap < 0.01))
     why << "rack_gap must be in [0, 0.01) m, got " << rack_gap;
+  else if (!(rack_jitter >= 0 && rack_jitter <= rack_gap / 2))
+    why << "rack_jitter must be in [0, rack_gap / 2] = [0, " << rack_gap / 2 << "] m, got " << rack_jitter;
   else if (const std::string factor = TableClock::whyBadFactor(real_time_factor); !factor.empty())
     why << factor;
   else if (!noise.validate().empty())
@@ -50,6 +52,11 @@ LiveTable::LiveTable(std::shared_ptr<const physics::Engine<double>> engine, cons
     throw std::invalid_argument(why);
   RackRequest request;
   request.layout = rack;
+  if (rack != "custom" && rack != "empty")
+  {
+    request.jitter = options.rack_jitter;
+    request.seed = options.rack_seed;
+  }
   physics::TableState<double> layout;
   const std::string bad_rack = edits_.whyNotRack(request, balls_.engine(), layout);
   if (!bad_rack.empty())

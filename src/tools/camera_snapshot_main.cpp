@@ -20,7 +20,7 @@ int main(int argc, char** argv)
   std::string table_name = "7ft", rack = "eight", out = "camera.png";
   double after_ms = 0, speed = 8.0, phi = 0.002, exposure = 0.004, height = cue_sim::camera::kOverheadHeight, noise = 0;
   int width = 0, image_height = 0;
-  std::string calibration = cue_sim::camera::defaultCalibrationPath();
+  std::string calibration;  // empty: the package's default
   app.add_option("--table", table_name, "a bundled table (7ft, 9ft, carom) or a URDF file");
   app.add_option("--rack", rack, "eight, nine or empty");
   app.add_option("--after-ms", after_ms, "photograph this long after the break's strike; 0: the rack, not struck")
@@ -31,7 +31,9 @@ int main(int argc, char** argv)
   app.add_option("--height", height, "[m] the camera over the cloth's centre, looking down")
       ->check(CLI::Range(0.3, 20.0));
   app.add_option("--noise", noise, "Gaussian sensor noise [8-bit levels]")->check(CLI::Range(0.0, 50.0));
-  app.add_option("--calibration", calibration, "the camera's calibration file (camera_info_manager's YAML)");
+  app.add_option("--calibration", calibration,
+                 "the camera's calibration file (camera_info_manager's YAML); default: the package's "
+                 "config/camera/overhead_1920x1200.yaml, in the source tree or the install space");
   app.add_option("--width", width, "[px] the calibrated image read out this wide (with --image-height)")
       ->check(CLI::Range(16, 8192));
   app.add_option("--image-height", image_height, "[px] and this high")->check(CLI::Range(16, 8192));
@@ -59,7 +61,8 @@ int main(int argc, char** argv)
         throw std::invalid_argument(outcome.message);
       live.advanceTo(after);
     }
-    camera::Intrinsics k = camera::intrinsicsFromFile(calibration);
+    camera::Intrinsics k =
+        camera::intrinsicsFromFile(calibration.empty() ? camera::defaultCalibrationPath() : calibration);
     if ((width == 0) != (image_height == 0))
       throw std::invalid_argument("--width and --image-height: give both or neither");
     if (width > 0)

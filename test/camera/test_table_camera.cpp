@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <opencv2/imgproc.hpp>
 
 #include "../session/live_table_fixtures.hpp"
@@ -57,7 +59,7 @@ TEST(PinholeCamera, ProjectsAndUnprojectsThroughTheLens)
 {
   Intrinsics k;
   k.distortion = {-0.12, 0.05, 0.001, -0.0008, -0.01};
-  for (const Eigen::Vector2d pixel :
+  for (const Eigen::Vector2d& pixel :
        {Eigen::Vector2d(0, 0), Eigen::Vector2d(1919, 1199), Eigen::Vector2d(960, 10), Eigen::Vector2d(400.25, 777.5)})
   {
     const Eigen::Vector2d n = normalisedOf(k, pixel);
@@ -81,6 +83,22 @@ TEST(PinholeCamera, ScalingKeepsTheFieldOfView)
   // The image's corners see the same rays.
   EXPECT_NEAR((-0.5 - k.cx) / k.fx, (-0.5 - 959.5) / 1365.0, 1e-12);
   EXPECT_NEAR((1279.5 - k.cx) / k.fx, (1919.5 - 959.5) / 1365.0, 1e-12);
+}
+
+TEST(CalibrationFile, TheDefaultIsFoundInTheConfigFolderGivenElseThePackages)
+{
+  const std::string packaged = defaultCalibrationPath();
+  ASSERT_NE(packaged.find(kDefaultCalibrationFile), std::string::npos);
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "cue_sim_config_test";
+  std::filesystem::create_directories(dir / "camera");
+  std::filesystem::copy_file(packaged, dir / kDefaultCalibrationFile,
+                             std::filesystem::copy_options::overwrite_existing);
+  ::setenv("CUE_SIM_CONFIG_DIR", dir.c_str(), 1);
+  EXPECT_EQ(defaultCalibrationPath(), (dir / kDefaultCalibrationFile).string());
+  ::setenv("CUE_SIM_CONFIG_DIR", (dir / "nowhere").c_str(), 1);
+  EXPECT_EQ(defaultCalibrationPath(), packaged) << "a folder without it is passed over";
+  ::unsetenv("CUE_SIM_CONFIG_DIR");
+  std::filesystem::remove_all(dir);
 }
 
 TEST(CalibrationFile, TheBundledOneIsTheDefaultCameraAndABadOneIsNamed)
@@ -128,8 +146,9 @@ TEST(TableCamera, GroundTruthIsWhereGeometryPutsTheBall)
   const TableCamera camera = overheadCamera(*engine);
   const double R = engine->params().ball_radius;
   const Eigen::Vector2d c = engine->table().clothCentre();
-  const auto truth = camera.groundTruth(
-      {{3, Eigen::Vector3d(c.x() + 0.5, c.y() + 0.25, R)}, {4, Eigen::Vector3d(c.x() + 0.5, c.y(), R), {}, false}});
+  const auto truth =
+      camera.groundTruth({{3, Eigen::Vector3d(c.x() + 0.5, c.y() + 0.25, R)},
+                          {4, Eigen::Vector3d(c.x() + 0.5, c.y(), R), Eigen::Quaterniond::Identity(), false}});
   ASSERT_EQ(truth.size(), 2u);
   const double depth = kHeight - R;
   EXPECT_NEAR(truth[0].pixel.x(), 959.5 + 1365 * 0.5 / depth, 1e-9);

@@ -413,7 +413,9 @@ TEST(Game, PlannersPlayWholeGamesThroughTheServices)
         EXPECT_EQ(game->last_ruling.reason, struck.ruling.reason);
         EXPECT_EQ(game->over, struck.ruling.game_over);
         if (!game->over)
+        {
           EXPECT_EQ(game->turn, struck.ruling.next_player);
+        }
       }
       EXPECT_TRUE(game->over) << rules << " game " << g << " not over after " << shots << " shots";
       std::printf(

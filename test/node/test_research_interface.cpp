@@ -476,7 +476,7 @@ TEST_F(ResearchInterfaceTest, APreviewLeavesTheScreenWhenTheTableMovesOn)
   EXPECT_FALSE(preview.nextDrawsPaths(seen)) << "struck: the preview is cleared";
   table_.atRest(30);
 
-  for (const std::string& edit : {"rack", "reset"})
+  for (const std::string edit : {"rack", "reset"})
   {
     seen = preview.count();
     ASSERT_TRUE(table_.predict(shot).success);

@@ -20,6 +20,19 @@ def engine():
     return cue_sim.Engine("7ft")
 
 
+def test_another_python_is_told_which_one_to_run():
+    # A python3 without Debian's NumPy (as a pyenv shim first on PATH): the import names the
+    # interpreter the module was built for instead of failing inside NumPy or the extension.
+    from cue_sim import _built_for
+    package_parent = os.path.dirname(os.path.dirname(_built_for.__file__))
+    env = {"PATH": "/usr/bin:/bin", "PYTHONPATH": package_parent, "HOME": os.environ.get("HOME", "/tmp")}
+    out = subprocess.run([sys.executable, "-S", "-c", "import cue_sim; cue_sim.Engine('7ft')"], env=env,
+                         capture_output=True, text=True, timeout=60)
+    assert out.returncode != 0
+    assert f"cue_sim was built for {_built_for.EXECUTABLE} (Python {_built_for.VERSION}" in out.stderr, out.stderr
+    assert f"run {_built_for.EXECUTABLE} instead" in out.stderr, out.stderr
+
+
 def test_imports_and_runs_without_ros():
     # Only the package's own directory on the path: no ROS variables, no setup files sourced.
     package_parent = os.path.dirname(os.path.dirname(cue_sim.__file__))

@@ -135,6 +135,28 @@ TEST(SceneFile, AGameBlockDefaultsToAGameJustStartedAndRoundTrips)
   EXPECT_EQ(cue_sim::sceneYaml(back), cue_sim::sceneYaml(set));
 }
 
+TEST(SceneFile, ACalledPocketIsNamedByItsLinkOrItsIndexInLinkNameOrder)
+{
+  const auto called = [](const std::string& pocket) {
+    return cue_sim::loadScene("rack: eight\ngame: {rules: eight_ball, called_ball: 3, called_pocket: " + pocket +
+                              "}\n");
+  };
+  const cue_sim::Scene by_name = called("pocket_foot_ypos");
+  ASSERT_TRUE(by_name.game);
+  const auto& pockets = by_name.table->pockets();
+  ASSERT_EQ(pockets.size(), 6u);
+  for (std::size_t i = 1; i < pockets.size(); ++i)
+    EXPECT_LT(pockets[i - 1].name, pockets[i].name) << "the index order is the link names' order";
+  EXPECT_EQ(pockets[static_cast<std::size_t>(by_name.game->called_pocket)].name, "pocket_foot_ypos");
+  for (int i = 0; i < 6; ++i)
+    EXPECT_EQ(called(std::to_string(i)).game->called_pocket, i);
+  EXPECT_EQ(called("1").game->called_pocket, by_name.game->called_pocket);
+  EXPECT_EQ(called("-1").game->called_pocket, -1);
+  // Written back by name.
+  EXPECT_NE(cue_sim::sceneYaml(by_name).find("called_pocket: pocket_foot_ypos"), std::string::npos);
+  EXPECT_EQ(cue_sim::loadScene(cue_sim::sceneYaml(by_name)).game->called_pocket, by_name.game->called_pocket);
+}
+
 TEST(SceneFile, BadGameBlocksNameTheKey)
 {
   EXPECT_NE(errorOf("game: {turn: 0}\n").find("game needs 'rules'"), std::string::npos);
@@ -144,6 +166,11 @@ TEST(SceneFile, BadGameBlocksNameTheKey)
   EXPECT_NE(errorOf("game: {rules: eight_ball, fouls: [3, 0]}\n").find("game.fouls[0] must be 0, 1 or 2"),
             std::string::npos);
   EXPECT_NE(errorOf("game: {rules: eight_ball, called_pocket: 6}\n").find("game.called_pocket"), std::string::npos);
+  EXPECT_NE(errorOf("game: {rules: eight_ball, called_pocket: pocket_nowhere}\n")
+                .find("game.called_pocket must be a pocket of table 'cue_sim_table_7ft' by name (pocket_foot_yneg, "
+                      "pocket_foot_ypos, pocket_head_yneg, pocket_head_ypos, pocket_side_yneg, pocket_side_ypos) or "
+                      "index (0 to 5, in that order), or -1 for none; got 'pocket_nowhere'"),
+            std::string::npos);
   EXPECT_NE(errorOf("game: {rules: eight_ball, ball_in_hand: kitchen}\n").find("game.ball_in_hand must be one of"),
             std::string::npos);
   EXPECT_NE(errorOf("game: {rules: eight_ball, break: maybe}\n").find("game.break must be true or false"),

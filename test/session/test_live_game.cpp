@@ -195,8 +195,12 @@ TEST_F(LiveGameTest, ABreakIsRuledAsTheCoreGameRulesItAndTakenAtRest)
   }
   // What the live table shows is the game's table.
   for (const auto& b : table_.motion().balls())
+  {
     if (b.inPlay())
+    {
       EXPECT_EQ(b.r, live[static_cast<std::size_t>(table_.game().play()->table().indexOf(b.id))].r);
+    }
+  }
 }
 
 TEST_F(LiveGameTest, AScratchGivesTheOpponentBallInHandWhichTheRulesPlace)

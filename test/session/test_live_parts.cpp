@@ -111,8 +111,12 @@ TEST(LiveBalls, NewPhysicsWaitsForRestAndMovesTheBallsToTheirNewHeight)
   EXPECT_EQ(table.engine().params().ball_radius, physics::PhysicsParams<double>().ball_radius);
   EXPECT_GT(table.motion().layoutVersion(), layout) << "the table is drawn again";
   for (const auto& b : table.motion().balls())
+  {
     if (b.inPlay())
+    {
       EXPECT_EQ(b.r.z(), physics::PhysicsParams<double>().ball_radius) << "ball " << b.id;
+    }
+  }
 }
 
 TEST(TableEdits, RequestsAreCheckedInFullIntoWhatTheyMake)

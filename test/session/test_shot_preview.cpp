@@ -92,20 +92,30 @@ TEST(ShotPreview, PathsAreDrawnFromTheTrajectoriesWithoutRunningTheShot)
     EXPECT_EQ(path.points.front(), b.rack.balls[i].r.head<2>()) << "ball " << path.id << " starts where it rests";
     const physics::Ball<double>& last = prediction.final_balls[i];
     if (last.inPlay())
+    {
       EXPECT_EQ(path.points.back(), last.r.head<2>()) << "ball " << path.id << " ends where it comes to rest";
+    }
     // Each change of the ball's motion on the cloth is a corner of its path.
     for (const auto& piece : prediction.trajectories[i].pieces)
+    {
       if (piece.ball.inPlay())
+      {
         EXPECT_NE(std::find(path.points.begin(), path.points.end(),
                             physics::evolve(piece.ball, piece.start, b.engine->params()).r.head<2>()),
                   path.points.end())
             << "ball " << path.id << " at " << piece.start;
+      }
+    }
   }
   // Balls that do not move have no path.
   for (std::size_t i = 0; i < b.rack.balls.size(); ++i)
+  {
     if (prediction.trajectories[i].pieces.size() == 1)
+    {
       EXPECT_TRUE(
           std::none_of(paths.begin(), paths.end(), [&](const PreviewPath& p) { return p.id == b.rack.balls[i].id; }));
+    }
+  }
   // Without trajectories (a batch, a strike's own run) nothing is kept, and nothing is drawn.
   EXPECT_TRUE(predictShot(*b.engine, b.rack, b.shot, {}).trajectories.empty());
   EXPECT_TRUE(previewPaths(predictShot(*b.engine, b.rack, b.shot, {}), b.engine->params()).empty());

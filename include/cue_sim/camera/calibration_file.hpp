@@ -11,7 +11,10 @@ namespace cue_sim
 {
 namespace camera
 {
-/// The calibration the node uses by default (config/camera/overhead_1920x1200.yaml).
+/// The calibration the node uses by default, relative to the package's config folder.
+constexpr const char* kDefaultCalibrationFile = "camera/overhead_1920x1200.yaml";
+/// Where that file is: in $CUE_SIM_CONFIG_DIR if set and there, else in the source tree, else in
+/// the install space. Throws std::invalid_argument naming the places it looked.
 std::string defaultCalibrationPath();
 /// The intrinsics in a calibration file. Throws std::invalid_argument naming the file and what
 /// is missing or wrong in it.

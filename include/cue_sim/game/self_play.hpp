@@ -19,7 +19,8 @@ namespace game
 /// strike it plans (execution noise comes on top).
 struct Choice
 {
-  std::optional<Eigen::Vector2d> cue_ball;
+  bool place_cue_ball = false;                         ///< the ball is in hand: place it first, at cue_ball
+  Eigen::Vector2d cue_ball = Eigen::Vector2d::Zero();  ///< [m] where, if place_cue_ball
   int ball = -1, pocket = -1;
   physics::CueStrike<double> strike;
 };

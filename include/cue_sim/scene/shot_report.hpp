@@ -15,7 +15,7 @@ nlohmann::json shotReport(const physics::Engine<double>& engine, const physics::
 /// A referee's ruling: foul, rule, reason, ball_in_hand ("anywhere", "behind_head_string" or
 /// ""), next_player, continues, respot (ids), rerack, game_over, winner (-1 for none), groups.
 nlohmann::json rulingJson(const game::Ruling& ruling);
-/// A game's state, keyed as a scene's game block.
-nlohmann::json gameStateJson(const game::GameState& state);
+/// A game's state, keyed as a scene's game block (the called pocket by its link name on `table`).
+nlohmann::json gameStateJson(const game::GameState& state, const physics::TableModel& table);
 
 }  // namespace cue_sim

@@ -30,7 +30,12 @@ namespace session
 struct LiveTableOptions
 {
   bool allow_strike_while_moving = false;
-  double rack_gap = 1e-5;         ///< [m] between neighbouring balls of a standard rack, in [0, 0.01)
+  double rack_gap = 1e-5;  ///< [m] between neighbouring balls of a standard rack, in [0, 0.01)
+  /// [m] The rack the table starts with (and ~reset returns to, until the next ~rack) has each
+  /// ball but the apex moved by up to this, in [0, rack_gap / 2], seeded by rack_seed: a real
+  /// rack's uneven gaps, the same on every run. 0: the perfect triangle.
+  double rack_jitter = 0;
+  std::uint32_t rack_seed = 0;
   double real_time_factor = 1.0;  ///< physics time per stamp time, in (0, 1000]
   bool paused = false;
   physics::ExecutionNoise noise;  ///< the deviations of ~strike's noise, and of predictions that ask for it

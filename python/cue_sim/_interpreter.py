@@ -1,0 +1,33 @@
+"""The compiled engine, and a plain answer when this Python cannot load it.
+
+cue_sim._core is built for one interpreter (the build's PYTHON_EXECUTABLE, on Debian /usr/bin/python3
+with Debian's NumPy); a python3 that comes first on PATH (pyenv, a virtualenv) may lack NumPy or be
+another version. Then the import says which interpreter to use instead of failing deep inside.
+"""
+import sys
+
+
+def _built_for():
+    try:
+        from cue_sim import _built_for as built  # written next to _core by the build
+        return built.EXECUTABLE, built.VERSION
+    except ImportError:
+        return "the Python it was built with", "?"
+
+
+def wrong_interpreter(error):
+    """An ImportError saying which interpreter cue_sim was built for, and which one this is."""
+    executable, version = _built_for()
+    here = f"{sys.version_info.major}.{sys.version_info.minor}"
+    return ImportError(f"cue_sim was built for {executable} (Python {version}, with its NumPy); this is "
+                       f"{sys.executable} (Python {here}), which cannot load it ({error}): run {executable} instead")
+
+
+def core():
+    """cue_sim._core, loaded (with NumPy, which it needs)."""
+    try:
+        import numpy  # noqa: F401
+        from cue_sim import _core
+    except ImportError as error:
+        raise wrong_interpreter(error) from error
+    return _core
