@@ -18,12 +18,14 @@
 #include <utility>
 #include <vector>
 
+#include "ros_conditions.hpp"
+
 class TableClient
 {
 public:
   explicit TableClient(const std::string& node = "/table") : node_(node)
   {
-    EXPECT_TRUE(ros::service::waitForService(node + "/predict_batch", ros::Duration(20))) << node;
+    EXPECT_TRUE(ros::service::waitForService(node + "/predict_batch", ros::Duration(kGenerousWait))) << node;
     strike_ = nh_.serviceClient<cue_sim::Strike>(node + "/strike");
     predict_ = nh_.serviceClient<cue_sim::Predict>(node + "/predict");
     predict_batch_ = nh_.serviceClient<cue_sim::PredictBatch>(node + "/predict_batch");
@@ -115,36 +117,36 @@ public:
   cue_sim::TableStateConstPtr freshState()
   {
     const ros::Time asked = ros::Time::now();
-    for (int i = 0; i < 500; ++i)
-    {
-      ros::WallDuration(0.01).sleep();
-      std::lock_guard<std::mutex> lock(mutex_);
-      if (last_state_ && last_state_->header.stamp > asked)
-        return last_state_;
-    }
-    ADD_FAILURE() << "no " << node_ << "/state message";
+    cue_sim::TableStateConstPtr fresh;
+    if (waitFor([&] {
+          std::lock_guard<std::mutex> lock(mutex_);
+          fresh = last_state_;
+          return fresh && fresh->header.stamp > asked;
+        }))
+      return fresh;
+    ADD_FAILURE() << "no " << node_ << "/state message stamped after " << asked;
     return boost::make_shared<cue_sim::TableState>();
   }
 
   /// The first ~state stamped at or after `stamp` (a time the node reported).
   cue_sim::TableStateConstPtr stateAfter(const ros::Time& stamp)
   {
-    const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(10);
-    while (ros::WallTime::now() < until)
-    {
-      ros::WallDuration(0.01).sleep();
-      std::lock_guard<std::mutex> lock(mutex_);
-      if (last_state_ && last_state_->header.stamp >= stamp)
-        return last_state_;
-    }
+    cue_sim::TableStateConstPtr after;
+    if (waitFor([&] {
+          std::lock_guard<std::mutex> lock(mutex_);
+          after = last_state_;
+          return after && after->header.stamp >= stamp;
+        }))
+      return after;
     ADD_FAILURE() << "no " << node_ << "/state message stamped at or after " << stamp;
     return boost::make_shared<cue_sim::TableState>();
   }
 
-  /// The first ~state at rest, waiting at most `timeout` seconds of wall time.
+  /// The first ~state at rest, waiting at most `timeout` seconds of wall time (the shot's own
+  /// duration, say) and kGenerousWait more for a loaded machine.
   cue_sim::TableStateConstPtr atRest(double timeout)
   {
-    const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(timeout);
+    const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(timeout + kGenerousWait);
     while (ros::WallTime::now() < until)
     {
       const auto state = freshState();

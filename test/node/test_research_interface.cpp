@@ -9,6 +9,7 @@
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <visualization_msgs/InteractiveMarkerFeedback.h>
 #include <visualization_msgs/InteractiveMarkerInit.h>
+#include <visualization_msgs/InteractiveMarkerUpdate.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include <Eigen/Geometry>
@@ -77,13 +78,19 @@ protected:
     ASSERT_TRUE(table_.rack("custom", kIds, kPositions).success);
   }
 
-  std::vector<cue_sim::Event> eventsSince(const ros::Time& stamp)
+  /// The ~events stamped at or after `stamp`, once `count` of them have arrived (~events comes on
+  /// a connection of its own: it may trail ~state at rest), or all there are after the deadline.
+  std::vector<cue_sim::Event> eventsSince(const ros::Time& stamp, std::size_t count)
   {
-    std::lock_guard<std::mutex> lock(mutex_);
     std::vector<cue_sim::Event> out;
-    for (const auto& e : events_)
-      if (e.stamp >= stamp)
-        out.push_back(e);
+    waitFor([&] {
+      std::lock_guard<std::mutex> lock(mutex_);
+      out.clear();
+      for (const auto& e : events_)
+        if (e.stamp >= stamp)
+          out.push_back(e);
+      return out.size() >= count;
+    });
     return out;
   }
 
@@ -124,7 +131,7 @@ TEST_F(ResearchInterfaceTest, StrikeDoesExactlyWhatPredictSaidBitForBit)
   expectSameBalls(rest.balls, prediction.final_balls, "live table at rest against the prediction");
 
   // ~events carried every event, stamped at the strike's stamp plus its shot time.
-  const std::vector<cue_sim::Event> live = eventsSince(struck.stamp);
+  const std::vector<cue_sim::Event> live = eventsSince(struck.stamp, prediction.events.size());
   expectSameEvents(live, prediction.events, "~events against the prediction");
   for (const auto& e : live)
     EXPECT_NEAR((e.stamp - struck.stamp).toSec(), e.shot_time, 1e-9);
@@ -343,13 +350,14 @@ TEST_F(ResearchInterfaceTest, StrikeCueFindsTheBallAndTheStrikeFromThePoseInAnyF
   // The node waits ~tf_timeout for a frame, not for it to appear: a robot asks again once its
   // base frame is on tf. Until then every call is refused and changes nothing.
   cue_sim::StrikeCue::Response struck = table_.strikeCue(in_base, 1.0);
-  const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(5);
-  while (!struck.success && struck.message.find("cannot transform") != std::string::npos &&
-         ros::WallTime::now() < until)
-  {
-    ros::WallDuration(0.05).sleep();
-    struck = table_.strikeCue(in_base, 1.0);
-  }
+  waitFor(
+      [&] {
+        if (struck.success || struck.message.find("cannot transform") == std::string::npos)
+          return true;
+        struck = table_.strikeCue(in_base, 1.0);
+        return false;
+      },
+      kGenerousWait, 0.05);
   ASSERT_TRUE(struck.success) << struck.message;
   EXPECT_EQ(struck.shot.ball_id, 0);
   EXPECT_NEAR(struck.shot.phi, planned.phi, 1e-9);
@@ -363,7 +371,7 @@ TEST_F(ResearchInterfaceTest, StrikeCueFindsTheBallAndTheStrikeFromThePoseInAnyF
   EXPECT_EQ(p.time_to_rest, struck.time_to_rest);
   EXPECT_EQ(p.events.size(), struck.num_events);
   // The cue stick is shown along the stroke, its tip at the ball.
-  const auto cue = ros::topic::waitForMessage<visualization_msgs::Marker>("/table/cue", ros::Duration(5));
+  const auto cue = ros::topic::waitForMessage<visualization_msgs::Marker>("/table/cue", ros::Duration(kGenerousWait));
   ASSERT_TRUE(cue);
   EXPECT_EQ(cue->type, visualization_msgs::Marker::CYLINDER);
   const Eigen::Quaterniond q(cue->pose.orientation.w, cue->pose.orientation.x, cue->pose.orientation.y,
@@ -405,8 +413,9 @@ TEST_F(ResearchInterfaceTest, PredictShowsThePathsOfTheBallsThatMoveUntilTheyRes
   const cue_sim::TableState rack = *table_.atRest(5);
   const cue_sim::Prediction p = table_.predict(TableClient::shot(0, 1.0, 0.05, 0.1, 0.2, -0.1));
   ASSERT_TRUE(p.success) << p.message;
-  ros::Duration(0.3).sleep();
-  const auto preview = ros::topic::waitForMessage<visualization_msgs::MarkerArray>("/table/preview", ros::Duration(5));
+  // Published before ~predict answers, and latched: a new subscriber gets this prediction's.
+  const auto preview =
+      ros::topic::waitForMessage<visualization_msgs::MarkerArray>("/table/preview", ros::Duration(kGenerousWait));
   ASSERT_TRUE(preview);
   ASSERT_FALSE(preview->markers.empty());
   EXPECT_EQ(preview->markers[0].action, visualization_msgs::Marker::DELETEALL);
@@ -439,20 +448,14 @@ public:
                                                          }))
   {
   }
-  /// Waits for a message after the `seen`-th; true if it draws paths (more than its DELETEALL).
-  bool nextDrawsPaths(int seen, double timeout = 5)
+  /// Waits until the latest message draws paths (more than its DELETEALL), or is only a
+  /// DELETEALL: true once it does as asked.
+  bool becomes(bool draws_paths)
   {
-    for (int i = 0; i < timeout / 0.02 && count() <= seen; ++i)
-      ros::WallDuration(0.02).sleep();
-    std::lock_guard<std::mutex> lock(mutex_);
-    EXPECT_GT(count_, seen) << "no message on ~preview";
-    EXPECT_FALSE(last_.markers.empty());
-    return last_.markers.size() > 1;
-  }
-  int count()
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return count_;
+    return waitFor([&] {
+      std::lock_guard<std::mutex> lock(mutex_);
+      return count_ > 0 && !last_.markers.empty() && (last_.markers.size() > 1) == draws_paths;
+    });
   }
 
 private:
@@ -464,24 +467,26 @@ private:
 
 TEST_F(ResearchInterfaceTest, APreviewLeavesTheScreenWhenTheTableMovesOn)
 {
-  table_.atRest(5);
+  // From a cleared preview (a rack clears it), each step turns it the other way.
   PreviewWatcher preview(nh_);
-  ros::Duration(0.5).sleep();  // the latched preview, if any
+  ASSERT_TRUE(table_.rack("eight").success);
+  ASSERT_TRUE(preview.becomes(false)) << "racked: no preview";
+  table_.atRest(5);
   const cue_sim::Shot shot = TableClient::shot(0, 1.5, 0.3);
-  int seen = preview.count();
-  ASSERT_TRUE(table_.predict(shot).success);
-  EXPECT_TRUE(preview.nextDrawsPaths(seen)) << "a prediction draws its paths";
-  seen = preview.count();
+  const cue_sim::Prediction first = table_.predict(shot);
+  ASSERT_TRUE(first.success) << first.message;
+  EXPECT_TRUE(preview.becomes(true)) << "a prediction draws its paths";
   ASSERT_TRUE(table_.strike(shot).success);
-  EXPECT_FALSE(preview.nextDrawsPaths(seen)) << "struck: the preview is cleared";
+  EXPECT_TRUE(preview.becomes(false)) << "struck: the preview is cleared";
   table_.atRest(30);
+  ASSERT_TRUE(table_.rack("eight").success);  // the cue ball back, whatever the shot did
+  table_.atRest(5);
 
   for (const std::string edit : {"rack", "reset"})
   {
-    seen = preview.count();
-    ASSERT_TRUE(table_.predict(shot).success);
-    EXPECT_TRUE(preview.nextDrawsPaths(seen));
-    seen = preview.count();
+    const cue_sim::Prediction again = table_.predict(shot);
+    ASSERT_TRUE(again.success) << edit << ": " << again.message;
+    EXPECT_TRUE(preview.becomes(true));
     if (edit == "rack")
       ASSERT_TRUE(table_.rack("eight").success);
     else
@@ -489,7 +494,7 @@ TEST_F(ResearchInterfaceTest, APreviewLeavesTheScreenWhenTheTableMovesOn)
       std_srvs::Trigger reset;
       ASSERT_TRUE(ros::service::call("/table/reset", reset) && reset.response.success);
     }
-    EXPECT_FALSE(preview.nextDrawsPaths(seen)) << edit << ": the preview is cleared";
+    EXPECT_TRUE(preview.becomes(false)) << edit << ": the preview is cleared";
     table_.atRest(5);
   }
 }
@@ -602,8 +607,8 @@ TEST_F(ResearchInterfaceTest, TheAimMarkerFiresTheShotItShows)
   const auto cue_ball = TableClient::byId(rack.balls).at(0).position;
   // rviz's side of the conversation: the marker as the server sends it, and the user's drag
   // and menu click as feedback.
-  const auto full =
-      ros::topic::waitForMessage<visualization_msgs::InteractiveMarkerInit>("/table/aim/update_full", ros::Duration(5));
+  const auto full = ros::topic::waitForMessage<visualization_msgs::InteractiveMarkerInit>("/table/aim/update_full",
+                                                                                          ros::Duration(kGenerousWait));
   ASSERT_TRUE(full);
   ASSERT_EQ(full->markers.size(), 1u);
   // Nothing rviz would complete with a text of the empty description, or draw as an empty text.
@@ -619,9 +624,18 @@ TEST_F(ResearchInterfaceTest, TheAimMarkerFiresTheShotItShows)
   EXPECT_NEAR(full->markers[0].pose.position.x, cue_ball.x + 0.5, 1e-12) << "the default aim: 2 m/s along +x";
   EXPECT_NEAR(full->markers[0].pose.position.y, cue_ball.y, 1e-12);
   ros::Publisher feedback = nh_.advertise<visualization_msgs::InteractiveMarkerFeedback>("/table/aim/feedback", 10);
-  for (int i = 0; i < 100 && feedback.getNumSubscribers() == 0; ++i)
-    ros::Duration(0.05).sleep();
-  ASSERT_GT(feedback.getNumSubscribers(), 0u);
+  ASSERT_TRUE(waitFor([&] { return feedback.getNumSubscribers() > 0; }));
+  // The server's updates: the drag has taken effect once the marker stands at the handle.
+  std::mutex update_mutex;
+  bool at_handle = false;
+  ros::Subscriber updates = nh_.subscribe<visualization_msgs::InteractiveMarkerUpdate>(
+      "/table/aim/update", 10, [&](const visualization_msgs::InteractiveMarkerUpdateConstPtr& u) {
+        std::lock_guard<std::mutex> lock(update_mutex);
+        for (const auto& m : u->markers)
+          at_handle |= std::abs(m.pose.position.x - (cue_ball.x + 0.2)) < 1e-9 &&
+                       std::abs(m.pose.position.y - (cue_ball.y + 0.1)) < 1e-9;
+      });
+  ASSERT_TRUE(waitFor([&] { return updates.getNumPublishers() > 0; }));
   visualization_msgs::InteractiveMarkerFeedback f;
   f.header.frame_id = "table";
   f.client_id = "/test";
@@ -632,7 +646,10 @@ TEST_F(ResearchInterfaceTest, TheAimMarkerFiresTheShotItShows)
   f.pose.position.y = cue_ball.y + 0.1;
   f.pose.orientation.w = 1;
   feedback.publish(f);
-  ros::Duration(0.3).sleep();
+  ASSERT_TRUE(waitFor([&] {
+    std::lock_guard<std::mutex> lock(update_mutex);
+    return at_handle;
+  })) << "the marker did not follow the drag";
   // What the marker aims: heading to the handle, 4 m/s per metre of arrow.
   const Eigen::Vector2d aim =
       Eigen::Vector2d(f.pose.position.x, f.pose.position.y) - Eigen::Vector2d(cue_ball.x, cue_ball.y);
@@ -660,11 +677,9 @@ TEST_F(ResearchInterfaceTest, TheAimMarkerFiresTheShotItShows)
         return true;
     return false;
   };
-  for (int i = 0; i < 100 && !fired(); ++i)
-    ros::WallDuration(0.05).sleep();
-  ASSERT_TRUE(fired()) << "the aim marker's strike on /table/shots";
+  ASSERT_TRUE(waitFor(fired)) << "the aim marker's strike on /table/shots";
   table_.atRest(planned.time_to_rest + 10);
-  expectSameEvents(eventsSince(clicked), planned.events, "the shot fired from the aim marker");
+  expectSameEvents(eventsSince(clicked, planned.events.size()), planned.events, "the shot fired from the aim marker");
   shots_sub.shutdown();
 }
 }  // namespace

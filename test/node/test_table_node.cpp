@@ -20,10 +20,28 @@
 #include <sstream>
 #include <thread>
 
+#include "ros_conditions.hpp"
+#include "shell_commands.hpp"
 #include "table_client.hpp"
 
 namespace
 {
+/// The latest transform of `frame` in the table frame stamped after `after`: what tf says once the
+/// table as of `after` (a rack, a rest) has reached the buffer.
+geometry_msgs::TransformStamped transformAfter(tf2_ros::Buffer& buffer, const std::string& frame,
+                                               const ros::Time& after)
+{
+  geometry_msgs::TransformStamped latest;
+  const bool seen = waitFor([&] {
+    if (!buffer.canTransform("table", frame, ros::Time(0)))
+      return false;
+    latest = buffer.lookupTransform("table", frame, ros::Time(0));
+    return latest.header.stamp > after;
+  });
+  EXPECT_TRUE(seen) << "no transform of " << frame << " stamped after " << after;
+  return latest;
+}
+
 const double kRadius = 0.028575;
 const double kMassRatio = 0.170097 / 0.567;
 
@@ -33,7 +51,7 @@ class TableNodeTest : public ::testing::Test
 protected:
   void SetUp() override
   {
-    ASSERT_TRUE(ros::service::waitForService("/table/reset", ros::Duration(5)));
+    ASSERT_TRUE(ros::service::waitForService("/table/reset", ros::Duration(kGenerousWait)));
     reset_ = nh_.serviceClient<std_srvs::Trigger>("/table/reset");
   }
 
@@ -99,10 +117,10 @@ TEST_F(TableNodeTest, MarkersArriveLatchedWithEveryLayer)
 TEST_F(TableNodeTest, StrikeMovesTheCueBallAlongItsHeadingInTf)
 {
   ASSERT_TRUE(rack("empty").success);
+  const ros::Time racked = ros::Time::now();
   tf2_ros::Buffer buffer;
   tf2_ros::TransformListener listener(buffer);
-  ros::Duration(0.5).sleep();
-  const auto start = buffer.lookupTransform("table", "ball_0", ros::Time(0), ros::Duration(5)).transform.translation;
+  const auto start = transformAfter(buffer, "ball_0", racked).transform.translation;
   EXPECT_NEAR(start.z, kRadius, 1e-12);
   const double phi = 0.6, speed = 1.0;
   const auto response = strike(0, speed, phi);
@@ -110,8 +128,11 @@ TEST_F(TableNodeTest, StrikeMovesTheCueBallAlongItsHeadingInTf)
   EXPECT_GT(response.time_to_rest, 1.0);
   EXPECT_GE(response.num_events, 2u);  // slide to roll, roll to stop
   EXPECT_NEAR(std::hypot(response.ball_velocity.x, response.ball_velocity.y), 2 * speed / (1 + kMassRatio), 1e-9);
-  ros::Duration(0.4).sleep();
-  const auto later = buffer.lookupTransform("table", "ball_0", ros::Time(0), ros::Duration(1)).transform.translation;
+  // 0.4 s after the strike the ball has run some 0.5 m straight along its heading, short of the
+  // cushion (0.8 m away): as tf had it then, however late the buffer gets it.
+  const ros::Time then = ros::Time::now() + ros::Duration(0.4);
+  ASSERT_TRUE(waitFor([&] { return buffer.canTransform("table", "ball_0", then); }));
+  const auto later = buffer.lookupTransform("table", "ball_0", then).transform.translation;
   const double dx = later.x - start.x, dy = later.y - start.y;
   EXPECT_GT(std::hypot(dx, dy), 0.2);
   EXPECT_NEAR(std::atan2(dy, dx), phi, 1e-9);
@@ -124,16 +145,14 @@ TEST_F(TableNodeTest, ARollingBallTurnsInTfByDistanceOverR)
   ASSERT_TRUE(rack("empty").success);
   tf2_ros::Buffer buffer;
   tf2_ros::TransformListener listener(buffer);
-  table_.atRest(5);
-  ros::Duration(0.3).sleep();
-  const auto before = buffer.lookupTransform("table", "ball_0", ros::Time(0), ros::Duration(5)).transform;
+  const auto racked = table_.atRest(kGenerousWait);
+  const auto before = transformAfter(buffer, "ball_0", racked->header.stamp).transform;
   // A level cue 2R/5 above the centre: natural roll from the strike.
   const double phi = 0.6;
   const auto response = table_.strike(TableClient::shot(0, 0.25, phi, 0, 0, 0.4));
   ASSERT_TRUE(response.success) << response.message;
-  table_.atRest(response.time_to_rest + 10);
-  ros::Duration(0.3).sleep();
-  const auto after = buffer.lookupTransform("table", "ball_0", ros::Time(0), ros::Duration(5)).transform;
+  const auto rested = table_.atRest(response.time_to_rest + kGenerousWait);
+  const auto after = transformAfter(buffer, "ball_0", rested->header.stamp).transform;
   const auto quaternion = [](const geometry_msgs::Quaternion& q) { return Eigen::Quaterniond(q.w, q.x, q.y, q.z); };
   const Eigen::AngleAxisd turned(quaternion(after.rotation) * quaternion(before.rotation).inverse());
   const double distance =
@@ -148,14 +167,21 @@ TEST_F(TableNodeTest, ARollingBallTurnsInTfByDistanceOverR)
 TEST_F(TableNodeTest, EveryBallInOneTfMessageWithStrictlyIncreasingStamps)
 {
   ASSERT_TRUE(rack("eight").success);
+  std::mutex mutex;
   std::vector<tf2_msgs::TFMessage> messages;
   ros::Subscriber sub = nh_.subscribe<tf2_msgs::TFMessage>("/tf", 100, [&](const tf2_msgs::TFMessageConstPtr& m) {
+    std::lock_guard<std::mutex> lock(mutex);
     if (!m->transforms.empty() && m->transforms[0].child_frame_id.rfind("ball_", 0) == 0)
       messages.push_back(*m);
   });
   ASSERT_TRUE(strike(0, 3.0, 0.0).success);
-  ros::Duration(1.0).sleep();
+  // A second of them at 100 Hz, however long the machine takes to deliver it.
+  EXPECT_TRUE(waitFor([&] {
+    std::lock_guard<std::mutex> lock(mutex);
+    return messages.size() > 100;
+  }));
   sub.shutdown();
+  std::lock_guard<std::mutex> lock(mutex);
   ASSERT_GT(messages.size(), 50u);  // 100 Hz
   ros::Time last;
   for (const auto& m : messages)
@@ -268,7 +294,7 @@ TEST_F(TableNodeTest, ResetReturnsToTheLastRack)
   ASSERT_TRUE(rack("custom", {0, 5}, {{-0.3, 0.1}, {0.4, -0.2}}).success);
   const auto racked = *freshState();
   ASSERT_TRUE(strike(0, 2.0, 1.0).success);
-  ros::Duration(0.3).sleep();
+  ASSERT_TRUE(freshState()->moving) << "reset from a table in motion";
   std_srvs::Trigger srv;
   ASSERT_TRUE(reset_.call(srv));
   EXPECT_TRUE(srv.response.success);
@@ -280,16 +306,17 @@ TEST_F(TableNodeTest, RosbagOfABreakHoldsAllSixteenBallFrames)
 {
   ASSERT_TRUE(rack("eight").success);
   const std::string bag_path = std::string(CUE_SIM_TEST_DIR) + "/break_test.bag";
-  std::remove(bag_path.c_str());
-  // The real record.launch, as a user runs it, recording for 4 s.
-  std::thread recorder([&] {
-    const std::string command = "roslaunch cue_sim record.launch bag:=" + bag_path + " duration:=4 > " +
-                                std::string(CUE_SIM_TEST_DIR) + "/record_test.log 2>&1";
-    EXPECT_EQ(std::system(command.c_str()), 0);
-  });
-  ros::Duration(1.5).sleep();  // let rosbag subscribe
-  ASSERT_TRUE(strike(0, 8.0, 0.0).success);
-  recorder.join();
+  {
+    // The real record.launch, as a user runs it, from before the break until it has rested and
+    // rosbag has received a good while of tf after that.
+    BagRecording recording(bag_path, std::string(CUE_SIM_TEST_DIR) + "/record_test.log");
+    ASSERT_TRUE(connectedTo("/record", "/tf"));
+    ASSERT_TRUE(connectedTo("/record", "/tf_static"));
+    ASSERT_TRUE(strike(0, 8.0, 0.0).success);
+    table_.atRest(kGenerousWait);
+    const long received = messagesReceivedBy("/record", "/tf");
+    ASSERT_TRUE(receivedBy("/record", "/tf", received + 20));
+  }
   rosbag::Bag bag(bag_path, rosbag::bagmode::Read);
   std::map<std::string, std::vector<double>> x_of_frame;
   for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery(std::string("/tf"))))
@@ -312,7 +339,6 @@ TEST_F(TableNodeTest, RosbagOfABreakHoldsAllSixteenBallFrames)
   rosbag::View statics(bag, rosbag::TopicQuery(std::string("/tf_static")));
   EXPECT_GT(statics.size(), 0u);
   bag.close();
-  waitUntilAtRest(30);
 }
 /// Runs a table_node of its own (it must refuse to start), with private parameters `params`:
 /// its exit status and what it printed.
