@@ -28,7 +28,7 @@ namespace
 /// Shots a game of the planners may take here before the test calls it stuck.
 constexpr int kShotCap = 150;
 /// Longest a shot may take to rest, in wall time with sim time as fast as possible [s].
-constexpr double kRestTimeout = 60;
+constexpr double kRestTimeout = kGenerousWait;
 
 const double kR = cue_sim::physics::PhysicsParams<double>().ball_radius;
 
@@ -45,6 +45,7 @@ public:
     game_sub_ = nh_.subscribe<cue_sim::GameState>("/table/game_state", 10, [this](const cue_sim::GameStateConstPtr& m) {
       std::lock_guard<std::mutex> lock(game_mutex_);
       game_ = m;
+      ++game_states_;
     });
     shots_sub_ =
         nh_.subscribe<cue_sim::ExecutedShot>("/table/shots", 100, [this](const cue_sim::ExecutedShotConstPtr& m) {
@@ -96,19 +97,17 @@ public:
   template <typename Ready>
   cue_sim::GameStateConstPtr gameWhen(Ready ready, double timeout = kRestTimeout)
   {
-    const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(timeout);
-    while (ros::WallTime::now() < until)
-    {
-      {
-        std::lock_guard<std::mutex> lock(game_mutex_);
-        if (game_ && ready(*game_))
-          return game_;
-      }
-      ros::WallDuration(0.01).sleep();
-    }
+    cue_sim::GameStateConstPtr seen;
+    if (waitFor(
+            [&] {
+              std::lock_guard<std::mutex> lock(game_mutex_);
+              seen = game_;
+              return seen && ready(*seen);
+            },
+            timeout))
+      return seen;
     ADD_FAILURE() << "no ~game_state as awaited within " << timeout << " s";
-    std::lock_guard<std::mutex> lock(game_mutex_);
-    return game_ ? game_ : boost::make_shared<cue_sim::GameState>();
+    return seen ? seen : boost::make_shared<cue_sim::GameState>();
   }
 
   /// The game once shot `shots` has come to rest (the ruling applied).
@@ -117,10 +116,25 @@ public:
     return gameWhen([shots](const cue_sim::GameState& g) { return !g.shot_in_progress && g.shots >= shots; });
   }
 
-  std::vector<cue_sim::ExecutedShot> shotsSeen()
+  /// The ~shots messages received, once there are at least `count` (the node publishes a shot
+  /// as it strikes; it reaches this subscriber on its own connection, in its own time).
+  std::vector<cue_sim::ExecutedShot> shotsSeen(std::size_t count)
+  {
+    std::vector<cue_sim::ExecutedShot> seen;
+    if (!waitFor([&] {
+          std::lock_guard<std::mutex> lock(game_mutex_);
+          seen = shots_;
+          return seen.size() >= count;
+        }))
+      ADD_FAILURE() << "fewer than " << count << " ~shots messages within " << kGenerousWait << " s";
+    return seen;
+  }
+
+  /// How many ~game_state messages this client has received.
+  long gameStatesSeen()
   {
     std::lock_guard<std::mutex> lock(game_mutex_);
-    return shots_;
+    return game_states_;
   }
 
   const cue_sim::physics::TableModel& model() const { return table_; }
@@ -130,6 +144,7 @@ private:
   ros::NodeHandle nh_;
   ros::ServiceClient start_, end_, place_, call_;
   std::mutex game_mutex_;
+  long game_states_ = 0;
   cue_sim::GameStateConstPtr game_;
   std::vector<cue_sim::ExecutedShot> shots_;
   ros::Subscriber game_sub_, shots_sub_;
@@ -237,7 +252,7 @@ TEST(Game, AStartedGameRefereesStrikesPublishesItsStateAndRefusesFreeEdits)
   EXPECT_EQ(game->last_ruling.reason, struck.ruling.reason);
   EXPECT_EQ(game->turn, struck.ruling.next_player);
   EXPECT_EQ(game->ball_in_hand, struck.ruling.ball_in_hand);
-  const auto shots = client.shotsSeen();
+  const auto shots = client.shotsSeen(1);
   ASSERT_FALSE(shots.empty());
   EXPECT_TRUE(shots.back().ruling.refereed);
   EXPECT_EQ(shots.back().ruling.reason, struck.ruling.reason);
@@ -315,8 +330,12 @@ TEST(Game, ABagRecordsTheGameStatesAndTheRulings)
   BagRecording recording(bag_path, std::string(CUE_SIM_TEST_DIR) + "/game_record_test.log");
   // Every game state must reach the bag: wait until rosbag has subscribed to all three topics.
   for (const std::string topic : {"/table/game_state", "/table/shots", "/table/game_markers"})
-    ASSERT_TRUE(subscribedBy(topic, "/record", 30)) << topic;
-  ros::WallDuration(0.5).sleep();  // and connected
+    ASSERT_TRUE(connectedTo("/record", topic)) << topic;
+  // From here on rosbag and this client receive the same messages; the game is idle, so none is
+  // on its way to either.
+  const long states_before = messagesReceivedBy("/record", "/table/game_state");
+  const long shots_before = messagesReceivedBy("/record", "/table/shots");
+  const long seen_before = client.gameStatesSeen();
   const auto started =
       client.start("nine_ball", 1, 0, {ballAt(0, -0.5, 0.0), ballAt(1, 0.0, 0.0), ballAt(9, 0.5, 0.3)});
   ASSERT_TRUE(started.success) << started.message;
@@ -325,9 +344,13 @@ TEST(Game, ABagRecordsTheGameStatesAndTheRulings)
   const auto struck = client.strike(TableClient::shot(0, 1.0, 0.0));
   ASSERT_TRUE(struck.success) << struck.message;
   client.afterShot(1);
-  ros::WallDuration(0.5).sleep();
-  recording.stop();
   ASSERT_TRUE(client.end().success);
+  client.gameWhen([](const cue_sim::GameState& g) { return !g.active; });
+  // The bag holds every game state and the shot once rosbag has received as many as this client.
+  ASSERT_TRUE(receivedBy("/record", "/table/game_state", states_before + (client.gameStatesSeen() - seen_before)));
+  ASSERT_TRUE(receivedBy("/record", "/table/shots", shots_before + 1));
+  ASSERT_TRUE(receivedBy("/record", "/table/game_markers", 1));
+  recording.stop();
 
   rosbag::Bag bag(bag_path, rosbag::bagmode::Read);
   bool started_seen = false, in_play_seen = false, ruled_seen = false;

@@ -118,13 +118,15 @@ protected:
 
 TEST_F(SimControlTest, TheClockRunsAheadOfTheWallNeverZeroAndNeverBackAcrossResets)
 {
-  ros::WallDuration(0.5).sleep();
+  ASSERT_TRUE(waitFor([&] { return !clocks().empty(); })) << "no /clock";
   const ros::Time start = ros::Time::now();
   const ros::WallTime wall_start = ros::WallTime::now();
   ASSERT_TRUE(table_.rack("nine").success);
   std_srvs::Trigger reset;
   ASSERT_TRUE(reset_.call(reset));
-  ros::WallDuration(1.0).sleep();
+  // A hundred clock messages more, whatever time the machine gives the node for them.
+  const std::size_t before = clocks().size();
+  ASSERT_TRUE(waitFor([&] { return clocks().size() > before + 100; })) << "the clock stalled";
   // As fast as possible: well over real time.
   EXPECT_GT((ros::Time::now() - start).toSec(), 3 * (ros::WallTime::now() - wall_start).toSec());
   const std::vector<ros::Time> seen = clocks();
@@ -143,7 +145,7 @@ TEST_F(SimControlTest, PauseFreezesThePhysicsWhileTheClockRunsAndAStepMovesItByT
   ASSERT_TRUE(struck.success) << struck.message;
   // The clock runs on while the table is paused (a sim-time client never waits on it), and
   // the struck ball waits at its spot.
-  ros::WallDuration(0.3).sleep();
+  ASSERT_TRUE(waitFor([&] { return ros::Time::now() > struck.stamp + ros::Duration(0.15); }));
   const ros::Time later = ros::Time::now();
   EXPECT_GT(later, struck.stamp + ros::Duration(0.1));
   const cue_sim::TableStateConstPtr waiting = table_.stateAfter(later);
@@ -154,8 +156,7 @@ TEST_F(SimControlTest, PauseFreezesThePhysicsWhileTheClockRunsAndAStepMovesItByT
   EXPECT_GE(stepped.stamp, later);
   // The ~state from the step on has the cue ball 0.25 s into its shot, and stays there.
   const cue_sim::TableStateConstPtr after = table_.stateAfter(stepped.stamp);
-  ros::WallDuration(0.2).sleep();
-  const cue_sim::TableStateConstPtr still = table_.stateAfter(ros::Time::now());
+  const cue_sim::TableStateConstPtr still = table_.stateAfter(after->header.stamp + ros::Duration(0.2));
   EXPECT_GT(still->header.stamp, after->header.stamp);
   EXPECT_TRUE(after->moving);
   const double x = TableClient::byId(after->balls).at(0).position.x;
@@ -275,16 +276,19 @@ TEST_F(SimControlTest, EveryBallTransformInTheBagIsTheExactTrajectoryAtItsStamp)
   ASSERT_EQ(rack.balls.size(), ids.size());
   const std::string bag_path = std::string(CUE_SIM_TEST_DIR) + "/sim_shot_test.bag";
   BagRecording recording(bag_path, std::string(CUE_SIM_TEST_DIR) + "/sim_record_test.log");
-  // Let rosbag subscribe while the table waits: to every topic the test reads from the bag (a fixed
-  // wait was too short on a loaded machine, and the strike missed the bag).
+  // Rosbag connected to every topic the test reads from the bag before the strike (a fixed wait
+  // was once too short on a loaded machine, and the strike missed the bag).
   for (const std::string topic : {"/tf", "/table/shots", "/table/markers"})
-    ASSERT_TRUE(subscribedBy(topic, "/record", 30)) << topic;
-  ros::WallDuration(0.5).sleep();  // and connected
+    ASSERT_TRUE(connectedTo("/record", topic)) << topic;
+  const long shots_before = messagesReceivedBy("/record", "/table/shots");
   const cue_sim::Shot shot = TableClient::shot(0, 1.5, 0.05, 0.1, 0.2, -0.1);
   const cue_sim::Strike::Response struck = table_.strike(shot);
   ASSERT_TRUE(struck.success) << struck.message;
   table_.atRest(60);
-  ros::WallDuration(0.5).sleep();
+  // Rosbag has the shot, and tf from after the rest (a connection delivers in order).
+  ASSERT_TRUE(receivedBy("/record", "/table/shots", shots_before + 1));
+  const long tf_at_rest = messagesReceivedBy("/record", "/tf");
+  ASSERT_TRUE(receivedBy("/record", "/tf", tf_at_rest + 20));
   recording.stop();
 
   // The same engine, in this process, and the shot on it.
