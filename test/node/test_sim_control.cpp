@@ -1,6 +1,7 @@
 // Simulation control through a real master, with use_sim_time: the node drives /clock as fast
 // as possible; ~pause, ~step, ~set_state, ~place_ball, ~remove_ball; and a rosbag of a shot whose
 // every ball transform is the engine's exact trajectory at its stamp, with the shot played in it.
+#include <cue_sim/CameraGroundTruth.h>
 #include <cue_sim/ExecutedShot.h>
 #include <cue_sim/PlaceBall.h>
 #include <cue_sim/RemoveBall.h>
@@ -16,6 +17,7 @@
 #include <tf2_msgs/TFMessage.h>
 #include <visualization_msgs/MarkerArray.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <mutex>
 #include <thread>
@@ -281,12 +283,16 @@ TEST_F(SimControlTest, EveryBallTransformInTheBagIsTheExactTrajectoryAtItsStamp)
   for (const std::string topic : {"/tf", "/table/shots", "/table/markers"})
     ASSERT_TRUE(connectedTo("/record", topic)) << topic;
   const long shots_before = messagesReceivedBy("/record", "/table/shots");
+  // The table's picture, sent again every second, must come after the bag's first transforms.
+  ASSERT_TRUE(receivedBy("/record", "/tf", 1));
+  const long markers_before = messagesReceivedBy("/record", "/table/markers");
   const cue_sim::Shot shot = TableClient::shot(0, 1.5, 0.05, 0.1, 0.2, -0.1);
   const cue_sim::Strike::Response struck = table_.strike(shot);
   ASSERT_TRUE(struck.success) << struck.message;
   table_.atRest(60);
   // Rosbag has the shot, and tf from after the rest (a connection delivers in order).
   ASSERT_TRUE(receivedBy("/record", "/table/shots", shots_before + 1));
+  ASSERT_TRUE(receivedBy("/record", "/table/markers", markers_before + 1));
   const long tf_at_rest = messagesReceivedBy("/record", "/tf");
   ASSERT_TRUE(receivedBy("/record", "/tf", tf_at_rest + 20));
   recording.stop();
@@ -349,5 +355,92 @@ TEST_F(SimControlTest, EveryBallTransformInTheBagIsTheExactTrajectoryAtItsStamp)
   EXPECT_GT(compared, 4u * 100u) << "transforms of the four balls over the shot";
   EXPECT_GT(moved, 0.3);
   EXPECT_LE(largest, 1e-9) << "largest distance of a recorded pose from the exact trajectory [m]";
+}
+/// Ground truths of ~camera, kept from when it subscribes until it is destroyed.
+class GroundTruths
+{
+public:
+  explicit GroundTruths(ros::NodeHandle& nh)
+    : sub_(nh.subscribe<cue_sim::CameraGroundTruth>("/table/camera/ground_truth", 1000,
+                                                    [this](const cue_sim::CameraGroundTruthConstPtr& m) {
+                                                      std::lock_guard<std::mutex> lock(mutex_);
+                                                      truths_.push_back(*m);
+                                                    }))
+  {
+  }
+  bool connected()
+  {
+    return waitFor([&] { return sub_.getNumPublishers() > 0; });
+  }
+  std::vector<cue_sim::CameraGroundTruth> since(const ros::Time& stamp)
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::vector<cue_sim::CameraGroundTruth> out;
+    std::copy_if(truths_.begin(), truths_.end(), std::back_inserter(out),
+                 [&](const cue_sim::CameraGroundTruth& t) { return t.header.stamp >= stamp; });
+    return out;
+  }
+
+private:
+  std::mutex mutex_;
+  std::vector<cue_sim::CameraGroundTruth> truths_;
+  ros::Subscriber sub_;  // last: shut down first, before what its callback uses
+};
+
+TEST_F(SimControlTest, TheCameraFollowsSimTimeAndItsGroundTruthIsTheExactTrajectory)
+{
+  // With sim time as fast as possible, ~camera/ground_truth (alone: no pixels drawn) comes at
+  // ~camera/rate of sim time or slower, never two frames within half a period, each ball's
+  // position at its stamp (the exposure's middle) the exact trajectory's.
+  const std::vector<int> ids = {0, 1, 2, 3};
+  ASSERT_TRUE(table_.rack("custom", ids, {{-0.6, 0.0}, {0.0, 0.02}, {0.15, -0.2}, {0.3, 0.25}}).success);
+  const cue_sim::TableState rack = *table_.atRest(10);
+  GroundTruths truths(nh_);
+  ASSERT_TRUE(truths.connected());
+  const cue_sim::Shot shot = TableClient::shot(0, 1.5, 0.05, 0.1, 0.2, -0.1);
+  const cue_sim::Strike::Response struck = table_.strike(shot);
+  ASSERT_TRUE(struck.success) << struck.message;
+  table_.atRest(60);
+  // Ten frames from the strike on, however fast the sim runs against the camera's thread, which
+  // yields to the node's publishing thread (as fast as possible, most come after the rest).
+  ASSERT_TRUE(waitFor([&] { return truths.since(struck.stamp).size() >= 10; })) << "ten frames since the strike";
+
+  const cue_sim::physics::Engine<double> engine = nodesEngine();
+  cue_sim::physics::TableState<double> state = struckOnEngine(engine, rack, shot);
+  double rate = 0, exposure = 0;
+  ASSERT_TRUE(nh_.getParam("/table/camera/rate", rate));
+  ASSERT_TRUE(nh_.getParam("/table/camera/exposure", exposure));
+  std::size_t compared = 0;
+  double largest = 0;
+  ros::Time previous;
+  for (const auto& truth : truths.since(struck.stamp))
+  {
+    // A frame's exposure is drawn from the table as it is when the exposure opens: a strike that
+    // lands inside one shows from the next frame on. Frames opened after the strike are exact.
+    if (truth.header.stamp - ros::Duration(exposure / 2) < struck.stamp)
+      continue;
+    if (!previous.isZero())
+      EXPECT_GE((truth.header.stamp - previous).toSec(), 0.5 / rate) << "never two frames within half a period";
+    previous = truth.header.stamp;
+    advance(engine, state, (truth.header.stamp - struck.stamp).toSec());
+    const auto balls = engine.snapshot(state);
+    ASSERT_EQ(truth.balls.size(), ids.size());
+    for (const auto& b : truth.balls)
+    {
+      const auto& exact = balls[state.indexOf(b.id)].r;
+      largest = std::max(largest, std::hypot(b.position.x - exact.x(), b.position.y - exact.y()));
+      EXPECT_TRUE(b.visible) << "ball " << b.id;
+      ++compared;
+    }
+  }
+  const double seconds = (previous - struck.stamp).toSec();
+  const double frames = static_cast<double>(compared) / ids.size();
+  std::printf(
+      "camera under sim time: %.0f frames in %.2f s of the shot, largest distance from the exact "
+      "trajectory %.2e m\n",
+      frames, seconds, largest);
+  EXPECT_GT(frames, 10) << "frames of the shot";
+  EXPECT_LE(frames, seconds * rate + 1) << "no more frames than the rate makes";
+  EXPECT_LE(largest, 1e-9) << "largest distance of a ground-truth position from the exact trajectory [m]";
 }
 }  // namespace
