@@ -18,9 +18,11 @@ ROS_MASTER_URI="http://localhost:$port" xvfb-run -a -s "-screen 0 1280x900x24" b
   for i in \$(seq 60); do rosservice list 2>/dev/null | grep -q /table/predict_batch && break; sleep 0.5; done
   rosrun rviz rviz -d '$CUE_SIM_ROOT/rviz/table.rviz' > '$log' 2>&1 &
   rviz=\$!
-  sleep 6   # rviz start-up
+  # rviz started: subscribed to the table's markers (up to two minutes on a busy machine).
+  for i in \$(seq 240); do rostopic info /table/markers 2>/dev/null | grep -q '/rviz' && break; sleep 0.5; done
+  rostopic info /table/markers 2>/dev/null | grep -q '/rviz' || { echo 'rviz_quiet: rviz never subscribed'; cat '$log'; exit 1; }
   python3 '$here/rviz_quiet_client.py' '$seconds' > '$client_log' 2>&1 || { cat '$client_log'; exit 1; }
-  sleep 2
+  sleep 2   # what rviz says about the last messages (a window to listen in, not a wait for a state)
   kill -0 \$rviz || { echo 'rviz_quiet: rviz died'; cat '$log'; exit 1; }
 "
 tail -n 1 "$client_log"

@@ -41,7 +41,7 @@ if ! kill -0 "$node" 2>/dev/null; then
   echo "storm: table_node died" >&2
   exit 1
 fi
-sleep 15  # the node gives back what the last replies took (every 2 s after heavy requests)
+sleep 15  # a measurement 15 s after, not a wait for a state: the node gives back what the last replies took (every 2 s after heavy requests)
 after=$(rss)
 kill "$sampler" 2>/dev/null || true
 wait "$sampler" 2>/dev/null || true
