@@ -33,8 +33,8 @@ struct Violation
   /// nan, overlap, off_table (in a cushion, jaw or pocket, or off the playing area), energy_gain,
   /// not_repeatable (advanced in steps, or copied mid-shot, it did not give the same events and
   /// state bit for bit), scan_mismatch (the kept search and the full scan of every ball and pair
-  /// disagree), event_limit, invalid_start (the campaign made a scene validation refuses), error
-  /// (anything thrown).
+  /// disagree), event_limit, invalid_start (the campaign made a scene validation refuses),
+  /// invalid_end (the balls at rest make a scene validation refuses), error (anything thrown).
   std::string kind;
   std::string detail;
 };
@@ -52,7 +52,8 @@ struct SceneCheck
 
 /// Runs the scene (struck, if it has a shot) event by event, checking after every event and at
 /// the end that no number is NaN, no ball overlaps another or a cushion, jaw or pocket by more
-/// than 1e-9 m or is off the playing area, and the kinetic energy has not grown (1e-12 of it);
+/// than 1e-9 m or is off the playing area, and the kinetic energy has not grown (1e-12 of it),
+/// and that the balls at rest make a scene the engine accepts (Engine::whyInvalid, as `simulate`);
 /// then again advanced in uneven steps and copied mid-shot, which must give the same events and
 /// final state bit for bit; then, if `full_scan`, by the full scan of every ball and pair, which
 /// must too.

@@ -245,6 +245,13 @@ SceneCheck checkScene(const Scene& scene, bool full_scan)
     }
     check.events = static_cast<long>(events.size());
     check.at_rest = simulation.atRest();
+    // A shot ends in a state the engine, and so `simulate`, accepts as a scene.
+    if (check.at_rest)
+    {
+      const std::string refused = engine.whyInvalid(simulation.state());
+      if (!refused.empty())
+        check.violations.push_back({"invalid_end", "the balls at rest are refused as a scene: " + refused});
+    }
     const double last = events.empty() ? struck.time : events.back().time;
 
     // 2. In steps, with a copy half way.
