@@ -12,6 +12,7 @@ catkin_add_gtest(physics_tests
   test/physics/test_engine.cpp
   test/physics/test_shot_physics.cpp
   test/physics/test_stability.cpp
+  test/physics/test_frozen_contacts.cpp
   test/physics/test_golden.cpp
   test/physics/test_batch.cpp
   test/physics/test_execution_noise.cpp

@@ -1,5 +1,6 @@
 #include "node/node_parameters.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -87,7 +88,7 @@ public:
       if (name.compare(0, prefix.size(), prefix) != 0)
         continue;
       const std::string key = name.substr(prefix.size());
-      if (known_.count(key) || key.compare(0, kImageTransportSpace.size(), kImageTransportSpace) == 0)
+      if (known_.count(key) || belowAGroup(key))
         continue;
       std::string list;
       for (const auto& k : known_)
@@ -97,8 +98,21 @@ public:
   }
 
 private:
-  /// image_transport's plugins keep their own parameters under the image topic.
-  const std::string kImageTransportSpace = "camera/image_raw/";
+  /// Whether `key` lies a level below one of the table's groups (camera/rectify/interpolation):
+  /// the space of another node in the table's namespace, not a parameter of the table's. image_proc's
+  /// rectify in ~camera keeps its parameters there, set whenever its nodelet loads, before or after
+  /// the table; image_transport's plugins keep theirs under ~camera/image_raw. A misspelling within a
+  /// group (~camera/widht) is still one level down, and refused.
+  bool belowAGroup(const std::string& key) const
+  {
+    const std::size_t slash = key.find('/');
+    if (slash == std::string::npos || key.find('/', slash + 1) == std::string::npos)
+      return false;
+    const std::string group = key.substr(0, slash + 1);
+    return std::any_of(known_.begin(), known_.end(),
+                       [&](const std::string& k) { return k.compare(0, group.size(), group) == 0; });
+  }
+
   ros::NodeHandle& node_;
   std::set<std::string> known_;
 };

@@ -377,6 +377,9 @@ TEST_F(TableNodeTest, MisspelledOrMistypedParametersStopTheNodeWithAReason)
   const auto misspelled = run("misspelled", "_publish_rte:=50");
   EXPECT_EQ(misspelled.first, 1);
   EXPECT_NE(misspelled.second.find("unknown parameter ~publish_rte (known: "), std::string::npos) << misspelled.second;
+  const auto in_a_group = run("in_a_group", "_camera/widht:=640");
+  EXPECT_EQ(in_a_group.first, 1);
+  EXPECT_NE(in_a_group.second.find("unknown parameter ~camera/widht (known: "), std::string::npos) << in_a_group.second;
   const auto mistyped = run("mistyped", "_publish_rate:=fast");
   EXPECT_EQ(mistyped.first, 1);
   EXPECT_NE(mistyped.second.find("~publish_rate must be a number"), std::string::npos) << mistyped.second;

@@ -52,6 +52,12 @@ void quadraticRange(S c0, S c1, S c2, S T0, S T, S& low, S& high)
   }
 }
 
+/// A ball that comes beside a cushion no deeper than this behind its line [m] is at the cushion's
+/// end, touching it: it started there, a hair off, or drifted in within rounding. One deeper is
+/// elsewhere (beyond the end of a cushion whose line crosses the table, or past a jaw, whose
+/// circle it meets first); taken for a contact, it would be struck by a wall it never reached.
+constexpr double kEnteringDepth = 1e-9;
+
 /// The search for one translating ball's own next event: each contact is searched only up to
 /// the earliest found so far, so the horizon shrinks, and cushions, jaws and pockets out of
 /// reach are dismissed by a box, not solved.
@@ -72,17 +78,25 @@ public:
     const Trajectory<S>& p = path_;
     const Poly4<S> gap = {seg.normal.dot(p.c0 - seg.start) - R, seg.normal.dot(p.c1), seg.normal.dot(p.c2), S(0), S(0)};
     // Only a ball beside the segment can be touching it now. One beyond its ends may be within R
-    // of its line (in a pocket's mouth); it meets the segment only by crossing that line again
-    // beside it.
+    // of its line (in a pocket's mouth); it meets the segment by crossing that line beside it,
+    // or by coming beside it while within R of the line.
     const S along_now = seg.direction.dot(p.c0 - seg.start);
-    const bool beside = along_now >= S(0) && along_now <= seg.length;
-    const S tau = beside ? contactTime(gap, limit, -zeroSpeed<S>(), touchTolerance(R), true)
-                         : firstDownCrossing(gap, S(0), limit);
-    if (!(tau <= limit))
+    const S touch = touchTolerance(R);
+    if (along_now >= S(0) && along_now <= seg.length)
+    {
+      const S tau = contactTime(gap, limit, -zeroSpeed<S>(), touch, true);
+      if (tau <= limit && isBeside(seg, tau))
+        keep(tau, Candidate<S>::Segment, k);
       return;
-    const S along = seg.direction.dot(p.at(tau) - seg.start);
-    if (along >= S(0) && along <= seg.length)
-      keep(tau, Candidate<S>::Segment, k);
+    }
+    const S crossing = firstDownCrossing(gap, S(0), limit);
+    if (crossing <= limit && isBeside(seg, crossing))
+    {
+      keep(crossing, Candidate<S>::Segment, k);
+      return;
+    }
+    if (gap[0] <= touch || crossing <= limit)
+      enteringWithinReach(seg, gap, limit, touch, k);
   }
 
   /// A jaw or cushion end (a contact when pressed into it, as for a straight cushion) or a
@@ -103,6 +117,44 @@ public:
   }
 
 private:
+  /// Whether the centre is beside the segment at tau (within `slack` of its ends).
+  bool isBeside(const typename TableGeometry<S>::Segment& seg, S tau, S slack = S(0)) const
+  {
+    const S along = seg.direction.dot(path_.at(tau) - seg.start);
+    return along >= -slack && along <= seg.length + slack;
+  }
+
+  /// A ball beyond an end of the segment and within R of its line (it touched the segment's end,
+  /// or crossed the line in the pocket's mouth) that comes beside the segment is in contact with
+  /// it from that moment if it then closes on it or is pressed into it: a ball frozen to a
+  /// cushion's very end and drifting back along it meets the cushion as it comes beside, not when
+  /// its path next changes, already deep.
+  void enteringWithinReach(const typename TableGeometry<S>::Segment& seg, const Poly4<S>& gap, S limit, S touch,
+                           std::size_t k)
+  {
+    const Trajectory<S>& p = path_;
+    const S a0 = seg.direction.dot(p.c0 - seg.start), a1 = seg.direction.dot(p.c1), a2 = seg.direction.dot(p.c2);
+    // The first moment along(tau) passes into [0, length]: from below through 0, or from above
+    // through the length.
+    const Poly4<S> outside =
+        a0 < S(0) ? Poly4<S>{-a0, -a1, -a2, S(0), S(0)} : Poly4<S>{a0 - seg.length, a1, a2, S(0), S(0)};
+    const S enter = firstDownCrossing(outside, S(0), limit);
+    // At that moment the ball is at the end within the rounding of positions on the table.
+    if (!(enter <= limit) || !isBeside(seg, enter, touchTolerance(p.c0.norm() + seg.start.norm() + seg.length)))
+      return;
+    const Poly4<S> from_enter = {gap[0] + enter * (gap[1] + enter * gap[2]), gap[1] + S(2) * enter * gap[2], gap[2],
+                                 S(0), S(0)};
+    if (from_enter[0] > touch)
+      return;  // clear of the line as it comes beside: a crossing beside it is found from there
+    if (from_enter[0] < -S(kEnteringDepth))
+      return;  // far behind the line: elsewhere on the table, where other walls come first
+    const S tau = contactTime(from_enter, limit - enter, -zeroSpeed<S>(), touch, true);
+    if (tau == S(0))
+      keep(enter, Candidate<S>::Segment, k);
+    else if (tau <= limit - enter && isBeside(seg, enter + tau))
+      keep(enter + tau, Candidate<S>::Segment, k);
+  }
+
   /// The box the centre sweeps until the earliest contact found so far.
   void sweep()
   {
