@@ -92,8 +92,9 @@ physics::PhysicsParams<double> drawParams(Draws& draws, const physics::TableMode
   return p;
 }
 
-/// A place for one more ball: anywhere on the cloth or in a pocket's mouth, frozen to a cushion or
-/// a jaw, or frozen to another ball (exactly touching, or a hair off). Refused places are drawn again.
+/// A place for one more ball: anywhere on the cloth or in a pocket's mouth, frozen to a cushion
+/// (anywhere along it, or at one of its ends, a hair beyond or short of it), to a jaw, or to another
+/// ball (exactly touching, or a hair off). Refused places are drawn again.
 Eigen::Vector2d drawPlace(Draws& draws, const physics::TableModel& table, const physics::TableState<double>& state,
                           double R)
 {
@@ -104,7 +105,13 @@ Eigen::Vector2d drawPlace(Draws& draws, const physics::TableModel& table, const 
   if (kind < 0.15 && !table.segments().empty())
   {
     const auto& s = draws.pick(table.segments());
-    return s.start + draws.unit() * s.length * s.direction + (R + hair) * s.normal;
+    double along = draws.unit() * s.length;
+    if (draws.chance(0.3))  // at an end: where the cushion's line and its jaw meet
+    {
+      const double off = draws.logUniform(1e-15, 1e-3) * (draws.chance(0.7) ? 1.0 : -1.0);
+      along = draws.chance(0.5) ? -off : s.length + off;
+    }
+    return s.start + along * s.direction + (R + hair) * s.normal;
   }
   if (kind < 0.25 && !table.circles().empty())
   {
