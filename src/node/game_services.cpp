@@ -66,10 +66,13 @@ bool GameServices::onEndGame(std_srvs::Trigger::Request&, std_srvs::Trigger::Res
 bool GameServices::onPlaceCueBall(PlaceCueBall::Request& request, PlaceCueBall::Response& response)
 {
   std::lock_guard<std::mutex> lock(shared_.mutex);
+  const ros::Time now = shared_.now();
   const session::Outcome outcome =
-      shared_.live->placeCueBall(Eigen::Vector2d(request.position.x, request.position.y), toStamp(shared_.now()));
+      shared_.live->placeCueBall(Eigen::Vector2d(request.position.x, request.position.y), toStamp(now));
   response.success = outcome.success;
   response.message = outcome.message;
+  if (outcome.success)
+    response.stamp = now;
   return true;
 }
 

@@ -315,7 +315,9 @@ TEST(Game, AScratchGivesBallInHandAnywhereWhichPlaceCueBallChecks)
   EXPECT_NE(on_ball.message.find("overlap"), std::string::npos) << on_ball.message;
   const auto placed = client.place(0.5, 0.2);
   ASSERT_TRUE(placed.success) << placed.message;
-  const auto state = client.freshState();
+  // From the placement's stamp on (under sim time the node's clock runs ahead of this client's,
+  // so "a state stamped after now" may still be from before the placement).
+  const auto state = client.stateAfter(placed.stamp);
   const Eigen::Vector2d at = positionOf(*state, 0);
   EXPECT_NEAR(at.x(), 0.5, 1e-12);
   EXPECT_NEAR(at.y(), 0.2, 1e-12);
@@ -405,7 +407,7 @@ TEST(Game, PlannersPlayWholeGamesThroughTheServices)
       int shots = 0, fouls = 0;
       while (!game->over && shots < kShotCap)
       {
-        const auto balls = client.freshState();
+        const auto balls = client.stateAfter(game->header.stamp);  // the table as the game left it
         const std::vector<cue_sim::Shot> candidates = BatchPlanner::candidates(client.model(), *balls, *game);
         ASSERT_FALSE(candidates.empty());
         const auto batch = client.predictBatch(candidates);
