@@ -77,6 +77,16 @@ public:
     return static_cast<std::size_t>(value);
   }
 
+  /// A seed: a non-negative integer (XML-RPC has no unsigned integers).
+  std::uint32_t seed(const std::string& name)
+  {
+    int value = 0;
+    read(name, value);
+    if (value < 0)
+      refuse(name, value, "[0, 2147483647]");
+    return static_cast<std::uint32_t>(value);
+  }
+
   /// Throws naming the first private parameter nothing read, and the known ones.
   void refuseUnknown() const
   {
@@ -161,11 +171,7 @@ void readNoise(ParameterReader& reader, session::LiveTableOptions& options)
   reader.read("noise/theta", noise.theta);
   reader.read("noise/a", noise.a);
   reader.read("noise/b", noise.b);
-  int seed = 0;
-  reader.read("noise/seed", seed);
-  if (seed < 0)
-    refuse("noise/seed", seed, "[0, 2147483647]");
-  options.noise_seed = static_cast<std::uint64_t>(seed);
+  options.noise_seed = reader.seed("noise/seed");
 }
 
 void readTable(ros::NodeHandle& node, ParameterReader& reader, NodeParameters& p)
@@ -205,11 +211,7 @@ NodeParameters readNodeParameters(ros::NodeHandle& node, ros::NodeHandle& privat
   reader.read("allow_strike_while_moving", options.allow_strike_while_moving);
   reader.read("rack_gap", options.rack_gap);
   reader.read("rack_jitter", options.rack_jitter);
-  int rack_seed = 0;
-  reader.read("rack_seed", rack_seed);
-  if (rack_seed < 0)
-    refuse("rack_seed", rack_seed, "[0, 2147483647]");
-  options.rack_seed = static_cast<std::uint32_t>(rack_seed);
+  options.rack_seed = reader.seed("rack_seed");
   reader.read("paused", options.paused);
   options.limits.max_batch_shots = reader.count("max_batch_shots", options.limits.max_batch_shots);
   options.limits.max_samples = reader.count("max_samples", options.limits.max_samples);
