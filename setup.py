@@ -4,4 +4,4 @@ from setuptools import setup
 
 from catkin_pkg.python_setup import generate_distutils_setup
 
-setup(**generate_distutils_setup(packages=["cue_sim"], package_dir={"": "python"}))
+setup(**generate_distutils_setup(packages=["cue_sim", "cue_sim.envs"], package_dir={"": "python"}))

@@ -40,6 +40,7 @@ PACKAGE_LAYERS = [
     ("evaluation", ["evaluation"]),
     ("session", ["session"]),
     ("camera", ["camera"]),
+    ("learning", ["learning"]),
     ("adapters", ["node", "python", "tools", "examples"]),
 ]
 # Headers of ROS that the ROS-free layers must not include.

@@ -128,3 +128,7 @@ catkin_run_tests_target("pytest" "python" "pytest-python.xml"
 add_test(NAME rviz_quiet COMMAND ${PROJECT_SOURCE_DIR}/scripts/rviz_quiet.sh 60)
 # rviz (software GL) and the camera it shows take both cores: alone, not beside tests that time things.
 set_tests_properties(rviz_quiet PROPERTIES RUN_SERIAL TRUE TIMEOUT 300 ENVIRONMENT "CUE_SIM_BUILD=${CMAKE_BINARY_DIR};CUE_SIM_DEVEL=${CATKIN_DEVEL_PREFIX}")
+
+catkin_add_gtest(learning_tests test/learning/test_environment.cpp)
+target_link_libraries(learning_tests cue_sim_learning cue_sim_table_description gtest_main)
+target_include_directories(learning_tests PRIVATE src)

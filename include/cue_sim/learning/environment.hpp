@@ -1,0 +1,150 @@
+// Learning environments on the exact table: a task (pot, break, a whole game) played one shot a
+// step, with the observation a learner sees (the balls as numbers, the overhead camera's pixels,
+// or both), the action in the cue's physical units, and the reward, as Gymnasium's API has them.
+// No ROS and no Python: the Python module (cue_sim.envs) and the vector environment
+// (vector_environment.hpp) are adapters over this. doc/learning.md describes each task.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cue_sim/learning/random.hpp"
+#include "cue_sim/physics/engine.hpp"
+#include "cue_sim/physics/execution_noise.hpp"
+
+namespace cue_sim
+{
+namespace learning
+{
+/// How an environment is made. Each field is checked by whyInvalid(), which names the field,
+/// its value and its range.
+struct EnvOptions
+{
+  std::string task = "pot";  ///< taskNames(): pot, break, eight_ball, nine_ball, ...
+  /// pot: the most object balls on the table; each episode draws 1 to this many (ids 1, 2, ...).
+  int balls = 2;
+  /// pot: "any" (every object ball pocketed scores) or "lowest" (the lowest-numbered ball on the
+  /// table must be hit first and pocketed, as in 9-ball).
+  std::string target = "any";
+  /// The shots an episode may take before it is truncated. pot: 1 is a single shot; more is a
+  /// run of shots that goes on while each scores.
+  int max_shots = 1;
+  std::string rack = "nine";  ///< break: "eight" or "nine"
+  /// "absolute": phi and speed; "relative": a ball, a pocket, the cut's offset from the
+  /// ghost-ball aim at them, and speed (actions.md in doc/learning.md).
+  std::string action = "absolute";
+  bool spin = false;  ///< the action also sets elevation and tip offsets (theta, a, b)
+  /// Execution noise on every strike (seeded by the episode's seed); the tournaments' by default.
+  physics::ExecutionNoise noise;
+  /// "state" (positions and flags), "pixels" (the overhead camera, RGB) or "both".
+  std::string observation = "state";
+  int pixel_width = 96, pixel_height = 48;  ///< [px] of a pixel observation
+  /// Empty if usable, else which field is wrong and why.
+  std::string whyInvalid() const;
+};
+
+/// The names EnvOptions::task takes.
+std::vector<std::string> taskNames();
+
+/// A box of reals, one name per component, as a learner's space needs it.
+struct BoxSpec
+{
+  std::vector<std::string> names;
+  std::vector<double> low, high;
+  std::size_t size() const { return names.size(); }
+};
+
+/// What an environment takes and gives: its action and its observations' shapes.
+struct Spaces
+{
+  BoxSpec action;
+  BoxSpec state;                          ///< empty when the observation is pixels alone
+  int pixel_width = 0, pixel_height = 0;  ///< 0 when the observation is the state alone
+  std::size_t pixelBytes() const { return static_cast<std::size_t>(pixel_width) * pixel_height * 3; }
+};
+
+/// What a step did besides its reward (Gymnasium's info).
+struct StepInfo
+{
+  int shots = 0;           ///< shots played in this episode, this one included
+  int pocketed = 0;        ///< object balls the shot pocketed
+  bool scratch = false;    ///< the cue ball was pocketed
+  int first_contact = -1;  ///< the first object ball the cue ball touched, -1 for none
+  bool foul = false;       ///< the referee's ruling (tasks with a referee), or a scratch
+  int events = 0;          ///< the shot's events
+  double shot_time = 0;    ///< [s] from the strike to rest
+  std::string reason;      ///< why the reward is what it is: the ruling, or the task's rule
+};
+
+struct StepResult
+{
+  double reward = 0;
+  bool terminated = false;  ///< the task's own end: success, failure, the game over
+  bool truncated = false;   ///< stopped from outside: the shot cap, or the engine's event limit
+  StepInfo info;
+};
+
+/// Where a step's observation goes: `state` holds Spaces::state.size() floats, `pixels`
+/// Spaces::pixelBytes() bytes (height x width x RGB); either may be null when the observation
+/// lacks it.
+struct ObservationBuffers
+{
+  float* state = nullptr;
+  std::uint8_t* pixels = nullptr;
+};
+
+class Task;
+class PixelRenderer;
+
+/// One table and its task. Copyable: a copy plays on from the same point with the same random
+/// stream (what a planner tries shots on).
+class Environment
+{
+public:
+  /// Throws std::invalid_argument naming the option that is wrong. The engine is shared.
+  Environment(std::shared_ptr<const physics::Engine<double>> engine, const EnvOptions& options);
+  ~Environment();
+  Environment(const Environment& other);
+  Environment& operator=(const Environment& other);
+  Environment(Environment&&) noexcept;
+  Environment& operator=(Environment&&) noexcept;
+
+  const Spaces& spaces() const { return spaces_; }
+  const EnvOptions& options() const { return options_; }
+
+  /// A new episode. With a seed the random stream starts again from it; without one it goes on
+  /// (Gymnasium's convention), so that episodes after the first differ.
+  void reset(std::optional<std::uint64_t> seed, const ObservationBuffers& out);
+  /// Plays `action` (spaces().action.size() values). Throws std::invalid_argument, changing
+  /// nothing, for a wrong size, a NaN or a value outside the action's box, naming it; and
+  /// std::logic_error if the episode is over (reset first).
+  StepResult step(const double* action, std::size_t size, const ObservationBuffers& out);
+  /// Whether the episode has ended (terminated or truncated): step() needs a reset first.
+  bool done() const { return done_; }
+
+  /// The table now (the balls at rest between shots).
+  const physics::TableState<double>& table() const;
+  const physics::Engine<double>& engine() const { return *engine_; }
+  /// The table as the overhead camera sees it, RGB (height x width x 3), for render().
+  std::vector<std::uint8_t> render(int width, int height) const;
+
+private:
+  void observe(const ObservationBuffers& out) const;
+
+  std::shared_ptr<const physics::Engine<double>> engine_;
+  EnvOptions options_;
+  Spaces spaces_;
+  std::unique_ptr<Task> task_;
+  Random random_;
+  int shots_ = 0;
+  bool done_ = true;
+  /// The pixel observation's camera, made on first use; a copy makes its own (a camera keeps
+  /// buffers, so two threads must not share one).
+  mutable std::unique_ptr<PixelRenderer> pixels_;
+};
+
+}  // namespace learning
+}  // namespace cue_sim

@@ -1,0 +1,30 @@
+// The state observation's ball block: one slot per ball id (the cue ball first, then 1 to 15),
+// each its centre normalised by the cloth (the cloth spans -1 to 1 along each axis) and whether
+// it is on the table. A ball off the table (pocketed, or not in this episode) reads 0, 0, 0.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cue_sim/learning/environment.hpp"
+#include "cue_sim/physics/table_model.hpp"
+#include "cue_sim/physics/table_state.hpp"
+
+namespace cue_sim
+{
+namespace learning
+{
+/// Ball ids an observation has a slot for: the cue ball and fifteen object balls.
+constexpr int kBallSlots = 16;
+/// The bound of a normalised coordinate: a ball's centre stays within the cushions' noses, which
+/// lie inside the cloth, except in a pocket's mouth, where it may pass the cloth's edge by less
+/// than two ball radii before it drops (under 0.15 of the half-width of the smallest table).
+constexpr double kPositionBound = 1.25;
+
+/// Appends the ball block's names and bounds to `box`.
+void addBallBlock(BoxSpec& box);
+/// Writes the ball block (kBallSlots x 3 floats) for `state` on `table`.
+void writeBallBlock(const physics::TableModel& table, const physics::TableState<double>& state, float* out);
+
+}  // namespace learning
+}  // namespace cue_sim

@@ -1,0 +1,71 @@
+// break: an 8-ball or 9-ball rack as games rack it (jittered, seeded by the episode), the cue ball
+// on the break spot; the referee rules on the break. One shot.
+#include <stdexcept>
+
+#include "cue_sim/game/game_play.hpp"
+#include "learning/tasks/task.hpp"
+
+namespace cue_sim
+{
+namespace learning
+{
+namespace
+{
+class BreakTask : public Task
+{
+public:
+  BreakTask(const physics::Engine<double>& engine, const EnvOptions& options)
+    : engine_(engine), rules_(options.rack == "eight" ? "eight_ball" : "nine_ball")
+  {
+    if (engine.table().pockets().empty())
+      throw std::invalid_argument("task: break needs a table with pockets; '" + engine.table().name() + "' has none");
+    game_ = std::make_unique<game::GamePlay>(engine_, rules_);
+  }
+  BreakTask(const BreakTask& other)
+    : Task(other), engine_(other.engine_), rules_(other.rules_), game_(std::make_unique<game::GamePlay>(*other.game_))
+  {
+  }
+  std::unique_ptr<Task> clone() const override { return std::make_unique<BreakTask>(*this); }
+
+  void reset(Random& random) override
+  {
+    game_ = std::make_unique<game::GamePlay>(engine_, rules_, std::array<std::string, 2>{"player 1", "player 2"},
+                                             game::gameRack(static_cast<unsigned>(random.bits())));
+  }
+  const physics::TableState<double>& table() const override { return game_->table(); }
+  std::vector<int> aimChoices() const override { return game_->legalFirst(); }
+
+  StepResult shoot(const physics::CueStrike<double>& strike, Random&) override
+  {
+    StepResult result;
+    const game::Turn turn = game_->shoot(strike);
+    result.info.events = static_cast<int>(turn.events.size());
+    result.info.shot_time = turn.events.empty() ? 0 : turn.events.back().time - turn.events.front().time;
+    result.info.pocketed = static_cast<int>(turn.facts.pocketed.size());
+    result.info.scratch = turn.facts.scratch;
+    result.info.first_contact = turn.facts.first_contact;
+    result.info.foul = turn.ruling.foul;
+    result.info.reason = turn.ruling.reason;
+    const bool legal = !turn.ruling.foul && !turn.ruling.rerack;
+    result.reward = legal ? static_cast<double>(turn.facts.pocketed.size()) : -1.0;
+    result.terminated = true;
+    return result;
+  }
+
+  void addFeatures(BoxSpec&) const override {}
+  void writeFeatures(float*) const override {}
+
+private:
+  const physics::Engine<double>& engine_;
+  std::string rules_;
+  std::unique_ptr<game::GamePlay> game_;
+};
+}  // namespace
+
+std::unique_ptr<Task> makeBreakTask(const physics::Engine<double>& engine, const EnvOptions& options)
+{
+  return std::make_unique<BreakTask>(engine, options);
+}
+
+}  // namespace learning
+}  // namespace cue_sim

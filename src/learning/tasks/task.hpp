@@ -1,0 +1,47 @@
+// A task: what an episode starts from, what a shot earns, and when the episode ends. Each task is
+// one file in this folder, named in task_registry.cpp; Environment adds the action, the noise and
+// the observation around it.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cue_sim/learning/environment.hpp"
+#include "cue_sim/learning/random.hpp"
+#include "cue_sim/physics/cue_strike.hpp"
+#include "cue_sim/physics/table_state.hpp"
+
+namespace cue_sim
+{
+namespace learning
+{
+class Task
+{
+public:
+  virtual ~Task() = default;
+  virtual std::unique_ptr<Task> clone() const = 0;
+
+  /// A new episode's table, drawn from `random`.
+  virtual void reset(Random& random) = 0;
+  /// The table the next shot is played on.
+  virtual const physics::TableState<double>& table() const = 0;
+  /// The object balls a relative action chooses among (ids, ascending).
+  virtual std::vector<int> aimChoices() const = 0;
+  /// Plays the cue ball's strike as executed (noise already on it; `random` draws whatever else
+  /// the task needs, an opponent's noise say): the shot to rest, its reward, and whether the
+  /// episode ended. The step's `shots` count is the environment's.
+  virtual StepResult shoot(const physics::CueStrike<double>& strike, Random& random) = 0;
+
+  /// The task's own features after the ball block: their names and bounds (appended to `box`)...
+  virtual void addFeatures(BoxSpec& box) const = 0;
+  /// ...and their values now.
+  virtual void writeFeatures(float* out) const = 0;
+};
+
+/// The task `options.task` names on `engine` (throws std::invalid_argument for an unknown name or a
+/// table it cannot be played on).
+std::unique_ptr<Task> makeTask(const physics::Engine<double>& engine, const EnvOptions& options);
+
+}  // namespace learning
+}  // namespace cue_sim

@@ -1,0 +1,47 @@
+// The tasks by name: each is one file in tasks/, made here.
+#include <stdexcept>
+
+#include "learning/tasks/task.hpp"
+
+namespace cue_sim
+{
+namespace learning
+{
+std::unique_ptr<Task> makePotTask(const physics::Engine<double>& engine, const EnvOptions& options);
+std::unique_ptr<Task> makeBreakTask(const physics::Engine<double>& engine, const EnvOptions& options);
+
+namespace
+{
+struct TaskEntry
+{
+  const char* name;
+  std::unique_ptr<Task> (*make)(const physics::Engine<double>&, const EnvOptions&);
+};
+
+const TaskEntry kTasks[] = {
+    {"pot", &makePotTask},
+    {"break", &makeBreakTask},
+};
+}  // namespace
+
+std::vector<std::string> taskNames()
+{
+  std::vector<std::string> names;
+  for (const TaskEntry& entry : kTasks)
+    names.emplace_back(entry.name);
+  return names;
+}
+
+std::unique_ptr<Task> makeTask(const physics::Engine<double>& engine, const EnvOptions& options)
+{
+  for (const TaskEntry& entry : kTasks)
+    if (options.task == entry.name)
+      return entry.make(engine, options);
+  std::string names;
+  for (const std::string& name : taskNames())
+    names += (names.empty() ? "" : ", ") + name;
+  throw std::invalid_argument("task: '" + options.task + "' is not a task; the tasks are " + names);
+}
+
+}  // namespace learning
+}  // namespace cue_sim

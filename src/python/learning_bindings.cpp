@@ -1,0 +1,272 @@
+// cue_sim._core's learning environments: options from a dict, observations and results as NumPy
+// arrays, every step with the GIL released.
+#include "python/learning_bindings.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "cue_sim/learning/environment.hpp"
+#include "cue_sim/learning/vector_environment.hpp"
+#include "python/state_arrays.hpp"
+
+namespace py = pybind11;
+
+namespace cue_sim
+{
+namespace python
+{
+namespace
+{
+using learning::EnvOptions;
+using Engine = physics::Engine<double>;
+
+/// The options a dict gives, over the defaults; an unknown key or a value of the wrong type is
+/// refused, naming it.
+EnvOptions optionsFrom(const py::dict& given)
+{
+  EnvOptions o;
+  for (const auto& [key_object, value] : given)
+  {
+    const std::string key = py::str(key_object);
+    try
+    {
+      if (key == "task")
+        o.task = value.cast<std::string>();
+      else if (key == "balls")
+        o.balls = value.cast<int>();
+      else if (key == "target")
+        o.target = value.cast<std::string>();
+      else if (key == "max_shots")
+        o.max_shots = value.cast<int>();
+      else if (key == "rack")
+        o.rack = value.cast<std::string>();
+      else if (key == "action")
+        o.action = value.cast<std::string>();
+      else if (key == "spin")
+        o.spin = value.cast<bool>();
+      else if (key == "noise")
+      {
+        if (!value.cast<bool>())
+          o.noise = physics::ExecutionNoise::none();
+      }
+      else if (key == "observation")
+        o.observation = value.cast<std::string>();
+      else if (key == "pixel_width")
+        o.pixel_width = value.cast<int>();
+      else if (key == "pixel_height")
+        o.pixel_height = value.cast<int>();
+      else
+        throw std::invalid_argument(key +
+                                    ": not an option; the options are task, balls, target, max_shots, rack, "
+                                    "action, spin, noise, observation, pixel_width, pixel_height");
+    }
+    catch (const py::cast_error&)
+    {
+      throw std::invalid_argument(key + ": " + std::string(py::str(py::repr(value))) + " is of the wrong type");
+    }
+  }
+  return o;
+}
+
+py::dict boxDict(const learning::BoxSpec& box)
+{
+  return py::dict(py::arg("names") = box.names, py::arg("low") = box.low, py::arg("high") = box.high);
+}
+
+py::dict spacesDict(const learning::Spaces& s)
+{
+  return py::dict(py::arg("action") = boxDict(s.action), py::arg("state") = boxDict(s.state),
+                  py::arg("pixel_width") = s.pixel_width, py::arg("pixel_height") = s.pixel_height);
+}
+
+/// Observation arrays for `rows` tables (rows 0: one table, no leading axis), or None where the
+/// observation lacks them.
+struct Observations
+{
+  py::object state = py::none(), pixels = py::none();
+  learning::ObservationBuffers buffers;
+
+  Observations(const learning::Spaces& s, std::size_t rows)
+  {
+    const auto lead = [rows](std::vector<py::ssize_t> shape) {
+      if (rows > 0)
+        shape.insert(shape.begin(), static_cast<py::ssize_t>(rows));
+      return shape;
+    };
+    if (s.state.size() > 0)
+    {
+      py::array_t<float> a(lead({static_cast<py::ssize_t>(s.state.size())}));
+      buffers.state = a.mutable_data();
+      state = a;
+    }
+    if (s.pixel_width > 0)
+    {
+      py::array_t<std::uint8_t> a(lead({s.pixel_height, s.pixel_width, 3}));
+      buffers.pixels = a.mutable_data();
+      pixels = a;
+    }
+  }
+};
+
+py::dict infoDict(const learning::StepInfo& info)
+{
+  return py::dict(py::arg("shots") = info.shots, py::arg("pocketed") = info.pocketed, py::arg("scratch") = info.scratch,
+                  py::arg("first_contact") = info.first_contact, py::arg("foul") = info.foul,
+                  py::arg("events") = info.events, py::arg("shot_time") = info.shot_time,
+                  py::arg("reason") = info.reason);
+}
+
+/// A (rows, columns) C-contiguous float64 view of `actions` (one table: a vector is one row).
+py::array_t<double, py::array::c_style | py::array::forcecast> actionRows(const py::object& actions)
+{
+  return py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(actions);
+}
+
+struct PyEnvironment
+{
+  std::shared_ptr<const Engine> engine;
+  learning::Environment env;
+
+  PyEnvironment(std::shared_ptr<Engine> e, const py::dict& options)
+    : engine(std::move(e)), env(engine, optionsFrom(options))
+  {
+  }
+
+  py::tuple reset(std::optional<std::uint64_t> seed)
+  {
+    Observations obs(env.spaces(), 0);
+    {
+      py::gil_scoped_release release;
+      env.reset(seed, obs.buffers);
+    }
+    return py::make_tuple(obs.state, obs.pixels);
+  }
+
+  py::tuple step(const py::object& action)
+  {
+    const auto a = actionRows(action);
+    if (!a || a.ndim() != 1)
+      throw std::invalid_argument("action: a vector of " + std::to_string(env.spaces().action.size()) +
+                                  " values, got an array of " + std::to_string(a ? a.ndim() : -1) + " dimensions");
+    Observations obs(env.spaces(), 0);
+    learning::StepResult r;
+    {
+      py::gil_scoped_release release;
+      r = env.step(a.data(), static_cast<std::size_t>(a.shape(0)), obs.buffers);
+    }
+    return py::make_tuple(obs.state, obs.pixels, r.reward, r.terminated, r.truncated, infoDict(r.info));
+  }
+
+  py::array_t<std::uint8_t> render(int width, int height) const
+  {
+    std::vector<std::uint8_t> rgb = env.render(width, height);
+    py::array_t<std::uint8_t> out({height, width, 3});
+    std::copy(rgb.begin(), rgb.end(), out.mutable_data());
+    return out;
+  }
+};
+
+struct PyVectorEnvironment
+{
+  std::shared_ptr<const Engine> engine;
+  learning::VectorEnvironment envs;
+
+  PyVectorEnvironment(std::shared_ptr<Engine> e, const py::dict& options, int count, unsigned threads)
+    : engine(std::move(e)), envs(engine, optionsFrom(options), count, threads)
+  {
+  }
+
+  py::tuple reset(std::optional<std::uint64_t> seed)
+  {
+    Observations obs(envs.spaces(), static_cast<std::size_t>(envs.size()));
+    learning::VectorBuffers out;
+    out.state = obs.buffers.state;
+    out.pixels = obs.buffers.pixels;
+    {
+      py::gil_scoped_release release;
+      envs.reset(seed, out);
+    }
+    return py::make_tuple(obs.state, obs.pixels);
+  }
+
+  py::tuple step(const py::object& actions)
+  {
+    const auto a = actionRows(actions);
+    if (!a || a.ndim() != 2)
+      throw std::invalid_argument("actions: an array of shape (" + std::to_string(envs.size()) + ", " +
+                                  std::to_string(envs.spaces().action.size()) + "), got " +
+                                  std::to_string(a ? a.ndim() : -1) + " dimensions");
+    const auto n = static_cast<std::size_t>(envs.size());
+    Observations obs(envs.spaces(), n);
+    py::array_t<double> rewards(static_cast<py::ssize_t>(n));
+    py::array_t<bool> terminated(static_cast<py::ssize_t>(n)), truncated(static_cast<py::ssize_t>(n)),
+        autoreset(static_cast<py::ssize_t>(n));
+    std::vector<learning::StepInfo> infos(n);
+    learning::VectorBuffers out;
+    out.state = obs.buffers.state;
+    out.pixels = obs.buffers.pixels;
+    out.rewards = rewards.mutable_data();
+    out.terminated = reinterpret_cast<std::uint8_t*>(terminated.mutable_data());
+    out.truncated = reinterpret_cast<std::uint8_t*>(truncated.mutable_data());
+    out.autoreset = reinterpret_cast<std::uint8_t*>(autoreset.mutable_data());
+    out.infos = infos.data();
+    {
+      py::gil_scoped_release release;
+      envs.step(a.data(), static_cast<std::size_t>(a.shape(0)), static_cast<std::size_t>(a.shape(1)), out);
+    }
+    return py::make_tuple(obs.state, obs.pixels, rewards, terminated, truncated, autoreset, infoArrays(infos));
+  }
+
+  static py::dict infoArrays(const std::vector<learning::StepInfo>& infos)
+  {
+    const auto n = static_cast<py::ssize_t>(infos.size());
+    py::array_t<int> shots(n), pocketed(n), first_contact(n), events(n);
+    py::array_t<bool> scratch(n), foul(n);
+    py::array_t<double> shot_time(n);
+    py::list reason;
+    for (py::ssize_t i = 0; i < n; ++i)
+    {
+      const learning::StepInfo& s = infos[static_cast<std::size_t>(i)];
+      shots.mutable_at(i) = s.shots;
+      pocketed.mutable_at(i) = s.pocketed;
+      first_contact.mutable_at(i) = s.first_contact;
+      events.mutable_at(i) = s.events;
+      scratch.mutable_at(i) = s.scratch;
+      foul.mutable_at(i) = s.foul;
+      shot_time.mutable_at(i) = s.shot_time;
+      reason.append(s.reason);
+    }
+    return py::dict(py::arg("shots") = shots, py::arg("pocketed") = pocketed, py::arg("scratch") = scratch,
+                    py::arg("first_contact") = first_contact, py::arg("foul") = foul, py::arg("events") = events,
+                    py::arg("shot_time") = shot_time, py::arg("reason") = reason);
+  }
+};
+}  // namespace
+
+void bindLearning(py::module_& m)
+{
+  m.def("task_names", &learning::taskNames);
+  py::class_<PyEnvironment>(m, "Env")
+      .def(py::init<std::shared_ptr<Engine>, const py::dict&>(), py::arg("engine"), py::arg("options"))
+      .def_property_readonly("spaces", [](const PyEnvironment& e) { return spacesDict(e.env.spaces()); })
+      .def("reset", &PyEnvironment::reset, py::arg("seed") = py::none())
+      .def("step", &PyEnvironment::step, py::arg("action"))
+      .def("render", &PyEnvironment::render, py::arg("width"), py::arg("height"))
+      .def_property_readonly("done", [](const PyEnvironment& e) { return e.env.done(); })
+      .def("table", [](const PyEnvironment& e) { return toArrays(e.env.table().balls); });
+  py::class_<PyVectorEnvironment>(m, "VectorEnv")
+      .def(py::init<std::shared_ptr<Engine>, const py::dict&, int, unsigned>(), py::arg("engine"), py::arg("options"),
+           py::arg("num_envs"), py::arg("threads") = 0)
+      .def_property_readonly("spaces", [](const PyVectorEnvironment& e) { return spacesDict(e.envs.spaces()); })
+      .def_property_readonly("num_envs", [](const PyVectorEnvironment& e) { return e.envs.size(); })
+      .def("reset", &PyVectorEnvironment::reset, py::arg("seed") = py::none())
+      .def("step", &PyVectorEnvironment::step, py::arg("actions"));
+}
+
+}  // namespace python
+}  // namespace cue_sim

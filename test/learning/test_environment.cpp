@@ -1,0 +1,478 @@
+// The learning environments: every point of the action box is a strike the engine takes, bad
+// actions are refused and change nothing, a seed fixes an episode, the vector environment is N
+// single environments bit for bit, and the rewards say what the shots did.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <limits>
+
+#include "cue_sim/game/referee.hpp"
+#include "cue_sim/learning/environment.hpp"
+#include "cue_sim/learning/vector_environment.hpp"
+#include "cue_sim/table_description/table_catalog.hpp"
+#include "cue_sim/table_description/urdf_table_loader.hpp"
+#include "learning/actions.hpp"
+#include "learning/pixel_renderer.hpp"
+#include "learning/state_observation.hpp"
+
+namespace cue_sim
+{
+namespace learning
+{
+namespace
+{
+std::shared_ptr<const physics::Engine<double>> engineOf(const std::string& table)
+{
+  return std::make_shared<const physics::Engine<double>>(
+      std::make_shared<const physics::TableModel>(tableFromUrdfFile(tableUrdfPath(table))),
+      physics::PhysicsParams<double>());
+}
+
+std::vector<float> stateOf(const Environment& env)
+{
+  return std::vector<float>(env.spaces().state.size());
+}
+
+/// A point of the action box: each component at its low bound, its high bound or between.
+std::vector<double> actionAt(const BoxSpec& box, Random& random)
+{
+  std::vector<double> a(box.size());
+  for (std::size_t i = 0; i < a.size(); ++i)
+  {
+    const double u = random.unit();
+    a[i] = u < 0.2 ? box.low[i] : u < 0.4 ? box.high[i] : random.uniform(box.low[i], box.high[i]);
+  }
+  return a;
+}
+
+TEST(LearningActions, EveryPointOfTheBoxIsAStrikeTheEngineTakes)
+{
+  const auto engine = engineOf("7ft");
+  for (const char* kind : {"absolute", "relative"})
+  {
+    EnvOptions o;
+    o.action = kind;
+    o.spin = true;
+    o.balls = 4;
+    Environment env(engine, o);
+    ActionLayout layout(o);
+    std::vector<float> state = stateOf(env);
+    Random random(3);
+    for (int k = 0; k < 2000; ++k)
+    {
+      env.reset(k, {state.data(), nullptr});
+      const std::vector<double> a = actionAt(layout.box(), random);
+      ASSERT_TRUE(layout.whyInvalid(a.data(), a.size()).empty());
+      AimContext aim{&env.table(), &engine->table(), engine->params().ball_radius,
+                     game::objectBallsOnTable(env.table())};
+      const physics::CueStrike<double> s = layout.strike(a.data(), aim);
+      ASSERT_TRUE(physics::validateStrike(s).empty()) << physics::validateStrike(s);
+      ASSERT_TRUE(engine->whyNotStrikable(env.table(), 0, s).empty()) << engine->whyNotStrikable(env.table(), 0, s);
+    }
+  }
+}
+
+TEST(LearningActions, TipOffsetsFillTheDiscOfTheLargestOffset)
+{
+  const double r = physics::CueLimits::max_offset;
+  double a, b;
+  squareToTipOffset(0, 0, a, b);
+  EXPECT_EQ(a, 0);
+  EXPECT_EQ(b, 0);
+  // The square's edges reach the rim; its axes stay axes.
+  for (double t = -1; t <= 1; t += 0.125)
+    for (const auto& [u, v] : {std::pair{1.0, t}, std::pair{-1.0, t}, std::pair{t, 1.0}, std::pair{t, -1.0}})
+    {
+      squareToTipOffset(u, v, a, b);
+      EXPECT_NEAR(std::hypot(a, b), r, 1e-12) << u << " " << v;
+    }
+  squareToTipOffset(0, 0.5, a, b);
+  EXPECT_EQ(a, 0);
+  EXPECT_DOUBLE_EQ(b, 0.5 * r);
+}
+
+TEST(LearningActions, BadActionsAreRefusedNamingTheComponentAndChangeNothing)
+{
+  EnvOptions o;
+  o.balls = 3;
+  Environment env(engineOf("7ft"), o);
+  std::vector<float> before = stateOf(env), after = stateOf(env);
+  env.reset(7, {before.data(), nullptr});
+  const auto table = env.table();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<std::pair<std::vector<double>, std::string>> bad = {
+      {{nan, 2.0}, "phi"},           {{0.1, nan}, "speed"},
+      {{0.1, 0.0}, "speed"},         {{0.1, 12.5}, "speed"},
+      {{4.0, 2.0}, "phi"},           {{0.1}, "2 values"},
+      {{0.1, 2.0, 0.0}, "2 values"}, {{0.1, -std::numeric_limits<double>::infinity()}, "speed"}};
+  for (const auto& [action, field] : bad)
+  {
+    try
+    {
+      env.step(action.data(), action.size(), {after.data(), nullptr});
+      ADD_FAILURE() << "accepted an action for " << field;
+    }
+    catch (const std::invalid_argument& e)
+    {
+      EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(env.done());
+    ASSERT_EQ(env.table().balls.size(), table.balls.size());
+    for (std::size_t i = 0; i < table.balls.size(); ++i)
+      EXPECT_EQ(env.table().balls[i].r, table.balls[i].r);
+  }
+  const std::vector<double> good = {0.1, 2.0};
+  env.step(good.data(), good.size(), {after.data(), nullptr});
+  EXPECT_TRUE(env.done());
+  EXPECT_THROW(env.step(good.data(), good.size(), {after.data(), nullptr}), std::logic_error);
+}
+
+TEST(LearningOptions, WrongOptionsNameTheField)
+{
+  const auto engine = engineOf("7ft");
+  const auto refused = [&](EnvOptions o, const std::string& field) {
+    try
+    {
+      Environment env(engine, o);
+      ADD_FAILURE() << "accepted " << field;
+    }
+    catch (const std::invalid_argument& e)
+    {
+      EXPECT_EQ(std::string(e.what()).rfind(field, 0), 0u) << e.what();
+    }
+  };
+  EnvOptions o;
+  o.task = "snooker";
+  refused(o, "task");
+  o = {};
+  o.balls = 16;
+  refused(o, "balls");
+  o = {};
+  o.observation = "rgb";
+  refused(o, "observation");
+  o = {};
+  o.observation = "pixels";
+  o.pixel_width = 4;
+  refused(o, "pixel_width");
+  o = {};
+  o.noise.speed = -1;
+  refused(o, "noise");
+  EXPECT_THROW(Environment(engineOf("carom"), EnvOptions()), std::invalid_argument);  // no pockets to pot into
+}
+
+/// Plays `steps` shots of seeded random actions, resetting when an episode ends; every
+/// observation and reward in order.
+std::vector<double> playthrough(Environment& env, std::uint64_t seed, int steps)
+{
+  std::vector<double> trace;
+  std::vector<float> state = stateOf(env);
+  Random actions(seed + 1000);
+  env.reset(seed, {state.data(), nullptr});
+  for (int k = 0; k < steps; ++k)
+  {
+    const std::vector<double> a = actionAt(env.spaces().action, actions);
+    const StepResult r = env.step(a.data(), a.size(), {state.data(), nullptr});
+    trace.insert(trace.end(), state.begin(), state.end());
+    trace.push_back(r.reward);
+    if (r.terminated || r.truncated)
+      env.reset(std::nullopt, {state.data(), nullptr});
+  }
+  return trace;
+}
+
+TEST(LearningEnvironment, ASeedFixesTheEpisodesAndACopyPlaysOnAlike)
+{
+  EnvOptions o;
+  o.balls = 5;
+  o.max_shots = 4;
+  const auto engine = engineOf("7ft");
+  Environment a(engine, o), b(engine, o);
+  EXPECT_EQ(playthrough(a, 11, 60), playthrough(b, 11, 60));
+  Environment c(engine, o);
+  EXPECT_NE(playthrough(a, 11, 60), playthrough(c, 12, 60));
+  Environment copy = a;
+  EXPECT_EQ(playthrough(copy, 5, 30), playthrough(a, 5, 30));
+}
+
+TEST(LearningVectorEnvironment, IsNSingleEnvironmentsBitForBit)
+{
+  for (const char* task : {"pot", "break"})
+  {
+    EnvOptions o;
+    o.task = task;
+    o.balls = 4;
+    o.max_shots = 3;
+    const auto engine = engineOf("7ft");
+    const int n = 7;
+    VectorEnvironment vector(engine, o, n, 2);
+    std::vector<Environment> singles(n, Environment(engine, o));
+    const std::size_t d = vector.spaces().state.size(), m = vector.spaces().action.size();
+    std::vector<float> vs(n * d), ss(d);
+    vector.reset(100, {vs.data()});
+    for (int i = 0; i < n; ++i)
+    {
+      singles[i].reset(100 + i, {ss.data(), nullptr});
+      ASSERT_TRUE(std::equal(ss.begin(), ss.end(), vs.begin() + i * d));
+    }
+    Random random(9);
+    std::vector<double> rewards(n);
+    std::vector<std::uint8_t> terminated(n), truncated(n), autoreset(n);
+    std::vector<std::uint8_t> ended(n, 0);
+    int resets = 0;
+    for (int step = 0; step < 25; ++step)
+    {
+      std::vector<double> actions;
+      for (int i = 0; i < n; ++i)
+      {
+        const std::vector<double> a = actionAt(vector.spaces().action, random);
+        actions.insert(actions.end(), a.begin(), a.end());
+      }
+      vector.step(actions.data(), n, m,
+                  {vs.data(), nullptr, rewards.data(), terminated.data(), truncated.data(), autoreset.data(), nullptr});
+      for (int i = 0; i < n; ++i)
+      {
+        double reward = 0;
+        bool term = false, trunc = false;
+        if (ended[i])
+        {
+          singles[i].reset(std::nullopt, {ss.data(), nullptr});
+          ++resets;
+        }
+        else
+        {
+          const StepResult r = singles[i].step(actions.data() + i * m, m, {ss.data(), nullptr});
+          reward = r.reward;
+          term = r.terminated;
+          trunc = r.truncated;
+        }
+        ASSERT_EQ(autoreset[i], ended[i]) << task << " step " << step << " table " << i;
+        ASSERT_EQ(rewards[i], reward);
+        ASSERT_EQ(terminated[i], term);
+        ASSERT_EQ(truncated[i], trunc);
+        ASSERT_TRUE(std::equal(ss.begin(), ss.end(), vs.begin() + i * d)) << task << " step " << step << " table " << i;
+        ended[i] = term || trunc;
+      }
+    }
+    EXPECT_GT(resets, 5) << "the episodes must end and restart for the test to see autoreset";
+    // A bad row is refused before any table moves.
+    std::vector<double> actions(n * m, 1.0);
+    actions[3 * m + 1] = std::numeric_limits<double>::quiet_NaN();
+    const std::vector<float> held = vs;
+    try
+    {
+      vector.step(actions.data(), n, m, {vs.data()});
+      ADD_FAILURE() << "a NaN was accepted";
+    }
+    catch (const std::invalid_argument& e)
+    {
+      EXPECT_EQ(std::string(e.what()).rfind("row 3: action: speed", 0), 0u) << e.what();
+    }
+    EXPECT_EQ(vs, held);
+  }
+}
+
+TEST(LearningPot, RewardsSayWhatTheShotDid)
+{
+  EnvOptions o;
+  o.balls = 3;
+  o.noise = physics::ExecutionNoise::none();
+  const auto engine = engineOf("7ft");
+  Environment env(engine, o);
+  std::vector<float> state = stateOf(env);
+  Random random(4);
+  int pots = 0, scratches = 0;
+  for (int k = 0; k < 3000; ++k)
+  {
+    env.reset(k, {state.data(), nullptr});
+    const int before = static_cast<int>(game::objectBallsOnTable(env.table()).size());
+    const std::vector<double> a = actionAt(env.spaces().action, random);
+    const StepResult r = env.step(a.data(), a.size(), {state.data(), nullptr});
+    const int after = static_cast<int>(game::objectBallsOnTable(env.table()).size());
+    const bool cue_gone = env.table().indexOf(0) < 0 || !env.table().balls[env.table().indexOf(0)].inPlay();
+    ASSERT_EQ(r.info.pocketed, before - after);
+    ASSERT_EQ(r.info.scratch, cue_gone);
+    ASSERT_EQ(r.reward, cue_gone ? -1.0 : static_cast<double>(before - after));
+    ASSERT_TRUE(r.terminated);  // one shot an episode by default
+    // The observation is the table: each ball's slot set exactly when it is on the table.
+    for (int id = 0; id < kBallSlots; ++id)
+    {
+      const int index = env.table().indexOf(id);
+      const bool on = index >= 0 && env.table().balls[index].inPlay();
+      ASSERT_EQ(state[3 * id + 2], on ? 1.0f : 0.0f);
+    }
+    pots += r.reward > 0;
+    scratches += r.info.scratch;
+  }
+  EXPECT_GT(pots, 30);
+  EXPECT_GT(scratches, 30);
+}
+
+TEST(LearningPot, NormalisedPositionsStayWithinTheirBound)
+{
+  // Balls at rest in a pocket's mouth are the farthest out; the bound must hold without the clamp.
+  for (const char* table : {"7ft", "9ft"})
+  {
+    EnvOptions o;
+    o.balls = 15;
+    const auto engine = engineOf(table);
+    Environment env(engine, o);
+    std::vector<float> state = stateOf(env);
+    Random random(8);
+    double largest = 0;
+    const Eigen::Vector2d half(engine->table().clothLength() / 2, engine->table().clothWidth() / 2);
+    for (int k = 0; k < 400; ++k)
+    {
+      env.reset(k, {state.data(), nullptr});
+      const std::vector<double> a = actionAt(env.spaces().action, random);
+      env.step(a.data(), a.size(), {state.data(), nullptr});
+      for (const auto& b : env.table().balls)
+        if (b.inPlay())
+          largest = std::max(largest,
+                             (b.r.head<2>() - engine->table().clothCentre()).cwiseQuotient(half).cwiseAbs().maxCoeff());
+    }
+    EXPECT_LT(largest, kPositionBound) << table;
+    EXPECT_GT(largest, 0.9) << table;  // balls do reach the cushions
+  }
+}
+
+TEST(LearningPot, TheRelativeActionAimsAtTheBallAndPocketItNames)
+{
+  // A ghost-ball aim at the pocket the object ball is most nearly in line with pots far more often
+  // than a random heading: the action means the shot it names.
+  EnvOptions o;
+  o.balls = 1;
+  o.action = "relative";
+  o.noise = physics::ExecutionNoise::none();
+  const auto engine = engineOf("7ft");
+  Environment env(engine, o);
+  std::vector<float> state = stateOf(env);
+  const double R = engine->params().ball_radius;
+  int pots = 0, tries = 0, turned_pots = 0;
+  for (int k = 0; k < 600; ++k)
+  {
+    env.reset(k, {state.data(), nullptr});
+    const Eigen::Vector2d cue = env.table().balls[env.table().indexOf(0)].r.head<2>();
+    const Eigen::Vector2d object = env.table().balls[env.table().indexOf(1)].r.head<2>();
+    const auto& pockets = engine->table().pockets();
+    int best = -1;
+    double best_cut = M_PI;
+    for (std::size_t p = 0; p < pockets.size(); ++p)
+    {
+      const Eigen::Vector2d to_pocket = (pockets[p].centre - object).normalized();
+      const Eigen::Vector2d to_ghost = object - 2 * R * to_pocket - cue;
+      const double cut = std::acos(std::clamp(to_ghost.normalized().dot(to_pocket), -1.0, 1.0));
+      if (cut < best_cut)
+      {
+        best_cut = cut;
+        best = static_cast<int>(p);
+      }
+    }
+    if (best_cut > 0.5)  // under about 30 degrees of cut, where throw stays small
+      continue;
+    // The same shot turned by the largest offset the action allows, on a copy.
+    Environment turned = env;
+    const std::vector<double> a = {0.0, (best + 0.5) / pockets.size(), 0.0, 2.5};
+    const std::vector<double> off = {0.0, (best + 0.5) / pockets.size(), kMaxCutOffset, 2.5};
+    const StepResult r = env.step(a.data(), a.size(), {state.data(), nullptr});
+    const StepResult t = turned.step(off.data(), off.size(), {state.data(), nullptr});
+    ++tries;
+    pots += r.info.pocketed == 1;
+    turned_pots += t.info.pocketed == 1;
+  }
+  ASSERT_GT(tries, 100);
+  std::cout << "aimed: " << pots << " of " << tries << ", turned: " << turned_pots << "\n";
+  EXPECT_GT(static_cast<double>(pots) / tries, 0.8) << pots << " of " << tries;
+  EXPECT_LT(static_cast<double>(turned_pots) / tries, 0.1) << turned_pots << " of " << tries;
+}
+
+TEST(LearningBreak, TheRewardIsTheRulingsAndTheRackIsJittered)
+{
+  for (const char* rack : {"eight", "nine"})
+  {
+    EnvOptions o;
+    o.task = "break";
+    o.rack = rack;
+    o.noise = physics::ExecutionNoise::none();
+    const auto engine = engineOf("7ft");
+    Environment env(engine, o), other(engine, o);
+    std::vector<float> state = stateOf(env), other_state = stateOf(other);
+    int legal = 0;
+    for (int k = 0; k < 40; ++k)
+    {
+      env.reset(k, {state.data(), nullptr});
+      other.reset(k + 1000, {other_state.data(), nullptr});
+      EXPECT_NE(state, other_state) << "racks of different seeds are jittered differently";
+      // Full at the apex ball, hard.
+      const Eigen::Vector2d cue = env.table().balls[env.table().indexOf(0)].r.head<2>();
+      const Eigen::Vector2d apex = env.table().balls[env.table().indexOf(1)].r.head<2>();
+      const std::vector<double> a = {std::atan2(apex.y() - cue.y(), apex.x() - cue.x()), 9.0};
+      const StepResult r = env.step(a.data(), a.size(), {state.data(), nullptr});
+      EXPECT_TRUE(r.terminated);
+      EXPECT_FALSE(r.info.reason.empty());
+      EXPECT_NE(r.info.reason.find("WPA"), std::string::npos) << r.info.reason;
+      if (r.info.foul)
+        EXPECT_EQ(r.reward, -1);
+      else
+      {
+        EXPECT_EQ(r.reward, r.info.pocketed);
+        ++legal;
+      }
+    }
+    EXPECT_GE(legal, 30) << rack << ": a hard full break into a jittered rack is legal most times";
+  }
+}
+
+TEST(LearningPixels, TheCameraShowsTheBallsWhereTheStateHasThem)
+{
+  EnvOptions o;
+  o.balls = 4;
+  o.observation = "both";
+  o.pixel_width = 160;
+  o.pixel_height = 80;
+  const auto engine = engineOf("7ft");
+  Environment env(engine, o);
+  ASSERT_EQ(env.spaces().pixelBytes(), 160u * 80 * 3);
+  std::vector<float> state = stateOf(env);
+  std::vector<std::uint8_t> pixels(env.spaces().pixelBytes());
+  // The picture spans the cloth and the frame's margin, the cloth's centre at the image's centre,
+  // the table's length across it and +y up. A ball's centre is as deep below the lens as the
+  // framing assumes, so the scale at it is the framing's [px/m].
+  const double length = engine->table().clothLength(), width = engine->table().clothWidth();
+  const double scale = std::min(160 / (length + 2 * kPixelFrameMargin), 80 / (width + 2 * kPixelFrameMargin));
+  const double radius = engine->params().ball_radius * scale;
+  const auto cloth = [&](int x, int y) {
+    const std::uint8_t* p = &pixels[(y * 160 + x) * 3];
+    return p[1] > p[0] + 30 && p[1] > p[2] + 30;  // green
+  };
+  for (int k = 0; k < 20; ++k)
+  {
+    env.reset(k, {state.data(), pixels.data()});
+    std::vector<Eigen::Vector2d> expected;
+    for (int id = 0; id < kBallSlots; ++id)
+      if (state[3 * id + 2] > 0)
+        expected.emplace_back(79.5 + state[3 * id] * length / 2 * scale, 39.5 - state[3 * id + 1] * width / 2 * scale);
+    // Each ball covers the pixel at its centre...
+    for (const Eigen::Vector2d& c : expected)
+      EXPECT_FALSE(cloth(static_cast<int>(std::lround(c.x())), static_cast<int>(std::lround(c.y()))))
+          << "seed " << k << ": no ball at " << c.transpose();
+    // ...and whatever is not cloth, inside the cushions, is a ball where the state has one.
+    for (int y = 0; y < 80; ++y)
+      for (int x = 0; x < 160; ++x)
+      {
+        const Eigen::Vector2d on_table((x - 79.5) / scale, (39.5 - y) / scale);
+        if (std::abs(on_table.x()) > length / 2 - 0.06 || std::abs(on_table.y()) > width / 2 - 0.06 || cloth(x, y))
+          continue;
+        double nearest = 1e9;
+        for (const Eigen::Vector2d& c : expected)
+          nearest = std::min(nearest, (c - Eigen::Vector2d(x, y)).norm());
+        EXPECT_LT(nearest, radius + 1.5) << "seed " << k << ": pixel " << x << ", " << y
+                                         << " is neither cloth nor ball";
+      }
+  }
+}
+
+}  // namespace
+}  // namespace learning
+}  // namespace cue_sim

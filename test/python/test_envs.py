@@ -1,0 +1,167 @@
+"""cue_sim.envs: Gymnasium's environment contract without Gymnasium (spaces, seeds, resets, bad
+actions), the vector environment against single ones, and gymnasium's own check_env when it is
+installed."""
+import math
+
+import numpy as np
+import pytest
+
+from cue_sim.envs import Box, Dict, Discrete, TableEnv, TableVectorEnv, task_names
+
+
+def play(env, seed, steps, action_seed=1):
+    """Observations and rewards of `steps` seeded random actions, resetting when an episode ends."""
+    env.action_space.seed(action_seed)
+    obs, _ = env.reset(seed=seed)
+    trace = [obs]
+    for _ in range(steps):
+        obs, reward, terminated, truncated, info = env.step(env.action_space.sample())
+        trace.append((obs, reward, terminated, truncated))
+        if terminated or truncated:
+            obs, _ = env.reset()
+            trace.append(obs)
+    return trace
+
+
+def same(a, b):
+    if isinstance(a, dict):
+        return a.keys() == b.keys() and all(same(a[k], b[k]) for k in a)
+    if isinstance(a, (tuple, list)):
+        return len(a) == len(b) and all(same(x, y) for x, y in zip(a, b))
+    return np.array_equal(a, b)
+
+
+@pytest.mark.parametrize("options", [dict(task="pot", balls=3), dict(task="pot", target="lowest", max_shots=5, balls=4),
+                                     dict(task="pot", action="relative", spin=True),
+                                     dict(task="break", rack="eight"),
+                                     dict(task="pot", observation="both", pixel_width=96, pixel_height=48)])
+def test_the_contract(options):
+    env = TableEnv(**options)
+    assert options["task"] in task_names()
+    obs, info = env.reset(seed=3)
+    assert obs in env.observation_space and isinstance(info, dict)
+    ends = 0
+    for _ in range(40):
+        action = env.action_space.sample()
+        assert action in env.action_space
+        obs, reward, terminated, truncated, info = env.step(action)
+        assert obs in env.observation_space
+        assert isinstance(reward, float) and math.isfinite(reward)
+        assert isinstance(terminated, bool) and isinstance(truncated, bool)
+        assert {"shots", "pocketed", "scratch", "foul", "reason"} <= info.keys() and info["reason"]
+        if terminated or truncated:
+            ends += 1
+            obs, _ = env.reset()
+            assert obs in env.observation_space
+    assert ends > 0
+    assert same(play(env, 7, 30), play(TableEnv(**options), 7, 30))
+    frame = TableEnv(render_mode="rgb_array", **options)
+    frame.reset(seed=1)
+    picture = frame.render()
+    assert picture.shape == (360, 640, 3) and picture.dtype == np.uint8 and picture.std() > 10
+
+
+def test_seeds_fix_episodes_and_streams_go_on():
+    env = TableEnv("pot", balls=5)
+    first, _ = env.reset(seed=11)
+    again, _ = env.reset(seed=11)
+    assert np.array_equal(first, again)
+    other, _ = env.reset(seed=12)
+    assert not np.array_equal(first, other)
+    following, _ = env.reset()
+    assert not np.array_equal(following, other)
+    # A fresh environment's first reset without a seed draws one: two fresh ones differ.
+    assert not np.array_equal(TableEnv("pot", balls=5).reset()[0], TableEnv("pot", balls=5).reset()[0])
+
+
+@pytest.mark.parametrize("action, field", [([float("nan"), 2.0], "phi"), ([0.1, 0.0], "speed"),
+                                           ([0.1, 13.0], "speed"), ([0.1], "2 values"),
+                                           ([[0.1, 2.0]], "shape"), ([4.0, 1.0], "phi")])
+def test_bad_actions_are_refused_and_change_nothing(action, field):
+    env = TableEnv("pot", balls=3)
+    obs, _ = env.reset(seed=5)
+    before = env.table().positions.copy()
+    with pytest.raises(ValueError, match=field):
+        env.step(action)
+    assert np.array_equal(env.table().positions, before)
+    env.step([0.2, 1.0])  # the episode is still playable
+
+
+def test_bad_options_name_the_option():
+    for options, field in [(dict(task="snooker"), "task"), (dict(balls=0), "balls"), (dict(colour=1), "colour"),
+                           (dict(observation="rgb"), "observation"), (dict(balls="two"), "balls"),
+                           (dict(render_mode="human"), "render_mode")]:
+        with pytest.raises(ValueError, match=field):
+            TableEnv(**options)
+    with pytest.raises(ValueError, match="pockets"):
+        TableEnv("pot", table="carom")
+
+
+def test_step_after_the_end_needs_a_reset():
+    env = TableEnv("pot")
+    env.reset(seed=0)
+    env.step([0.0, 1.0])
+    with pytest.raises(RuntimeError, match="reset"):
+        env.step([0.0, 1.0])
+
+
+@pytest.mark.parametrize("options", [dict(task="pot", balls=4, max_shots=3),
+                                     dict(task="pot", observation="both", pixel_width=32, pixel_height=16)])
+def test_the_vector_environment_is_single_environments(options):
+    n = 5
+    vector = TableVectorEnv(n, threads=2, **options)
+    singles = [TableEnv(**options) for _ in range(n)]
+    assert vector.single_action_space == singles[0].action_space
+    obs, _ = vector.reset(seed=40)
+    assert obs in vector.observation_space
+    pick = (lambda o, i: {k: v[i] for k, v in o.items()}) if isinstance(obs, dict) else (lambda o, i: o[i])
+    for i, env in enumerate(singles):
+        assert same(pick(obs, i), env.reset(seed=40 + i)[0])
+    ended = [False] * n
+    rng = np.random.default_rng(2)
+    autoresets = 0
+    for _ in range(12):
+        actions = np.stack([singles[0].action_space.low + rng.random(2) * (singles[0].action_space.high -
+                                                                           singles[0].action_space.low)
+                            for _ in range(n)])
+        obs, rewards, terminated, truncated, info = vector.step(actions)
+        assert obs in vector.observation_space
+        for i, env in enumerate(singles):
+            assert info["autoreset"][i] == ended[i]
+            if ended[i]:
+                single = env.reset()[0]
+                reward, term, trunc = 0.0, False, False
+                autoresets += 1
+            else:
+                single, reward, term, trunc, _ = env.step(actions[i])
+            assert same(pick(obs, i), single)
+            assert (rewards[i], terminated[i], truncated[i]) == (reward, term, trunc)
+            ended[i] = term or trunc
+    assert autoresets > 0
+    with pytest.raises(ValueError, match="row 2: action: speed"):
+        bad = actions.copy()
+        bad[2, 1] = np.nan
+        vector.step(bad)
+    with pytest.raises(ValueError, match="consecutive"):
+        vector.reset(seed=[1, 5, 2, 3, 4])
+
+
+def test_spaces_follow_gymnasium():
+    box = Box(np.array([0.0, -1.0]), np.array([1.0, 1.0]), dtype=np.float64)
+    box.seed(0)
+    assert box.shape == (2,) and box.dtype == np.float64
+    assert all(box.sample() in box for _ in range(100))
+    assert np.array([2.0, 0.0]) not in box and np.array([0.5]) not in box
+    pixels = Box(0, 255, shape=(4, 8, 3), dtype=np.uint8)
+    assert pixels.sample() in pixels and pixels.sample().dtype == np.uint8
+    d = Discrete(6)
+    assert all(d.sample() in d for _ in range(50)) and 6 not in d and -1 not in d
+    both = Dict({"state": box, "pixels": pixels})
+    assert both.sample() in both and {"state": box.sample()} not in both
+
+
+def test_gymnasium_check_env():
+    gymnasium = pytest.importorskip("gymnasium", reason="gymnasium is not installed (not packaged in Debian)")
+    from gymnasium.utils.env_checker import check_env
+    for env_id in ("cue_sim/Pot-v0", "cue_sim/Break-v0"):
+        check_env(gymnasium.make(env_id).unwrapped)
