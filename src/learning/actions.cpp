@@ -8,7 +8,11 @@ namespace cue_sim
 {
 namespace learning
 {
-ActionLayout::ActionLayout(const EnvOptions& options) : relative_(options.action == "relative"), spin_(options.spin)
+ActionLayout::ActionLayout(const EnvOptions& options)
+  : relative_(options.action == "relative"),
+    spin_(options.spin),
+    place_(isGameTask(options.task)),
+    push_out_(options.task == "nine_ball")
 {
   const auto add = [this](const char* name, double low, double high) {
     box_.names.emplace_back(name);
@@ -30,6 +34,18 @@ ActionLayout::ActionLayout(const EnvOptions& options) : relative_(options.action
     add("tip_right", -1, 1);
     add("tip_up", -1, 1);
   }
+  if (place_)
+  {
+    add("place_x", 0, 1);
+    add("place_y", 0, 1);
+  }
+  if (push_out_)
+    add("push_out", 0, 1);
+}
+
+bool isGameTask(const std::string& task)
+{
+  return task == "eight_ball" || task == "nine_ball";
 }
 
 std::string ActionLayout::whyInvalid(const double* action, std::size_t size) const
@@ -98,9 +114,10 @@ double wrapped(double angle)
 }
 }  // namespace
 
-physics::CueStrike<double> ActionLayout::strike(const double* action, const AimContext& aim) const
+ShotPlan ActionLayout::plan(const double* action, const AimContext& aim) const
 {
-  physics::CueStrike<double> s;
+  ShotPlan plan;
+  physics::CueStrike<double>& s = plan.strike;
   std::size_t k = 0;
   if (relative_)
   {
@@ -109,11 +126,12 @@ physics::CueStrike<double> ActionLayout::strike(const double* action, const AimC
     const int cue_index = aim.table->indexOf(0);
     if (!aim.choices.empty() && !aim.model->pockets().empty() && cue_index >= 0)
     {
-      const int object_id = aim.choices[choice(ball_u, aim.choices.size())];
-      const auto& pocket = aim.model->pockets()[choice(pocket_u, aim.model->pockets().size())];
+      plan.aimed_ball = aim.choices[choice(ball_u, aim.choices.size())];
+      plan.aimed_pocket = static_cast<int>(choice(pocket_u, aim.model->pockets().size()));
+      const auto& pocket = aim.model->pockets()[static_cast<std::size_t>(plan.aimed_pocket)];
       const Eigen::Vector2d cue = aim.table->balls[static_cast<std::size_t>(cue_index)].r.head<2>();
       const Eigen::Vector2d object =
-          aim.table->balls[static_cast<std::size_t>(aim.table->indexOf(object_id))].r.head<2>();
+          aim.table->balls[static_cast<std::size_t>(aim.table->indexOf(plan.aimed_ball))].r.head<2>();
       s.phi = ghostBallHeading(cue, object, pocketAimPoint(*aim.model, pocket), aim.ball_radius);
     }
     s.phi = wrapped(s.phi + offset);
@@ -127,7 +145,21 @@ physics::CueStrike<double> ActionLayout::strike(const double* action, const AimC
     const double u = action[k++], v = action[k++];
     squareToTipOffset(u, v, s.a, s.b);
   }
-  return s;
+  if (place_)
+    k += 2;
+  if (push_out_)
+    plan.push_out = action[k++] > 0.5;
+  return plan;
+}
+
+bool ActionLayout::placement(const double* action, double& u, double& v) const
+{
+  if (!place_)
+    return false;
+  const std::size_t at = box_.size() - (push_out_ ? 3 : 2);
+  u = action[at];
+  v = action[at + 1];
+  return true;
 }
 
 }  // namespace learning

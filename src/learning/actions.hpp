@@ -21,6 +21,9 @@ constexpr double kMinActionSpeed = 0.05;
 /// enough to cover throw and squirt at any cut, small enough that the aim still means the shot.
 constexpr double kMaxCutOffset = 0.2;
 
+/// Whether a task is a whole game (its action places the cue ball in hand).
+bool isGameTask(const std::string& task);
+
 /// What a relative action aims at: the balls it may choose (ids, in order) and the table.
 struct AimContext
 {
@@ -30,6 +33,15 @@ struct AimContext
   std::vector<int> choices;  ///< the object balls a relative action chooses among, in id order
 };
 
+/// What an action asks for besides the strike's numbers: the ball and pocket a relative action aims
+/// at (a game calls them), and in games where the cue ball goes in hand and whether to push out.
+struct ShotPlan
+{
+  physics::CueStrike<double> strike;       ///< planned; the environment adds the execution noise
+  int aimed_ball = -1, aimed_pocket = -1;  ///< relative actions: what the aim names (-1 for none)
+  bool push_out = false;                   ///< 9-ball: declared (used only where the rules allow it)
+};
+
 class ActionLayout
 {
 public:
@@ -37,12 +49,15 @@ public:
   const BoxSpec& box() const { return box_; }
   /// Empty if `action` (box().size() values) is inside the box, else which component is not.
   std::string whyInvalid(const double* action, std::size_t size) const;
-  /// The planned strike of the cue ball (before execution noise). A relative action with no
-  /// ball to choose hits straight up the table.
-  physics::CueStrike<double> strike(const double* action, const AimContext& aim) const;
+  /// The shot `action` plans from the table in `aim`. A relative action with no ball to choose
+  /// hits straight up the table.
+  ShotPlan plan(const double* action, const AimContext& aim) const;
+  /// Games: where in the region the cue ball may go the action places it, as fractions of the
+  /// region's length and width (false for tasks whose action has no placement).
+  bool placement(const double* action, double& u, double& v) const;
 
 private:
-  bool relative_ = false, spin_ = false;
+  bool relative_ = false, spin_ = false, place_ = false, push_out_ = false;
   BoxSpec box_;
 };
 

@@ -41,12 +41,18 @@ std::string EnvOptions::whyInvalid() const
     why << "balls: must be in [1, 15], got " << balls;
   else if (!oneOf(target, {"any", "lowest"}))
     why << "target: must be any or lowest, got '" << target << "'";
-  else if (!(max_shots >= 1 && max_shots <= kMaxShotsCap))
-    why << "max_shots: must be in [1, " << kMaxShotsCap << "], got " << max_shots;
+  else if (!(max_shots >= 0 && max_shots <= kMaxShotsCap))
+    why << "max_shots: must be in [0, " << kMaxShotsCap << "] (0: the task's own), got " << max_shots;
   else if (!oneOf(rack, {"eight", "nine"}))
     why << "rack: must be eight or nine, got '" << rack << "'";
   else if (!oneOf(action, {"absolute", "relative"}))
     why << "action: must be absolute or relative, got '" << action << "'";
+  else if (!oneOf(opponent, {"planner", "self"}))
+    why << "opponent: must be planner or self, got '" << opponent << "'";
+  else if (!(opponent_skill >= 0 && opponent_skill <= 1))
+    why << "opponent_skill: must be in [0, 1], got " << opponent_skill;
+  else if (!(shaping >= 0 && shaping <= 1))
+    why << "shaping: must be in [0, 1], got " << shaping;
   else if (!oneOf(observation, {"state", "pixels", "both"}))
     why << "observation: must be state, pixels or both, got '" << observation << "'";
   else if (observation != "state" &&
@@ -123,17 +129,21 @@ StepResult Environment::step(const double* action, std::size_t size, const Obser
   const ActionLayout layout(options_);
   if (const std::string why = layout.whyInvalid(action, size); !why.empty())
     throw std::invalid_argument(why);
+  double u = 0, v = 0;
+  if (layout.placement(action, u, v))
+    task_->placeCueBall(u, v);
   AimContext aim;
   aim.table = &task_->table();
   aim.model = &engine_->table();
   aim.ball_radius = engine_->params().ball_radius;
   aim.choices = task_->aimChoices();
-  physics::CueStrike<double> strike = layout.strike(action, aim);
+  ShotPlan plan = layout.plan(action, aim);
   if (!options_.noise.isNone())
-    strike = physics::NoisyCue(options_.noise, random_.bits()).execute(strike, engine_->params().ball_radius);
-  StepResult result = task_->shoot(strike, random_);
+    plan.strike = physics::NoisyCue(options_.noise, random_.bits()).execute(plan.strike, engine_->params().ball_radius);
+  StepResult result = task_->shoot(plan, random_);
   result.info.shots = ++shots_;
-  if (!result.terminated && shots_ >= options_.max_shots)
+  // A game caps its shots itself (both sides'); other tasks count the agent's.
+  if (!result.terminated && !isGameTask(options_.task) && options_.max_shots > 0 && shots_ >= options_.max_shots)
     result.truncated = true;
   done_ = result.terminated || result.truncated;
   observe(out);

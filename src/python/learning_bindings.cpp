@@ -49,6 +49,14 @@ EnvOptions optionsFrom(const py::dict& given)
         o.action = value.cast<std::string>();
       else if (key == "spin")
         o.spin = value.cast<bool>();
+      else if (key == "opponent")
+        o.opponent = value.cast<std::string>();
+      else if (key == "opponent_skill")
+        o.opponent_skill = value.cast<double>();
+      else if (key == "opponent_noise")
+        o.opponent_noise = value.cast<bool>();
+      else if (key == "shaping")
+        o.shaping = value.cast<double>();
       else if (key == "noise")
       {
         if (!value.cast<bool>())
@@ -61,9 +69,11 @@ EnvOptions optionsFrom(const py::dict& given)
       else if (key == "pixel_height")
         o.pixel_height = value.cast<int>();
       else
-        throw std::invalid_argument(key +
-                                    ": not an option; the options are task, balls, target, max_shots, rack, "
-                                    "action, spin, noise, observation, pixel_width, pixel_height");
+        throw std::invalid_argument(
+            key +
+            ": not an option; the options are task, balls, target, max_shots, rack, "
+            "action, spin, opponent, opponent_skill, opponent_noise, shaping, noise, observation, "
+            "pixel_width, pixel_height");
     }
     catch (const py::cast_error&)
     {
@@ -118,7 +128,9 @@ py::dict infoDict(const learning::StepInfo& info)
   return py::dict(py::arg("shots") = info.shots, py::arg("pocketed") = info.pocketed, py::arg("scratch") = info.scratch,
                   py::arg("first_contact") = info.first_contact, py::arg("foul") = info.foul,
                   py::arg("events") = info.events, py::arg("shot_time") = info.shot_time,
-                  py::arg("reason") = info.reason);
+                  py::arg("reason") = info.reason, py::arg("player") = info.player,
+                  py::arg("next_player") = info.next_player, py::arg("winner") = info.winner,
+                  py::arg("opponent_shots") = info.opponent_shots, py::arg("opponent_reason") = info.opponent_reason);
 }
 
 /// A (rows, columns) C-contiguous float64 view of `actions` (one table: a vector is one row).
@@ -225,7 +237,8 @@ struct PyVectorEnvironment
   static py::dict infoArrays(const std::vector<learning::StepInfo>& infos)
   {
     const auto n = static_cast<py::ssize_t>(infos.size());
-    py::array_t<int> shots(n), pocketed(n), first_contact(n), events(n);
+    py::array_t<int> shots(n), pocketed(n), first_contact(n), events(n), player(n), next_player(n), winner(n),
+        opponent_shots(n);
     py::array_t<bool> scratch(n), foul(n);
     py::array_t<double> shot_time(n);
     py::list reason;
@@ -239,11 +252,17 @@ struct PyVectorEnvironment
       scratch.mutable_at(i) = s.scratch;
       foul.mutable_at(i) = s.foul;
       shot_time.mutable_at(i) = s.shot_time;
+      player.mutable_at(i) = s.player;
+      next_player.mutable_at(i) = s.next_player;
+      winner.mutable_at(i) = s.winner;
+      opponent_shots.mutable_at(i) = s.opponent_shots;
       reason.append(s.reason);
     }
     return py::dict(py::arg("shots") = shots, py::arg("pocketed") = pocketed, py::arg("scratch") = scratch,
                     py::arg("first_contact") = first_contact, py::arg("foul") = foul, py::arg("events") = events,
-                    py::arg("shot_time") = shot_time, py::arg("reason") = reason);
+                    py::arg("shot_time") = shot_time, py::arg("reason") = reason, py::arg("player") = player,
+                    py::arg("next_player") = next_player, py::arg("winner") = winner,
+                    py::arg("opponent_shots") = opponent_shots);
   }
 };
 }  // namespace

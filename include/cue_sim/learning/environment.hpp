@@ -29,14 +29,23 @@ struct EnvOptions
   /// pot: "any" (every object ball pocketed scores) or "lowest" (the lowest-numbered ball on the
   /// table must be hit first and pocketed, as in 9-ball).
   std::string target = "any";
-  /// The shots an episode may take before it is truncated. pot: 1 is a single shot; more is a
-  /// run of shots that goes on while each scores.
-  int max_shots = 1;
+  /// The shots an episode may take before it is truncated; 0 leaves it to the task (pot and
+  /// break: 1; a game: 150, its shots on both sides). pot: more than 1 is a run of shots that
+  /// goes on while each scores.
+  int max_shots = 0;
   std::string rack = "nine";  ///< break: "eight" or "nine"
   /// "absolute": phi and speed; "relative": a ball, a pocket, the cut's offset from the
   /// ghost-ball aim at them, and speed (actions.md in doc/learning.md).
   std::string action = "absolute";
   bool spin = false;  ///< the action also sets elevation and tip offsets (theta, a, b)
+  /// Games: "planner" (the core's PottingPlanner plays the other side within the agent's step)
+  /// or "self" (self-play: every step is the shot of whoever is to play).
+  std::string opponent = "planner";
+  double opponent_skill = 1.0;  ///< the chance the planner plays its own choice, else a random shot
+  bool opponent_noise = true;   ///< the tournaments' execution noise on the opponent's strikes too
+  /// Games: the reward per ball pocketed on a shot that keeps the table (and minus this for a
+  /// foul), beside 1 for a won game and -1 for a lost one.
+  double shaping = 0.1;
   /// Execution noise on every strike (seeded by the episode's seed); the tournaments' by default.
   physics::ExecutionNoise noise;
   /// "state" (positions and flags), "pixels" (the overhead camera, RGB) or "both".
@@ -69,14 +78,19 @@ struct Spaces
 /// What a step did besides its reward (Gymnasium's info).
 struct StepInfo
 {
-  int shots = 0;           ///< shots played in this episode, this one included
-  int pocketed = 0;        ///< object balls the shot pocketed
-  bool scratch = false;    ///< the cue ball was pocketed
-  int first_contact = -1;  ///< the first object ball the cue ball touched, -1 for none
-  bool foul = false;       ///< the referee's ruling (tasks with a referee), or a scratch
-  int events = 0;          ///< the shot's events
-  double shot_time = 0;    ///< [s] from the strike to rest
-  std::string reason;      ///< why the reward is what it is: the ruling, or the task's rule
+  int shots = 0;                ///< shots played in this episode, this one included
+  int pocketed = 0;             ///< object balls the shot pocketed
+  bool scratch = false;         ///< the cue ball was pocketed
+  int first_contact = -1;       ///< the first object ball the cue ball touched, -1 for none
+  bool foul = false;            ///< the referee's ruling (tasks with a referee), or a scratch
+  int events = 0;               ///< the shot's events
+  double shot_time = 0;         ///< [s] from the strike to rest
+  std::string reason;           ///< why the reward is what it is: the ruling, or the task's rule
+  int player = 0;               ///< games: who shot (0 or 1)
+  int next_player = 0;          ///< games: who is to play next
+  int winner = -1;              ///< games: 0 or 1 once won, else -1
+  int opponent_shots = 0;       ///< games against the planner: its turns within this step
+  std::string opponent_reason;  ///< ... and the ruling on its last
 };
 
 struct StepResult

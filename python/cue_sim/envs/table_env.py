@@ -21,7 +21,8 @@ except ImportError:
 RENDER_SIZE = (640, 360)
 
 #: Every task's options and their defaults (doc/learning.md describes each).
-DEFAULT_OPTIONS = {"balls": 2, "target": "any", "max_shots": 1, "rack": "nine", "action": "absolute", "spin": False,
+DEFAULT_OPTIONS = {"balls": 2, "target": "any", "max_shots": 0, "rack": "nine", "action": "absolute", "spin": False,
+                   "opponent": "planner", "opponent_skill": 1.0, "opponent_noise": True, "shaping": 0.1,
                    "noise": True, "observation": "state", "pixel_width": 96, "pixel_height": 48}
 
 
@@ -59,11 +60,13 @@ def observation_of(state, pixels):
 class TableEnv(_EnvBase):
     """A task on one table (Gymnasium's Env API; Gymnasium itself is not needed).
 
-    task: "pot" or "break" (cue_sim._core.task_names()); the options (DEFAULT_OPTIONS, each
-    described in doc/learning.md): balls, target, max_shots, rack, action ("absolute": phi [rad],
-    speed [m/s]; "relative": ball, pocket, cut_offset [rad], speed), spin (theta, tip_right,
-    tip_up too), noise (the tournaments' execution noise, seeded by the episode), observation
-    ("state", "pixels" or "both"), pixel_width, pixel_height.
+    task: "pot", "break", "eight_ball" or "nine_ball" (task_names()); the options
+    (DEFAULT_OPTIONS, each described in doc/learning.md): balls, target, max_shots, rack, action
+    ("absolute": phi [rad], speed [m/s]; "relative": ball, pocket, cut_offset [rad], speed),
+    spin (theta, tip_right, tip_up too), opponent ("planner" or "self"), opponent_skill,
+    opponent_noise, shaping, noise (the tournaments' execution noise, seeded by the episode),
+    observation ("state", "pixels" or "both"), pixel_width, pixel_height. Games add place_x,
+    place_y (the cue ball in hand) and, in 9-ball, push_out to the action.
     engine: a cue_sim.Engine (its table, physics and models); else the bundled `table`.
     """
 

@@ -35,10 +35,10 @@ public:
   const physics::TableState<double>& table() const override { return game_->table(); }
   std::vector<int> aimChoices() const override { return game_->legalFirst(); }
 
-  StepResult shoot(const physics::CueStrike<double>& strike, Random&) override
+  StepResult shoot(const ShotPlan& plan, Random&) override
   {
     StepResult result;
-    const game::Turn turn = game_->shoot(strike);
+    const game::Turn turn = game_->shoot(plan.strike);
     result.info.events = static_cast<int>(turn.events.size());
     result.info.shot_time = turn.events.empty() ? 0 : turn.events.back().time - turn.events.front().time;
     result.info.pocketed = static_cast<int>(turn.facts.pocketed.size());

@@ -42,11 +42,11 @@ public:
     return on_table;
   }
 
-  StepResult shoot(const physics::CueStrike<double>& strike, Random&) override
+  StepResult shoot(const ShotPlan& plan, Random&) override
   {
     StepResult result;
     const int lowest = aimChoices().empty() ? -1 : aimChoices().front();
-    engine_.strike(table_, 0, strike);
+    engine_.strike(table_, 0, plan.strike);
     std::vector<physics::Event<double>> events;
     try
     {

@@ -9,6 +9,7 @@
 
 #include "cue_sim/learning/environment.hpp"
 #include "cue_sim/learning/random.hpp"
+#include "learning/actions.hpp"
 #include "cue_sim/physics/cue_strike.hpp"
 #include "cue_sim/physics/table_state.hpp"
 
@@ -28,10 +29,14 @@ public:
   virtual const physics::TableState<double>& table() const = 0;
   /// The object balls a relative action chooses among (ids, ascending).
   virtual std::vector<int> aimChoices() const = 0;
-  /// Plays the cue ball's strike as executed (noise already on it; `random` draws whatever else
+  /// With the cue ball in hand, places it at (u, v) of the region it may go in (fractions of
+  /// the region's length and width; the nearest free place if that one is taken). Otherwise,
+  /// and in tasks without ball in hand, nothing.
+  virtual void placeCueBall(double /*u*/, double /*v*/) {}
+  /// Plays the plan, its strike as executed (noise already on it; `random` draws whatever else
   /// the task needs, an opponent's noise say): the shot to rest, its reward, and whether the
   /// episode ended. The step's `shots` count is the environment's.
-  virtual StepResult shoot(const physics::CueStrike<double>& strike, Random& random) = 0;
+  virtual StepResult shoot(const ShotPlan& plan, Random& random) = 0;
 
   /// The task's own features after the ball block: their names and bounds (appended to `box`)...
   virtual void addFeatures(BoxSpec& box) const = 0;

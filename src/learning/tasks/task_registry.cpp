@@ -9,6 +9,7 @@ namespace learning
 {
 std::unique_ptr<Task> makePotTask(const physics::Engine<double>& engine, const EnvOptions& options);
 std::unique_ptr<Task> makeBreakTask(const physics::Engine<double>& engine, const EnvOptions& options);
+std::unique_ptr<Task> makeGameTask(const physics::Engine<double>& engine, const EnvOptions& options);
 
 namespace
 {
@@ -21,6 +22,8 @@ struct TaskEntry
 const TaskEntry kTasks[] = {
     {"pot", &makePotTask},
     {"break", &makeBreakTask},
+    {"eight_ball", &makeGameTask},
+    {"nine_ball", &makeGameTask},
 };
 }  // namespace
 

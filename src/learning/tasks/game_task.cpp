@@ -1,0 +1,240 @@
+// eight_ball and nine_ball: whole games under the referee, a shot a step. Against the built-in
+// opponent (the core's PottingPlanner, with execution noise and a skill), whose turns are played
+// within the agent's step; or in self-play, where every step is the shot of whoever is to play and
+// everything is seen from the shooter's side.
+#include <cmath>
+#include <stdexcept>
+
+#include "cue_sim/game/game_play.hpp"
+#include "cue_sim/game/self_play.hpp"
+#include "learning/tasks/task.hpp"
+
+namespace cue_sim
+{
+namespace learning
+{
+namespace
+{
+/// A whole game's shot cap when max_shots leaves it to the task: self-play's.
+constexpr int kGameShotCap = 150;
+
+class GameTask : public Task
+{
+public:
+  GameTask(const physics::Engine<double>& engine, const EnvOptions& options)
+    : engine_(engine),
+      rules_(options.task),
+      self_play_(options.opponent == "self"),
+      skill_(options.opponent_skill),
+      opponent_noise_(options.opponent_noise ? physics::ExecutionNoise() : physics::ExecutionNoise::none()),
+      shaping_(options.shaping),
+      cap_(options.max_shots > 0 ? options.max_shots : kGameShotCap)
+  {
+    if (engine.table().pockets().empty())
+      throw std::invalid_argument("task: " + rules_ + " needs a table with pockets; '" + engine.table().name() +
+                                  "' has none");
+  }
+  GameTask(const GameTask& other)
+    : Task(other),
+      engine_(other.engine_),
+      rules_(other.rules_),
+      self_play_(other.self_play_),
+      skill_(other.skill_),
+      opponent_noise_(other.opponent_noise_),
+      shaping_(other.shaping_),
+      cap_(other.cap_),
+      game_(other.game_ ? std::make_unique<game::GamePlay>(*other.game_) : nullptr)
+  {
+  }
+  std::unique_ptr<Task> clone() const override { return std::make_unique<GameTask>(*this); }
+
+  void reset(Random& random) override
+  {
+    // Who breaks is drawn; against the opponent, its turns up to the agent's are played now (a
+    // game it wins before the agent's first shot is drawn again).
+    do
+    {
+      const int breaker = random.integer(0, 1);
+      game_ = std::make_unique<game::GamePlay>(engine_, rules_, players(),
+                                               game::gameRack(static_cast<unsigned>(random.bits())), breaker);
+      game_->setShotCap(cap_);
+      if (!self_play_)
+      {
+        StepResult ignored;
+        playOpponent(random, ignored);
+      }
+    } while (game_->state().over);
+  }
+  const physics::TableState<double>& table() const override { return game_->table(); }
+  std::vector<int> aimChoices() const override { return game_->legalFirst(); }
+
+  void placeCueBall(double u, double v) override
+  {
+    Eigen::Vector2d low, high;
+    if (!game::inHandRegion(engine_.table(), engine_.params().ball_radius, game_->state().ball_in_hand, low, high))
+      return;
+    const Eigen::Vector2d wanted = low + Eigen::Vector2d(u, v).cwiseProduct(high - low);
+    placeNearest(wanted, low, high);
+  }
+
+  StepResult shoot(const ShotPlan& plan, Random& random) override
+  {
+    StepResult result;
+    const int shooter = game_->state().turn;
+    if (plan.aimed_ball >= 0)
+      game_->call(plan.aimed_ball, plan.aimed_pocket);  // a player calls the shot it aims
+    const game::Turn turn = game_->shoot(plan.strike, plan.push_out && game_->state().push_out_allowed);
+    result.info.events = static_cast<int>(turn.events.size());
+    result.info.shot_time = turn.events.empty() ? 0 : turn.events.back().time - turn.events.front().time;
+    result.info.pocketed = static_cast<int>(turn.facts.pocketed.size());
+    result.info.scratch = turn.facts.scratch;
+    result.info.first_contact = turn.facts.first_contact;
+    result.info.foul = turn.ruling.foul;
+    result.info.reason = turn.ruling.reason;
+    result.info.player = shooter;
+    result.reward = shapedReward(turn, shooter);
+    if (!self_play_)
+      playOpponent(random, result);
+    const game::GameState& after = game_->state();
+    result.info.next_player = after.turn;
+    result.info.winner = after.winner;
+    result.terminated = after.over && after.winner >= 0;
+    result.truncated = after.over && after.winner < 0;  // the shot cap
+    return result;
+  }
+
+  void addFeatures(BoxSpec& box) const override
+  {
+    const auto add = [&box](const std::string& name) {
+      box.names.push_back(name);
+      box.low.push_back(0);
+      box.high.push_back(1);
+    };
+    for (const char* group : {"group_open", "group_solids", "group_stripes"})
+      add(group);
+    for (const char* place : {"in_hand_none", "in_hand_anywhere", "in_hand_behind_head_string"})
+      add(place);
+    add("break_shot");
+    add("push_out_allowed");
+    add("own_fouls");
+    add("opponent_fouls");
+    for (int id = 1; id < 16; ++id)
+      add("legal_first" + std::to_string(id));
+    add("shots_used");
+  }
+  void writeFeatures(float* out) const override
+  {
+    const game::GameState& s = game_->state();
+    const int me = s.turn, other = 1 - s.turn;
+    std::fill(out, out + 26, 0.0f);
+    out[static_cast<int>(s.groups[static_cast<std::size_t>(me)])] = 1;
+    out[3 + static_cast<int>(s.ball_in_hand)] = 1;
+    out[6] = s.break_shot;
+    out[7] = s.push_out_allowed;
+    out[8] = static_cast<float>(std::min(2, s.consecutive_fouls[static_cast<std::size_t>(me)])) / 2;
+    out[9] = static_cast<float>(std::min(2, s.consecutive_fouls[static_cast<std::size_t>(other)])) / 2;
+    for (const int id : game_->legalFirst())
+      if (id >= 1 && id < 16)
+        out[9 + id] = 1;
+    out[25] = static_cast<float>(std::min(1.0, static_cast<double>(s.shots) / cap_));
+  }
+
+private:
+  std::array<std::string, 2> players() const
+  {
+    return self_play_ ? std::array<std::string, 2>{"player 1", "player 2"}
+                      : std::array<std::string, 2>{"agent", "opponent"};
+  }
+
+  /// The shooter's reward for a turn: the game's end (1 won, -1 lost), and `shaping_` for each
+  /// ball pocketed on a shot that keeps the table, less `shaping_` for a foul.
+  double shapedReward(const game::Turn& turn, int shooter) const
+  {
+    double reward = 0;
+    if (turn.ruling.continues)
+      reward += shaping_ * static_cast<double>(turn.facts.pocketed.size());
+    if (turn.ruling.foul)
+      reward -= shaping_;
+    if (turn.ruling.game_over && turn.ruling.winner >= 0)
+      reward += turn.ruling.winner == shooter ? 1.0 : -1.0;
+    return reward;
+  }
+
+  /// The opponent's turns until the agent is to play or the game is over; a game it ends counts
+  /// for the agent (player 0) in `result`.
+  void playOpponent(Random& random, StepResult& result)
+  {
+    const game::PottingPlanner planner;
+    while (!game_->state().over && game_->state().turn != kAgent)
+    {
+      game::Choice c;
+      if (random.unit() < skill_)
+        c = planner.choose(*game_);
+      else
+        c = wildChoice(random);
+      if (c.place_cue_ball)
+        game_->placeCueBall(c.cue_ball);
+      game_->call(c.ball, c.pocket);
+      const physics::CueStrike<double> strike =
+          opponent_noise_.isNone()
+              ? c.strike
+              : physics::NoisyCue(opponent_noise_, random.bits()).execute(c.strike, engine_.params().ball_radius);
+      const game::Turn turn = game_->shoot(strike);
+      result.info.opponent_shots += 1;
+      result.info.opponent_reason = turn.ruling.reason;
+      if (turn.ruling.game_over && turn.ruling.winner >= 0)
+        result.reward += turn.ruling.winner == kAgent ? 1.0 : -1.0;
+    }
+  }
+
+  /// An unskilled turn: any heading, a moderate speed, the cue ball where it lies.
+  static game::Choice wildChoice(Random& random)
+  {
+    game::Choice c;
+    c.strike.phi = random.uniform(-M_PI, M_PI);
+    c.strike.speed = random.uniform(0.5, 4.0);
+    return c;
+  }
+
+  /// The cue ball at `wanted`, or at the nearest free place of the region around it: rings of
+  /// half a ball radius, each searched in a fixed order.
+  void placeNearest(const Eigen::Vector2d& wanted, const Eigen::Vector2d& low, const Eigen::Vector2d& high)
+  {
+    if (game_->placeCueBall(wanted).empty())
+      return;
+    const double step = engine_.params().ball_radius / 2;
+    const int rings = static_cast<int>(std::ceil((high - low).norm() / step));
+    for (int ring = 1; ring <= rings; ++ring)
+    {
+      const int points = 8 * ring;
+      for (int k = 0; k < points; ++k)
+      {
+        const double angle = 2 * M_PI * k / points;
+        const Eigen::Vector2d p = wanted + ring * step * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+        if ((p.array() >= low.array()).all() && (p.array() <= high.array()).all() && game_->placeCueBall(p).empty())
+          return;
+      }
+    }
+    // No free place at all: the cue ball stays where it is (where the game put it), which is free.
+  }
+
+  static constexpr int kAgent = 0;  ///< against the opponent, the agent is player 0
+
+  const physics::Engine<double>& engine_;
+  std::string rules_;
+  bool self_play_;
+  double skill_;
+  physics::ExecutionNoise opponent_noise_;
+  double shaping_;
+  int cap_;
+  std::unique_ptr<game::GamePlay> game_;
+};
+}  // namespace
+
+std::unique_ptr<Task> makeGameTask(const physics::Engine<double>& engine, const EnvOptions& options)
+{
+  return std::make_unique<GameTask>(engine, options);
+}
+
+}  // namespace learning
+}  // namespace cue_sim
