@@ -130,7 +130,8 @@ py::dict infoDict(const learning::StepInfo& info)
                   py::arg("events") = info.events, py::arg("shot_time") = info.shot_time,
                   py::arg("reason") = info.reason, py::arg("player") = info.player,
                   py::arg("next_player") = info.next_player, py::arg("winner") = info.winner,
-                  py::arg("opponent_shots") = info.opponent_shots, py::arg("opponent_reason") = info.opponent_reason);
+                  py::arg("opponent_shots") = info.opponent_shots, py::arg("opponent_reason") = info.opponent_reason,
+                  py::arg("open_shots") = info.open_shots);
 }
 
 /// A (rows, columns) C-contiguous float64 view of `actions` (one table: a vector is one row).

@@ -257,7 +257,9 @@ TEST(LearningVectorEnvironment, IsNSingleEnvironmentsBitForBit)
       }
     }
     if (!isGameTask(task))
+    {
       EXPECT_GT(resets, 5) << "the episodes must end and restart for the test to see autoreset";
+    }
     // A bad row is refused before any table moves.
     std::vector<double> actions(n * m, 1.0);
     actions[3 * m + 1] = std::numeric_limits<double>::quiet_NaN();
@@ -475,6 +477,50 @@ TEST(LearningPixels, TheCameraShowsTheBallsWhereTheStateHasThem)
   }
 }
 
+TEST(LearningPosition, APotScoresOneAndLeavingShotsUpToOneMore)
+{
+  EnvOptions o;
+  o.task = "position";
+  o.balls = 4;
+  o.action = "relative";
+  o.noise = physics::ExecutionNoise::none();
+  const auto engine = engineOf("7ft");
+  Environment env(engine, o);
+  std::vector<float> state = stateOf(env);
+  Random random(6);
+  int pots = 0, full = 0, none = 0, partial = 0;
+  for (int k = 0; k < 1500; ++k)
+  {
+    env.reset(k, {state.data(), nullptr});
+    const int lowest = game::objectBallsOnTable(env.table()).front();
+    EXPECT_GE(game::objectBallsOnTable(env.table()).size(), 2u);
+    EXPECT_EQ(state[3 * kBallSlots + lowest - 1], 1.0f);  // the target's flag
+    const std::vector<double> a = {0.0, random.unit(), random.uniform(-0.02, 0.02), random.uniform(1.0, 4.0)};
+    const StepResult r = env.step(a.data(), a.size(), {state.data(), nullptr});
+    const auto left = game::objectBallsOnTable(env.table());
+    const bool potted = std::find(left.begin(), left.end(), lowest) == left.end();
+    if (r.reward >= 1)
+    {
+      ASSERT_TRUE(potted);
+      ASSERT_EQ(r.info.first_contact, lowest);
+      ASSERT_FALSE(r.info.scratch);
+      const double bonus = left.empty() ? 1.0 : std::min(r.info.open_shots, 3) / 3.0;
+      ASSERT_EQ(r.reward, 1 + bonus) << r.info.reason;
+      ++pots;
+      full += r.reward == 2;
+      none += r.reward == 1;
+      partial += r.reward > 1 && r.reward < 2;
+    }
+    else
+      ASSERT_EQ(r.info.open_shots, -1);
+  }
+  // Both outcomes are met: the bonus is earned, not given.
+  EXPECT_GT(pots, 150);
+  EXPECT_GT(full, 5);
+  EXPECT_GT(none, 10);
+  EXPECT_GT(partial, 50);
+}
+
 /// A game's episode to its end with random actions: the rewards, rulings and features agree
 /// with the game's own state at every step.
 void checkGame(const std::string& rules, const std::string& opponent, std::uint64_t seed)
@@ -499,12 +545,16 @@ void checkGame(const std::string& rules, const std::string& opponent, std::uint6
     EXPECT_EQ(state[features + 3] + state[features + 4] + state[features + 5], 1.0f);
     for (int id = 1; id < 16; ++id)
       if (state[features + 9 + id] > 0)
+      {
         EXPECT_EQ(state[3 * id + 2], 1.0f) << "ball " << id << " is legal but not on the table";
+      }
     const std::vector<double> a = actionAt(env.spaces().action, random);
     const StepResult r = env.step(a.data(), a.size(), {state.data(), nullptr});
     EXPECT_FALSE(r.info.reason.empty());
     if (opponent == "planner")
+    {
       EXPECT_EQ(r.info.player, 0);
+    }
     if (r.terminated)
     {
       ASSERT_GE(r.info.winner, 0);

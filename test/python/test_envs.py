@@ -32,7 +32,7 @@ def same(a, b):
 
 
 @pytest.mark.parametrize("options", [dict(task="pot", balls=3), dict(task="pot", target="lowest", max_shots=5, balls=4),
-                                     dict(task="pot", action="relative", spin=True),
+                                     dict(task="pot", action="relative", spin=True), dict(task="position", balls=4, action="relative"),
                                      dict(task="break", rack="eight"),
                                      dict(task="nine_ball", opponent="self", action="relative"),
                                      dict(task="eight_ball", opponent="planner", opponent_skill=0.5),
@@ -165,5 +165,5 @@ def test_spaces_follow_gymnasium():
 def test_gymnasium_check_env():
     gymnasium = pytest.importorskip("gymnasium", reason="gymnasium is not installed (not packaged in Debian)")
     from gymnasium.utils.env_checker import check_env
-    for env_id in ("cue_sim/Pot-v0", "cue_sim/Break-v0", "cue_sim/EightBall-v0", "cue_sim/NineBall-v0"):
+    for env_id in ("cue_sim/Pot-v0", "cue_sim/Position-v0", "cue_sim/Break-v0", "cue_sim/EightBall-v0", "cue_sim/NineBall-v0"):
         check_env(gymnasium.make(env_id).unwrapped)

@@ -23,8 +23,9 @@ namespace learning
 /// its value and its range.
 struct EnvOptions
 {
-  std::string task = "pot";  ///< taskNames(): pot, break, eight_ball, nine_ball, ...
-  /// pot: the most object balls on the table; each episode draws 1 to this many (ids 1, 2, ...).
+  std::string task = "pot";  ///< taskNames(): pot, position, break, eight_ball, nine_ball
+  /// pot, position: the most object balls on the table; each episode draws 1 (position: 2) to
+  /// this many (ids 1, 2, ...).
   int balls = 2;
   /// pot: "any" (every object ball pocketed scores) or "lowest" (the lowest-numbered ball on the
   /// table must be hit first and pocketed, as in 9-ball).
@@ -91,6 +92,7 @@ struct StepInfo
   int winner = -1;              ///< games: 0 or 1 once won, else -1
   int opponent_shots = 0;       ///< games against the planner: its turns within this step
   std::string opponent_reason;  ///< ... and the ruling on its last
+  int open_shots = -1;          ///< position: open shots on the next ball after a pot (-1: not asked)
 };
 
 struct StepResult

@@ -14,7 +14,7 @@ from cue_sim.envs.table_env import DEFAULT_OPTIONS, TableEnv
 from cue_sim.envs.vector_env import TableVectorEnv
 
 #: Registered ids and their tasks.
-TASK_IDS = {"cue_sim/Pot-v0": "pot", "cue_sim/Break-v0": "break", "cue_sim/EightBall-v0": "eight_ball",
+TASK_IDS = {"cue_sim/Pot-v0": "pot", "cue_sim/Position-v0": "position", "cue_sim/Break-v0": "break", "cue_sim/EightBall-v0": "eight_ball",
             "cue_sim/NineBall-v0": "nine_ball"}
 
 

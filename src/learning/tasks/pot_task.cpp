@@ -1,9 +1,19 @@
 // pot: a few object balls and the cue ball anywhere on the cloth; pot one (any, or the lowest on
 // the table, hit first) without scratching. One shot, or a run of shots while each scores.
+//
+// position: pot the lowest ball and leave the cue ball a shot at the next one, the one-shot
+// look-ahead of position play (Smith, "PickPocket: a computer billiards shark", Artificial
+// Intelligence 171, 2007; Landry and Dussault, "AI optimization of a billiard player", J. Intell.
+// Robot. Syst. 50, 2007): a pot scores 1, and up to 1 more as the next ball then has open shots
+// (ghost-ball cuts the core's planner would play, with clear paths: game::openShots).
+#include <algorithm>
 #include <stdexcept>
 
+#include "cue_sim/game/game_play.hpp"
 #include "cue_sim/game/referee.hpp"
+#include "cue_sim/game/self_play.hpp"
 #include "cue_sim/physics/simulation.hpp"
+#include "learning/tasks/placement.hpp"
 #include "learning/tasks/task.hpp"
 
 namespace cue_sim
@@ -12,26 +22,30 @@ namespace learning
 {
 namespace
 {
-/// Tries at drawing a free place for one ball before the episode's table is drawn again.
-constexpr int kPlacementTries = 1000;
+/// Open shots on the next ball that earn position's whole point: a choice of three pockets, as a
+/// player who plays position wants (one open pocket is a shot; three are an easy one).
+constexpr int kOpenShotsForFullPosition = 3;
 
 class PotTask : public Task
 {
 public:
   PotTask(const physics::Engine<double>& engine, const EnvOptions& options)
-    : engine_(engine), most_balls_(options.balls), lowest_(options.target == "lowest"), run_(options.max_shots > 1)
+    : engine_(engine),
+      position_(options.task == "position"),
+      least_balls_(position_ ? 2 : 1),
+      most_balls_(std::max(least_balls_, options.balls)),
+      lowest_(position_ || options.target == "lowest"),
+      run_(options.max_shots > 1)
   {
     if (engine.table().pockets().empty())
-      throw std::invalid_argument("task: pot needs a table with pockets; '" + engine.table().name() + "' has none");
+      throw std::invalid_argument("task: " + options.task + " needs a table with pockets; '" + engine.table().name() +
+                                  "' has none");
   }
   std::unique_ptr<Task> clone() const override { return std::make_unique<PotTask>(*this); }
 
   void reset(Random& random) override
   {
-    const int count = random.integer(1, most_balls_);
-    while (!placeAll(random, count))
-    {
-    }
+    table_ = scatteredBalls(engine_, random.integer(least_balls_, most_balls_), random);
   }
   const physics::TableState<double>& table() const override { return table_; }
   std::vector<int> aimChoices() const override
@@ -83,6 +97,8 @@ public:
       {
         result.reward = 1;
         result.info.reason = "ball " + std::to_string(lowest) + " pocketed";
+        if (position_)
+          addPositionBonus(cleared, result);
       }
     }
     else
@@ -118,35 +134,29 @@ public:
   }
 
 private:
-  /// The cue ball and balls 1 to count, each uniformly where a ball in hand may go (clear of the
-  /// cushions, the pockets' mouths and the other balls); false if one found no place.
-  bool placeAll(Random& random, int count)
+  /// Position play's second point: up to 1 more as the next ball has open shots from where the cue
+  /// ball lies (1/kOpenShotsForFullPosition for each, into different pockets), or 1 if the table
+  /// is cleared and nothing is left to play position for.
+  void addPositionBonus(bool cleared, StepResult& result) const
   {
-    const double R = engine_.params().ball_radius;
-    Eigen::Vector2d low, high;
-    game::inHandRegion(engine_.table(), R, game::BallInHand::Anywhere, low, high);
-    table_ = physics::TableState<double>();
-    for (int id = 0; id <= count; ++id)
+    int open = 0;
+    if (!cleared)
     {
-      bool placed = false;
-      for (int tries = 0; tries < kPlacementTries && !placed; ++tries)
-      {
-        const Eigen::Vector2d p(random.uniform(low.x(), high.x()), random.uniform(low.y(), high.y()));
-        if (!game::whyNotInHand(engine_.table(), R, table_, p, game::BallInHand::Anywhere).empty())
-          continue;
-        physics::Ball<double> ball;
-        ball.id = id;
-        ball.r = Eigen::Vector3d(p.x(), p.y(), R);
-        table_.balls.push_back(ball);
-        placed = true;
-      }
-      if (!placed)
-        return false;
+      game::GamePlay next(engine_, "nine_ball");  // rotation: the lowest ball is the one to hit
+      if (next.setPosition(table_, false).empty())
+        open = game::openShots(next);
     }
-    return true;
+    result.info.open_shots = open;
+    const double bonus =
+        cleared ? 1.0 : static_cast<double>(std::min(open, kOpenShotsForFullPosition)) / kOpenShotsForFullPosition;
+    result.reward += bonus;
+    result.info.reason +=
+        cleared ? ", the table cleared" : ", leaving " + std::to_string(open) + " open shot(s) on the next ball";
   }
 
   const physics::Engine<double>& engine_;
+  bool position_;  ///< the position task: the lowest ball, and a point for leaving a shot
+  int least_balls_;
   int most_balls_;
   bool lowest_;
   bool run_;  ///< max_shots > 1: shots go on while they score

@@ -9,9 +9,9 @@
 
 #include "cue_sim/learning/environment.hpp"
 #include "cue_sim/learning/random.hpp"
-#include "learning/actions.hpp"
 #include "cue_sim/physics/cue_strike.hpp"
 #include "cue_sim/physics/table_state.hpp"
+#include "learning/actions.hpp"
 
 namespace cue_sim
 {

@@ -20,10 +20,8 @@ struct TaskEntry
 };
 
 const TaskEntry kTasks[] = {
-    {"pot", &makePotTask},
-    {"break", &makeBreakTask},
-    {"eight_ball", &makeGameTask},
-    {"nine_ball", &makeGameTask},
+    {"pot", &makePotTask},         {"position", &makePotTask},   {"break", &makeBreakTask},
+    {"eight_ball", &makeGameTask}, {"nine_ball", &makeGameTask},
 };
 }  // namespace
 
