@@ -239,8 +239,13 @@ bool inHandRegion(const physics::TableModel& table, double ball_radius, BallInHa
 std::string whyNotInHand(const physics::TableModel& table, double ball_radius, const physics::TableState<double>& state,
                          const Eigen::Vector2d& p, BallInHand place)
 {
+  const bool finite = std::isfinite(p.x()) && std::isfinite(p.y());
+  // A place that is free, the common case, is answered without a stream made for it.
+  if (finite && place == BallInHand::Anywhere && table.whyNotPlaceable(p, ball_radius).empty() &&
+      clearOfBalls(state, p, ball_radius, 0))
+    return {};
   std::ostringstream why;
-  if (!(std::isfinite(p.x()) && std::isfinite(p.y())))
+  if (!finite)
     why << "the cue ball's position must be finite, got (" << p.x() << ", " << p.y() << ")";
   else if (place == BallInHand::None)
     why << "the cue ball is not in hand: it is played where it lies";

@@ -50,6 +50,14 @@ bool isGameTask(const std::string& task)
 
 std::string ActionLayout::whyInvalid(const double* action, std::size_t size) const
 {
+  if (size == box_.size())
+  {
+    bool inside = true;
+    for (std::size_t i = 0; i < size; ++i)
+      inside = inside && action[i] >= box_.low[i] && action[i] <= box_.high[i];  // NaN fails both
+    if (inside)
+      return {};  // every step comes here: no stream is made for it
+  }
   std::ostringstream why;
   if (size != box_.size())
   {

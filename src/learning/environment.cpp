@@ -18,6 +18,9 @@ namespace
 /// The largest pixel observation a step renders [px a side]: beyond it a picture costs more than
 /// the shot, and a learner downsamples anyway.
 constexpr int kMaxPixelSide = 1024;
+/// What the execution noise's stream is seeded with, beside the episode's seed: a stream of its
+/// own, so that the noise does not depend on how many draws the table's setup took.
+constexpr std::uint64_t kNoiseStream = 0x9e3779b97f4a7c15ULL;
 /// The longest run of shots an episode may be given: a whole game is capped at 150 shots.
 constexpr int kMaxShotsCap = 1000;
 
@@ -65,7 +68,7 @@ std::string EnvOptions::whyInvalid() const
 }
 
 Environment::Environment(std::shared_ptr<const physics::Engine<double>> engine, const EnvOptions& options)
-  : engine_(std::move(engine)), options_(options)
+  : engine_(std::move(engine)), options_(options), cue_(options.noise, kNoiseStream)
 {
   if (!engine_)
     throw std::invalid_argument("engine: none given");
@@ -115,7 +118,10 @@ const physics::TableState<double>& Environment::table() const
 void Environment::reset(std::optional<std::uint64_t> seed, const ObservationBuffers& out)
 {
   if (seed)
+  {
     random_.seed(*seed);
+    cue_ = physics::NoisyCue(options_.noise, *seed ^ kNoiseStream);
+  }
   task_->reset(random_);
   shots_ = 0;
   done_ = false;
@@ -139,7 +145,7 @@ StepResult Environment::step(const double* action, std::size_t size, const Obser
   aim.choices = task_->aimChoices();
   ShotPlan plan = layout.plan(action, aim);
   if (!options_.noise.isNone())
-    plan.strike = physics::NoisyCue(options_.noise, random_.bits()).execute(plan.strike, engine_->params().ball_radius);
+    plan.strike = cue_.execute(plan.strike, engine_->params().ball_radius);
   StepResult result = task_->shoot(plan, random_);
   result.info.shots = ++shots_;
   // A game caps its shots itself (both sides'); other tasks count the agent's.

@@ -5,6 +5,8 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <array>
+#include <chrono>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -101,6 +103,14 @@ struct Observations
   py::object state = py::none(), pixels = py::none();
   learning::ObservationBuffers buffers;
 
+  /// The observation as the space has it: the state, the pixels, or both in a dict.
+  py::object value() const
+  {
+    if (!state.is_none() && !pixels.is_none())
+      return py::dict(py::arg("state") = state, py::arg("pixels") = pixels);
+    return state.is_none() ? pixels : state;
+  }
+
   Observations(const learning::Spaces& s, std::size_t rows)
   {
     const auto lead = [rows](std::vector<py::ssize_t> shape) {
@@ -110,7 +120,9 @@ struct Observations
     };
     if (s.state.size() > 0)
     {
-      py::array_t<float> a(lead({static_cast<py::ssize_t>(s.state.size())}));
+      const auto size = static_cast<py::ssize_t>(s.state.size());
+      py::array_t<float> a =
+          rows > 0 ? py::array_t<float>({static_cast<py::ssize_t>(rows), size}) : py::array_t<float>(size);
       buffers.state = a.mutable_data();
       state = a;
     }
@@ -123,15 +135,38 @@ struct Observations
   }
 };
 
-py::dict infoDict(const learning::StepInfo& info)
+/// A step's info as a dict: what every task tells, what games tell (`game`) and what position
+/// tells (`position`). Its keys are made once: a step of a cheap shot costs some 12 us, so the
+/// dict's making is a part of Python's share worth keeping small.
+py::dict infoDict(const learning::StepInfo& info, bool game, bool position)
 {
-  return py::dict(py::arg("shots") = info.shots, py::arg("pocketed") = info.pocketed, py::arg("scratch") = info.scratch,
-                  py::arg("first_contact") = info.first_contact, py::arg("foul") = info.foul,
-                  py::arg("events") = info.events, py::arg("shot_time") = info.shot_time,
-                  py::arg("reason") = info.reason, py::arg("player") = info.player,
-                  py::arg("next_player") = info.next_player, py::arg("winner") = info.winner,
-                  py::arg("opponent_shots") = info.opponent_shots, py::arg("opponent_reason") = info.opponent_reason,
-                  py::arg("open_shots") = info.open_shots);
+  static const auto* keys =
+      new std::array<py::str, 14>{py::str("shots"),           py::str("pocketed"),  py::str("scratch"),
+                                  py::str("first_contact"),   py::str("foul"),      py::str("events"),
+                                  py::str("shot_time"),       py::str("reason"),    py::str("player"),
+                                  py::str("next_player"),     py::str("winner"),    py::str("opponent_shots"),
+                                  py::str("opponent_reason"), py::str("open_shots")};
+  const auto& k = *keys;
+  py::dict d;
+  d[k[0]] = info.shots;
+  d[k[1]] = info.pocketed;
+  d[k[2]] = info.scratch;
+  d[k[3]] = info.first_contact;
+  d[k[4]] = info.foul;
+  d[k[5]] = info.events;
+  d[k[6]] = info.shot_time;
+  d[k[7]] = info.reason;
+  if (game)
+  {
+    d[k[8]] = info.player;
+    d[k[9]] = info.next_player;
+    d[k[10]] = info.winner;
+    d[k[11]] = info.opponent_shots;
+    d[k[12]] = info.opponent_reason;
+  }
+  if (position)
+    d[k[13]] = info.open_shots;
+  return d;
 }
 
 /// A (rows, columns) C-contiguous float64 view of `actions` (one table: a vector is one row).
@@ -150,29 +185,62 @@ struct PyEnvironment
   {
   }
 
-  py::tuple reset(std::optional<std::uint64_t> seed)
+  /// The first observation of a new episode.
+  py::object reset(std::optional<std::uint64_t> seed)
   {
     Observations obs(env.spaces(), 0);
     {
       py::gil_scoped_release release;
       env.reset(seed, obs.buffers);
     }
-    return py::make_tuple(obs.state, obs.pixels);
+    return obs.value();
   }
 
+  /// Gymnasium's step: (observation, reward, terminated, truncated, info).
   py::tuple step(const py::object& action)
   {
     const auto a = actionRows(action);
     if (!a || a.ndim() != 1)
-      throw std::invalid_argument("action: a vector of " + std::to_string(env.spaces().action.size()) +
-                                  " values, got an array of " + std::to_string(a ? a.ndim() : -1) + " dimensions");
+    {
+      std::string names;
+      for (const std::string& name : env.spaces().action.names)
+        names += (names.empty() ? "" : ", ") + name;
+      throw std::invalid_argument("action: a vector of " + std::to_string(env.spaces().action.size()) + " values (" +
+                                  names + "), got shape of " + std::to_string(a ? a.ndim() : -1) + " dimensions");
+    }
     Observations obs(env.spaces(), 0);
     learning::StepResult r;
     {
       py::gil_scoped_release release;
       r = env.step(a.data(), static_cast<std::size_t>(a.shape(0)), obs.buffers);
     }
-    return py::make_tuple(obs.state, obs.pixels, r.reward, r.terminated, r.truncated, infoDict(r.info));
+    const std::string& task = env.options().task;
+    return py::make_tuple(obs.value(), r.reward, r.terminated, r.truncated,
+                          infoDict(r.info, task == "eight_ball" || task == "nine_ball", task == "position"));
+  }
+
+  /// The same episodes as reset(seed) and step() over the rows of `actions` (reset when one ends)
+  /// give, in C++ alone: the seconds they take, for scripts/env_throughput.py to set Python's
+  /// cost beside.
+  double timeSteps(const py::object& actions, std::uint64_t seed)
+  {
+    const auto a = actionRows(actions);
+    if (!a || a.ndim() != 2)
+      throw std::invalid_argument("actions: a 2-D array, one action a row");
+    std::vector<float> state(env.spaces().state.size());
+    std::vector<std::uint8_t> pixels(env.spaces().pixelBytes());
+    const learning::ObservationBuffers out{state.empty() ? nullptr : state.data(),
+                                           pixels.empty() ? nullptr : pixels.data()};
+    py::gil_scoped_release release;
+    const auto begin = std::chrono::steady_clock::now();
+    env.reset(seed, out);
+    for (py::ssize_t i = 0; i < a.shape(0); ++i)
+    {
+      env.step(a.data(i, 0), static_cast<std::size_t>(a.shape(1)), out);
+      if (env.done())
+        env.reset(std::nullopt, out);
+    }
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   }
 
   py::array_t<std::uint8_t> render(int width, int height) const
@@ -194,7 +262,7 @@ struct PyVectorEnvironment
   {
   }
 
-  py::tuple reset(std::optional<std::uint64_t> seed)
+  py::object reset(std::optional<std::uint64_t> seed)
   {
     Observations obs(envs.spaces(), static_cast<std::size_t>(envs.size()));
     learning::VectorBuffers out;
@@ -204,7 +272,7 @@ struct PyVectorEnvironment
       py::gil_scoped_release release;
       envs.reset(seed, out);
     }
-    return py::make_tuple(obs.state, obs.pixels);
+    return obs.value();
   }
 
   py::tuple step(const py::object& actions)
@@ -232,7 +300,9 @@ struct PyVectorEnvironment
       py::gil_scoped_release release;
       envs.step(a.data(), static_cast<std::size_t>(a.shape(0)), static_cast<std::size_t>(a.shape(1)), out);
     }
-    return py::make_tuple(obs.state, obs.pixels, rewards, terminated, truncated, autoreset, infoArrays(infos));
+    py::dict info = infoArrays(infos);
+    info["autoreset"] = autoreset;
+    return py::make_tuple(obs.value(), rewards, terminated, truncated, info);
   }
 
   static py::dict infoArrays(const std::vector<learning::StepInfo>& infos)
@@ -277,6 +347,7 @@ void bindLearning(py::module_& m)
       .def("reset", &PyEnvironment::reset, py::arg("seed") = py::none())
       .def("step", &PyEnvironment::step, py::arg("action"))
       .def("render", &PyEnvironment::render, py::arg("width"), py::arg("height"))
+      .def("time_steps", &PyEnvironment::timeSteps, py::arg("actions"), py::arg("seed"))
       .def_property_readonly("done", [](const PyEnvironment& e) { return e.env.done(); })
       .def("table", [](const PyEnvironment& e) { return toArrays(e.env.table().balls); });
   py::class_<PyVectorEnvironment>(m, "VectorEnv")

@@ -155,6 +155,7 @@ private:
   Spaces spaces_;
   std::unique_ptr<Task> task_;
   Random random_;
+  physics::NoisyCue cue_;  ///< the execution noise's own stream, seeded with the episode's seed
   int shots_ = 0;
   bool done_ = true;
   /// The pixel observation's camera, made on first use; a copy makes its own (a camera keeps

@@ -50,13 +50,6 @@ def spaces_of(spec: dict):
     return observation_space, action_space
 
 
-def observation_of(state, pixels):
-    """The observation as the space has it: the state, the pixels, or both in a dict."""
-    if state is not None and pixels is not None:
-        return {"state": state, "pixels": pixels}
-    return state if state is not None else pixels
-
-
 class TableEnv(_EnvBase):
     """A task on one table (Gymnasium's Env API; Gymnasium itself is not needed).
 
@@ -97,6 +90,8 @@ class TableEnv(_EnvBase):
     def reset(self, *, seed: Optional[int] = None, options: Optional[dict] = None):
         """A new episode: from `seed` if given (the same seed, the same episode), else the
         environment's stream goes on (a fresh environment's first reset draws one)."""
+        if seed is None and options is None and self._np_random is not None:
+            return self._env.reset(None), {}  # the common case, kept short: a one-shot episode resets every step
         if options:
             raise ValueError(f"options: reset takes none (give them to the environment), got {sorted(options)}")
         if seed is not None:
@@ -106,18 +101,12 @@ class TableEnv(_EnvBase):
             self._np_random = np.random.default_rng(seed)
         elif self._np_random is None:
             seed = int(self.np_random.integers(2**63))
-        state, pixels = self._env.reset(seed)
-        return observation_of(state, pixels), {}
+        return self._env.reset(seed), {}
 
     def step(self, action):
         """Plays one shot: (observation, reward, terminated, truncated, info). A NaN, a value
         outside the action space or a wrong shape raises ValueError naming the component."""
-        action = np.asarray(action, dtype=np.float64)
-        if action.ndim != 1:
-            raise ValueError(f"action: a vector of {len(self.action_names)} values "
-                             f"({', '.join(self.action_names)}), got shape {action.shape}")
-        state, pixels, reward, terminated, truncated, info = self._env.step(action)
-        return observation_of(state, pixels), reward, terminated, truncated, info
+        return self._env.step(action)
 
     def render(self):
         """The table now as the overhead camera sees it: an RGB array (360 x 640 x 3)."""

@@ -9,7 +9,7 @@ from typing import Any, Optional, Sequence, Union
 import numpy as np
 
 from cue_sim.envs.spaces import space_classes
-from cue_sim.envs.table_env import _core, engine_of, observation_of, spaces_of
+from cue_sim.envs.table_env import _core, engine_of, spaces_of
 
 
 def batched(space, n: int):
@@ -56,17 +56,13 @@ class TableVectorEnv:
             if seeds != [seeds[0] + i for i in range(self.num_envs)]:
                 raise ValueError("seed: a list must be consecutive (seed, seed + 1, ...); give the first as an int")
             seed = seeds[0]
-        state, pixels = self._envs.reset(None if seed is None else int(seed))
-        return observation_of(state, pixels), {}
+        return self._envs.reset(None if seed is None else int(seed)), {}
 
     def step(self, actions):
         """Every table plays its row of `actions` ((num_envs, action size)): (observations,
         rewards, terminations, truncations, infos); infos holds one array per key and
         "autoreset", where the table was reset instead."""
-        actions = np.asarray(actions, dtype=np.float64)
-        state, pixels, rewards, terminated, truncated, autoreset, info = self._envs.step(actions)
-        info["autoreset"] = autoreset
-        return observation_of(state, pixels), rewards, terminated, truncated, info
+        return self._envs.step(actions)
 
     def close(self):
         self.closed = True

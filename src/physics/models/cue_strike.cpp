@@ -10,8 +10,14 @@ namespace physics
 template <typename S>
 std::string validateStrike(const CueStrike<S>& s)
 {
-  std::ostringstream why;
   const auto bad = [](S x) { return !std::isfinite(static_cast<double>(x)); };
+  const bool good_speed = !bad(s.speed) && s.speed > S(0) && s.speed <= S(CueLimits::max_speed);
+  const bool good_theta = !bad(s.theta) && s.theta >= S(0) && s.theta <= S(CueLimits::max_elevation);
+  const bool good_tip =
+      !bad(s.a) && !bad(s.b) && std::hypot(static_cast<double>(s.a), static_cast<double>(s.b)) <= CueLimits::max_offset;
+  if (good_speed && !bad(s.phi) && good_theta && good_tip)
+    return {};  // every strike played comes here: no stream is made for it
+  std::ostringstream why;
   if (bad(s.speed) || !(s.speed > S(0)) || s.speed > S(CueLimits::max_speed))
     why << "speed must be in (0, " << CueLimits::max_speed << "] m/s, got " << static_cast<double>(s.speed);
   else if (bad(s.phi))

@@ -173,29 +173,39 @@ std::string firstCrossed(const TableModel& table, const Eigen::Vector2d& p, cons
 }
 }  // namespace
 
-std::string TableModel::whyNotPlaceable(const Eigen::Vector2d& p, double R, double tolerance) const
+namespace
+{
+/// The start of a refusal: the position, written only when there is one to refuse (every ball of
+/// every state checked comes here, and writing two numbers costs more than the checks).
+std::string positionOf(const Eigen::Vector2d& p)
 {
   std::ostringstream why;
   why << "position (" << p.x() << ", " << p.y() << ") ";
+  return why.str();
+}
+}  // namespace
+
+std::string TableModel::whyNotPlaceable(const Eigen::Vector2d& p, double R, double tolerance) const
+{
   if (!std::isfinite(p.x()) || !std::isfinite(p.y()))
     return "position is not finite";
   for (const auto& s : segments_)
   {
     const double along = (p - s.start).dot(s.direction);
     if (along >= 0 && along <= s.length && (p - s.start).dot(s.normal) < -tolerance)
-      return why.str() + "is off the cloth, behind " + s.name +
+      return positionOf(p) + "is off the cloth, behind " + s.name +
              ": the centre must be on its playing side, at least R = " + std::to_string(R) + " m from its face";
     if (distanceToSegment(p, s) < R - tolerance)
-      return why.str() + "overlaps " + s.name + ": the centre must be at least R = " + std::to_string(R) +
+      return positionOf(p) + "overlaps " + s.name + ": the centre must be at least R = " + std::to_string(R) +
              " m from its face";
   }
   for (const auto& c : circles_)
     if ((p - c.centre).norm() < R + c.radius - tolerance)
-      return why.str() + "overlaps " + c.name +
+      return positionOf(p) + "overlaps " + c.name +
              ": the centre must be at least R + its radius = " + std::to_string(R + c.radius) + " m from its centre";
   for (const auto& k : pockets_)
     if ((p - k.centre).norm() < k.radius - tolerance)
-      return why.str() + "is over " + k.name + ": the centre must be outside its capture circle (radius " +
+      return positionOf(p) + "is over " + k.name + ": the centre must be outside its capture circle (radius " +
              std::to_string(k.radius) + " m)";
   // Within the rails' reach (R from the cloth's edges) the ball is on the cloth. Beyond it, only in
   // a pocket's mouth: between its jaws, in front of its capture circle. A centre there reaches
@@ -212,7 +222,7 @@ std::string TableModel::whyNotPlaceable(const Eigen::Vector2d& p, double R, doub
   const std::string crossed = firstCrossed(*this, p, q, R, tolerance);
   if (crossed.empty())
     return {};
-  return why.str() + "is off the cloth: beyond the cushion lines (|x| <= " + std::to_string(half_reach.x()) +
+  return positionOf(p) + "is off the cloth: beyond the cushion lines (|x| <= " + std::to_string(half_reach.x()) +
          ", |y| <= " + std::to_string(half_reach.y()) +
          " m of the cloth centre) a ball can only stand in a pocket's mouth, and " + crossed +
          " lies between it and the cloth";
