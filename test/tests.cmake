@@ -87,6 +87,8 @@ set_tests_properties(_ctest_cue_sim_rostest_test_node_game_replay.test PROPERTIE
 
 # The same scenes through the Python module, the simulate program and the node's ~predict.
 add_rostest(test/node/same_answers.test DEPENDENCIES table_node simulate cue_sim_python)
+# Learning episodes played on the live node (cue_sim.envs.live).
+add_rostest(test/node/live_env.test DEPENDENCIES table_node cue_sim_python)
 
 # The simulated camera and the example detector (scripts/detect_balls.py) on it.
 add_rostest(test/node/camera.test DEPENDENCIES table_node)

@@ -99,7 +99,7 @@ std::string GamePlay::call(int ball, int pocket)
   return "";
 }
 
-Turn GamePlay::shoot(const physics::CueStrike<double>& strike, bool push_out)
+Turn GamePlay::shoot(const physics::CueStrike<double>& strike, bool push_out, physics::TableState<double>* at_rest)
 {
   if (state_.over)
     throw std::invalid_argument(whyOver());
@@ -110,6 +110,8 @@ Turn GamePlay::shoot(const physics::CueStrike<double>& strike, bool push_out)
   std::vector<physics::Event<double>> events = simulateToRest(*engine_, shot).events;
   Turn turn = judge(strike, push_out, std::move(events));
   finish(turn, shot);
+  if (at_rest)
+    *at_rest = std::move(shot);
   return turn;
 }
 

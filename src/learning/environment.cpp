@@ -115,6 +115,11 @@ const physics::TableState<double>& Environment::table() const
   return task_->table();
 }
 
+const physics::TableState<double>& Environment::restTable() const
+{
+  return task_->restTable();
+}
+
 void Environment::reset(std::optional<std::uint64_t> seed, const ObservationBuffers& out)
 {
   if (seed)
@@ -147,6 +152,7 @@ StepResult Environment::step(const double* action, std::size_t size, const Obser
   if (!options_.noise.isNone())
     plan.strike = cue_.execute(plan.strike, engine_->params().ball_radius);
   StepResult result = task_->shoot(plan, random_);
+  result.info.strike = plan.strike;
   result.info.shots = ++shots_;
   // A game caps its shots itself (both sides'); other tasks count the agent's.
   if (!result.terminated && !isGameTask(options_.task) && options_.max_shots > 0 && shots_ >= options_.max_shots)

@@ -166,6 +166,8 @@ py::dict infoDict(const learning::StepInfo& info, bool game, bool position)
   }
   if (position)
     d[k[13]] = info.open_shots;
+  static const py::str strike_key("strike");
+  d[strike_key] = py::make_tuple(info.strike.speed, info.strike.phi, info.strike.theta, info.strike.a, info.strike.b);
   return d;
 }
 
@@ -349,7 +351,8 @@ void bindLearning(py::module_& m)
       .def("render", &PyEnvironment::render, py::arg("width"), py::arg("height"))
       .def("time_steps", &PyEnvironment::timeSteps, py::arg("actions"), py::arg("seed"))
       .def_property_readonly("done", [](const PyEnvironment& e) { return e.env.done(); })
-      .def("table", [](const PyEnvironment& e) { return toArrays(e.env.table().balls); });
+      .def("table", [](const PyEnvironment& e) { return toArrays(e.env.table().balls); })
+      .def("rest_table", [](const PyEnvironment& e) { return toArrays(e.env.restTable().balls); });
   py::class_<PyVectorEnvironment>(m, "VectorEnv")
       .def(py::init<std::shared_ptr<Engine>, const py::dict&, int, unsigned>(), py::arg("engine"), py::arg("options"),
            py::arg("num_envs"), py::arg("threads") = 0)

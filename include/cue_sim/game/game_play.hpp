@@ -68,8 +68,10 @@ public:
   std::string call(int ball, int pocket);
   /// Strikes the cue ball, runs the shot to rest and rules on it; throws std::invalid_argument
   /// (and changes nothing) if the game is over or the strike cannot be played. At the shot cap
-  /// a game not yet over ends without a winner, and the ruling says so.
-  Turn shoot(const physics::CueStrike<double>& strike, bool push_out = false);
+  /// a game not yet over ends without a winner, and the ruling says so. With `at_rest`, the balls
+  /// as the shot left them there, before the table is made ready for the next shot.
+  Turn shoot(const physics::CueStrike<double>& strike, bool push_out = false,
+             physics::TableState<double>* at_rest = nullptr);
 
   // A shot run elsewhere (the node's live table runs it in real time): judge it from its
   // events when it is struck, then finish it when its balls rest. shoot() is the two at once.

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cue_sim/learning/random.hpp"
+#include "cue_sim/physics/cue_strike.hpp"
 #include "cue_sim/physics/engine.hpp"
 #include "cue_sim/physics/execution_noise.hpp"
 
@@ -92,7 +93,9 @@ struct StepInfo
   int winner = -1;              ///< games: 0 or 1 once won, else -1
   int opponent_shots = 0;       ///< games against the planner: its turns within this step
   std::string opponent_reason;  ///< ... and the ruling on its last
-  int open_shots = -1;          ///< position: open shots on the next ball after a pot (-1: not asked)
+  /// The cue ball's strike as executed (the action's, noise included): what a live table is sent.
+  physics::CueStrike<double> strike;
+  int open_shots = -1;  ///< position: open shots on the next ball after a pot (-1: not asked)
 };
 
 struct StepResult
@@ -143,6 +146,9 @@ public:
 
   /// The table now (the balls at rest between shots).
   const physics::TableState<double>& table() const;
+  /// The balls as the last shot left them at rest: table(), but in a game or a break before the
+  /// referee's table is made ready for the next shot (balls spotted, the cue ball returned).
+  const physics::TableState<double>& restTable() const;
   const physics::Engine<double>& engine() const { return *engine_; }
   /// The table as the overhead camera sees it, RGB (height x width x 3), for render().
   std::vector<std::uint8_t> render(int width, int height) const;

@@ -22,7 +22,12 @@ public:
     game_ = std::make_unique<game::GamePlay>(engine_, rules_);
   }
   BreakTask(const BreakTask& other)
-    : Task(other), engine_(other.engine_), rules_(other.rules_), game_(std::make_unique<game::GamePlay>(*other.game_))
+    : Task(other),
+      engine_(other.engine_),
+      rules_(other.rules_),
+      game_(std::make_unique<game::GamePlay>(*other.game_)),
+      at_rest_(other.at_rest_),
+      shot_(other.shot_)
   {
   }
   std::unique_ptr<Task> clone() const override { return std::make_unique<BreakTask>(*this); }
@@ -31,14 +36,17 @@ public:
   {
     game_ = std::make_unique<game::GamePlay>(engine_, rules_, std::array<std::string, 2>{"player 1", "player 2"},
                                              game::gameRack(static_cast<unsigned>(random.bits())));
+    shot_ = false;
   }
   const physics::TableState<double>& table() const override { return game_->table(); }
+  const physics::TableState<double>& restTable() const override { return shot_ ? at_rest_ : game_->table(); }
   std::vector<int> aimChoices() const override { return game_->legalFirst(); }
 
   StepResult shoot(const ShotPlan& plan, Random&) override
   {
     StepResult result;
-    const game::Turn turn = game_->shoot(plan.strike);
+    const game::Turn turn = game_->shoot(plan.strike, false, &at_rest_);
+    shot_ = true;
     result.info.events = static_cast<int>(turn.events.size());
     result.info.shot_time = turn.events.empty() ? 0 : turn.events.back().time - turn.events.front().time;
     result.info.pocketed = static_cast<int>(turn.facts.pocketed.size());
@@ -59,6 +67,8 @@ private:
   const physics::Engine<double>& engine_;
   std::string rules_;
   std::unique_ptr<game::GamePlay> game_;
+  physics::TableState<double> at_rest_;  ///< the balls as the break left them
+  bool shot_ = false;
 };
 }  // namespace
 

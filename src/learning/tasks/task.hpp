@@ -27,6 +27,9 @@ public:
   virtual void reset(Random& random) = 0;
   /// The table the next shot is played on.
   virtual const physics::TableState<double>& table() const = 0;
+  /// The balls as the last shot left them at rest (a game then spots balls and returns a
+  /// pocketed cue ball for the next shot, which table() shows); table() before any shot.
+  virtual const physics::TableState<double>& restTable() const { return table(); }
   /// The object balls a relative action chooses among (ids, ascending).
   virtual std::vector<int> aimChoices() const = 0;
   /// With the cue ball in hand, places it at (u, v) of the region it may go in (fractions of
