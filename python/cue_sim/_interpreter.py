@@ -23,8 +23,19 @@ def wrong_interpreter(error):
                        f"{sys.executable} (Python {here}), which cannot load it ({error}): run {executable} instead")
 
 
+def _point_at_data():
+    """Installed from a wheel (pip install .), the tables' URDF files and the configuration are
+    in cue_sim/data: the library looks there first (a user's own setting is kept)."""
+    import os
+    data = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data")
+    if os.path.isdir(data):
+        os.environ.setdefault("CUE_SIM_URDF_DIR", os.path.join(data, "urdf"))
+        os.environ.setdefault("CUE_SIM_CONFIG_DIR", os.path.join(data, "config"))
+
+
 def core():
     """cue_sim._core, loaded (with NumPy, which it needs)."""
+    _point_at_data()
     try:
         import numpy  # noqa: F401
         from cue_sim import _core
