@@ -132,3 +132,77 @@ def batch(engine: Engine, start: State, shots, noise: bool = False, seed: int = 
     """
     parts = map_batch(_whole, engine, start, shots, noise, seed, chunk, address, client, threads_per_chunk, progress)
     return _join(parts) if parts else local_batch(engine, start, np.zeros((0, 6)), noise=noise, seed=seed)
+
+
+def _rollout_chunk(policy, engine: Engine, task: str, options: dict, first: int, tables: int, seed: int,
+                   steps: int) -> dict:
+    """`steps` vector steps of tables first .. first + tables - 1 (seeded seed + first + i), on one
+    worker: every observation, action, reward and end."""
+    from cue_sim.envs import TableVectorEnv
+    envs = TableVectorEnv(tables, task=task, engine=engine, threads=1, **options)
+    obs, _ = envs.reset(seed=seed + first)
+    out = {"observations": [], "actions": [], "rewards": [], "terminated": [], "truncated": [], "autoreset": []}
+    for _ in range(steps):
+        actions = np.asarray(policy(obs), dtype=np.float64)
+        out["observations"].append(obs)
+        out["actions"].append(actions)
+        obs, rewards, terminated, truncated, info = envs.step(actions)
+        out["rewards"].append(rewards)
+        out["terminated"].append(terminated)
+        out["truncated"].append(truncated)
+        out["autoreset"].append(info["autoreset"])
+    return {key: _stack(values) for key, values in out.items()}
+
+
+def _stack(values):
+    if values and isinstance(values[0], dict):
+        return {key: np.stack([v[key] for v in values]) for key in values[0]}
+    return np.stack(values)
+
+
+def _concatenate(parts, axis):
+    if isinstance(parts[0], dict):
+        return {key: np.concatenate([p[key] for p in parts], axis=axis) for key in parts[0]}
+    return np.concatenate(parts, axis=axis)
+
+
+def rollouts(policy: Callable[[Any], np.ndarray], tables: int, steps: int, task: str = "pot",
+             engine: Optional[Engine] = None, seed: int = 0, chunk: Optional[int] = None, address: Optional[str] = None,
+             client=None, progress: bool = True, **options) -> dict:
+    """Learning rollouts on a Dask cluster: `tables` tables of `task` (cue_sim.envs.TableVectorEnv
+    and its options), each stepped `steps` times with policy(observations) -> actions, `chunk`
+    tables a task. Returns arrays of shape (steps, tables, ...): "observations" (what each action
+    was chosen from), "actions", "rewards", "terminated", "truncated" and "autoreset".
+
+    Table i is seeded seed + i wherever it runs, so that for a deterministic policy the result is
+    one machine's TableVectorEnv(tables) stepped the same way, whatever the chunking. policy must
+    be picklable, as map_batch's fn. address, client and progress as for batch().
+    """
+    from dask.distributed import Client, LocalCluster, as_completed
+
+    if tables < 1 or steps < 1:
+        raise ValueError(f"tables and steps must be at least 1, got {tables} and {steps}")
+    engine = engine if engine is not None else Engine("7ft")
+    own_cluster = own_client = None
+    if client is None:
+        if address is None:
+            own_cluster = LocalCluster(threads_per_worker=1, processes=True, dashboard_address=None)
+            address = own_cluster
+        own_client = client = Client(address)
+    try:
+        workers = len(client.scheduler_info()["workers"])
+        chunk = int(chunk) if chunk is not None else max(1, -(-tables // (CHUNKS_PER_WORKER * max(workers, 1))))
+        if chunk < 1:
+            raise ValueError(f"chunk must be at least 1 table, got {chunk}")
+        futures = [client.submit(_rollout_chunk, policy, engine, task, options, first, min(chunk, tables - first),
+                                 seed, steps, pure=False) for first in range(0, tables, chunk)]
+        bar = _Progress(len(futures), tables * steps, progress)
+        for _ in as_completed(futures):
+            bar.step()
+        parts = client.gather(futures)
+        return {key: _concatenate([p[key] for p in parts], axis=1) for key in parts[0]}
+    finally:
+        if own_client is not None:
+            own_client.close()
+        if own_cluster is not None:
+            own_cluster.close()

@@ -85,3 +85,28 @@ def test_the_break_search_example_runs_small():
     assert re.search(r"dask \(\d+ workers, chunks of \d+\): [\d,]+ shots/s", out.stdout), out.stdout
     assert "(same scores)" in out.stdout  # the cluster's scores are the local batch's
     assert "chunks" in out.stderr  # the progress bar
+
+
+def ghost_ball_policy(obs):
+    """A deterministic policy (the first ball, a pocket and a speed from the observation): picklable."""
+    n = len(obs)
+    pocket = (np.abs(obs[:, 0]) * 6).astype(int) % 6
+    return np.column_stack([np.zeros(n), (pocket + 0.5) / 6, np.zeros(n), 1.0 + 2.0 * np.abs(obs[:, 1])])
+
+
+def test_rollouts_are_one_machines_vector_environment(client):
+    from cue_sim.envs import TableVectorEnv
+    tables, steps = 9, 6
+    local = TableVectorEnv(tables, task="pot", action="relative", max_shots=3, threads=1)
+    obs, _ = local.reset(seed=21)
+    rewards = []
+    for _ in range(steps):
+        obs, reward, terminated, truncated, info = local.step(ghost_ball_policy(obs))
+        rewards.append(reward)
+    for chunk in (4, 9):
+        out = spread.rollouts(ghost_ball_policy, tables, steps, task="pot", seed=21, chunk=chunk, client=client,
+                              progress=False, action="relative", max_shots=3)
+        assert out["observations"].shape == (steps, tables, 48)
+        assert out["actions"].shape == (steps, tables, 4)
+        assert np.array_equal(out["rewards"], np.stack(rewards)), chunk
+    assert (np.stack(rewards) != 0).any()  # the comparison saw shots that did something
