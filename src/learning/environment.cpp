@@ -151,8 +151,8 @@ StepResult Environment::step(const double* action, std::size_t size, const Obser
   ShotPlan plan = layout.plan(action, aim);
   if (!options_.noise.isNone())
     plan.strike = cue_.execute(plan.strike, engine_->params().ball_radius);
+  last_strike_ = plan.strike;
   StepResult result = task_->shoot(plan, random_);
-  result.info.strike = plan.strike;
   result.info.shots = ++shots_;
   // A game caps its shots itself (both sides'); other tasks count the agent's.
   if (!result.terminated && !isGameTask(options_.task) && options_.max_shots > 0 && shots_ >= options_.max_shots)

@@ -166,15 +166,18 @@ py::dict infoDict(const learning::StepInfo& info, bool game, bool position)
   }
   if (position)
     d[k[13]] = info.open_shots;
-  static const py::str strike_key("strike");
-  d[strike_key] = py::make_tuple(info.strike.speed, info.strike.phi, info.strike.theta, info.strike.a, info.strike.b);
   return d;
 }
 
 /// A (rows, columns) C-contiguous float64 view of `actions` (one table: a vector is one row).
 py::array_t<double, py::array::c_style | py::array::forcecast> actionRows(const py::object& actions)
 {
-  return py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(actions);
+  using Rows = py::array_t<double, py::array::c_style | py::array::forcecast>;
+  // A learner's float64 array, the common case, is taken as it is, without numpy's conversion.
+  if (py::isinstance<py::array_t<double, py::array::c_style>>(actions) &&
+      (py::reinterpret_borrow<py::array>(actions).flags() & py::array::c_style))
+    return py::reinterpret_borrow<Rows>(actions);
+  return Rows::ensure(actions);
 }
 
 struct PyEnvironment
@@ -351,6 +354,11 @@ void bindLearning(py::module_& m)
       .def("render", &PyEnvironment::render, py::arg("width"), py::arg("height"))
       .def("time_steps", &PyEnvironment::timeSteps, py::arg("actions"), py::arg("seed"))
       .def_property_readonly("done", [](const PyEnvironment& e) { return e.env.done(); })
+      .def_property_readonly("last_strike",
+                             [](const PyEnvironment& e) {
+                               const physics::CueStrike<double>& s = e.env.lastStrike();
+                               return py::make_tuple(s.speed, s.phi, s.theta, s.a, s.b);
+                             })
       .def("table", [](const PyEnvironment& e) { return toArrays(e.env.table().balls); })
       .def("rest_table", [](const PyEnvironment& e) { return toArrays(e.env.restTable().balls); });
   py::class_<PyVectorEnvironment>(m, "VectorEnv")

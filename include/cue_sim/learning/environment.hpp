@@ -93,9 +93,7 @@ struct StepInfo
   int winner = -1;              ///< games: 0 or 1 once won, else -1
   int opponent_shots = 0;       ///< games against the planner: its turns within this step
   std::string opponent_reason;  ///< ... and the ruling on its last
-  /// The cue ball's strike as executed (the action's, noise included): what a live table is sent.
-  physics::CueStrike<double> strike;
-  int open_shots = -1;  ///< position: open shots on the next ball after a pot (-1: not asked)
+  int open_shots = -1;          ///< position: open shots on the next ball after a pot (-1: not asked)
 };
 
 struct StepResult
@@ -143,6 +141,9 @@ public:
   StepResult step(const double* action, std::size_t size, const ObservationBuffers& out);
   /// Whether the episode has ended (terminated or truncated): step() needs a reset first.
   bool done() const { return done_; }
+  /// The cue ball's strike the last step played, as executed (the action's, noise included):
+  /// what a live table is sent.
+  const physics::CueStrike<double>& lastStrike() const { return last_strike_; }
 
   /// The table now (the balls at rest between shots).
   const physics::TableState<double>& table() const;
@@ -164,6 +165,7 @@ private:
   physics::NoisyCue cue_;  ///< the execution noise's own stream, seeded with the episode's seed
   int shots_ = 0;
   bool done_ = true;
+  physics::CueStrike<double> last_strike_;
   /// The pixel observation's camera, made on first use; a copy makes its own (a camera keeps
   /// buffers, so two threads must not share one).
   mutable std::unique_ptr<PixelRenderer> pixels_;

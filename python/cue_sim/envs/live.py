@@ -119,7 +119,7 @@ class LiveTableEnv:
         """One strike on the node, to rest; the twin's observation, reward and info (equal to the
         node's table, which is checked)."""
         obs, reward, terminated, truncated, info = self._twin.step(action)
-        speed, phi, theta, a, b = info["strike"]
+        speed, phi, theta, a, b = self._twin._env.last_strike
         answer = self._strike(ball_id=0, speed=speed, phi=phi, theta=theta, a=a, b=b)
         if not answer.success:
             raise RuntimeError(f"{self.namespace}/strike refused the strike: {answer.message}")
