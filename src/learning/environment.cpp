@@ -75,7 +75,8 @@ Environment::Environment(std::shared_ptr<const physics::Engine<double>> engine, 
   if (const std::string why = options_.whyInvalid(); !why.empty())
     throw std::invalid_argument(why);
   task_ = makeTask(*engine_, options_);
-  spaces_.action = ActionLayout(options_).box();
+  layout_ = std::make_shared<const ActionLayout>(options_);
+  spaces_.action = layout_->box();
   if (options_.observation != "pixels")
   {
     addBallBlock(spaces_.state);
@@ -96,10 +97,13 @@ Environment::Environment(const Environment& other)
   : engine_(other.engine_),
     options_(other.options_),
     spaces_(other.spaces_),
+    layout_(other.layout_),
     task_(other.task_->clone()),
     random_(other.random_),
+    cue_(other.cue_),
     shots_(other.shots_),
-    done_(other.done_)
+    done_(other.done_),
+    last_strike_(other.last_strike_)
 {
 }
 
@@ -137,7 +141,7 @@ StepResult Environment::step(const double* action, std::size_t size, const Obser
 {
   if (done_)
     throw std::logic_error("step: the episode is over (terminated or truncated); call reset first");
-  const ActionLayout layout(options_);
+  const ActionLayout& layout = *layout_;
   if (const std::string why = layout.whyInvalid(action, size); !why.empty())
     throw std::invalid_argument(why);
   double u = 0, v = 0;

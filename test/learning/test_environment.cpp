@@ -194,6 +194,24 @@ TEST(LearningEnvironment, ASeedFixesTheEpisodesAndACopyPlaysOnAlike)
   EXPECT_NE(playthrough(a, 11, 60), playthrough(c, 12, 60));
   Environment copy = a;
   EXPECT_EQ(playthrough(copy, 5, 30), playthrough(a, 5, 30));
+  // A copy carries the random streams along: the same strike from the same point, noise and all,
+  // without a seed of its own.
+  std::vector<float> state = stateOf(a);
+  a.reset(std::nullopt, {state.data(), nullptr});
+  Environment twin = a;
+  const std::vector<double> action = {0.25, 3.0};
+  a.step(action.data(), action.size(), {state.data(), nullptr});
+  twin.step(action.data(), action.size(), {state.data(), nullptr});
+  EXPECT_EQ(a.lastStrike().phi, twin.lastStrike().phi);
+  EXPECT_EQ(a.lastStrike().speed, twin.lastStrike().speed);
+  EXPECT_NE(a.lastStrike().phi, 0.25) << "the noise is on";
+  EXPECT_NE(a.lastStrike().speed, 3.0) << "the noise is on";
+  // A fresh environment's copy, never seeded, strikes with the noise too.
+  Environment fresh(engine, o);
+  Environment fresh_copy = fresh;
+  fresh_copy.reset(std::nullopt, {state.data(), nullptr});
+  fresh_copy.step(action.data(), action.size(), {state.data(), nullptr});
+  EXPECT_NE(fresh_copy.lastStrike().phi, 0.25);
 }
 
 TEST(LearningVectorEnvironment, IsNSingleEnvironmentsBitForBit)

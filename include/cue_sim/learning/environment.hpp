@@ -115,6 +115,7 @@ struct ObservationBuffers
 
 class Task;
 class PixelRenderer;
+class ActionLayout;
 
 /// One table and its task. Copyable: a copy plays on from the same point with the same random
 /// stream (what a planner tries shots on).
@@ -160,6 +161,7 @@ private:
   std::shared_ptr<const physics::Engine<double>> engine_;
   EnvOptions options_;
   Spaces spaces_;
+  std::shared_ptr<const ActionLayout> layout_;  ///< immutable: copies share it
   std::unique_ptr<Task> task_;
   Random random_;
   physics::NoisyCue cue_;  ///< the execution noise's own stream, seeded with the episode's seed
