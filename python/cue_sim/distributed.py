@@ -13,6 +13,7 @@ and coefficients (a table given as a URDF path must be at that path on every wor
 """
 from __future__ import annotations
 
+import contextlib
 import sys
 import time
 from typing import Any, Callable, List, Optional
@@ -66,6 +67,27 @@ class _Progress:
               f"{rate:,.0f} shots/s", end="" if self.done < self.chunks else "\n", file=sys.stderr, flush=True)
 
 
+@contextlib.contextmanager
+def _connected(address: Optional[str], client):
+    """The client a call uses: `client` as it is (left open); else one to `address`, or to a
+    LocalCluster of this machine's cores (one single-threaded worker process each) started for the
+    call, both closed when it ends."""
+    if client is not None:
+        yield client
+        return
+    from dask.distributed import Client, LocalCluster
+    cluster = None
+    if address is None:
+        cluster = LocalCluster(threads_per_worker=1, processes=True, dashboard_address=None)
+        address = cluster
+    try:
+        with Client(address) as own:
+            yield own
+    finally:
+        if cluster is not None:
+            cluster.close()
+
+
 def _map_chunk(fn, engine: Engine, start: State, shots: np.ndarray, noise: bool, seed: int, threads: int):
     return fn(_run_chunk(engine, start, shots, noise, seed, threads))
 
@@ -81,7 +103,7 @@ def map_batch(fn: Callable[[Batch], Any], engine: Engine, start: State, shots, n
     picklable (a module's function, or one defined in the script: Dask pickles it by value).
     Other arguments as for batch().
     """
-    from dask.distributed import Client, LocalCluster, as_completed
+    from dask.distributed import as_completed
 
     shots = shot_rows(shots)
     if chunk is not None and int(chunk) < 1:
@@ -89,13 +111,7 @@ def map_batch(fn: Callable[[Batch], Any], engine: Engine, start: State, shots, n
     engine.check(start)  # refused here, by name, rather than on every worker
     if len(shots) == 0:
         return []
-    own_cluster = own_client = None
-    if client is None:
-        if address is None:
-            own_cluster = LocalCluster(threads_per_worker=1, processes=True, dashboard_address=None)
-            address = own_cluster
-        own_client = client = Client(address)
-    try:
+    with _connected(address, client) as client:
         if chunk is None:
             chunk = default_chunk(len(shots), len(client.scheduler_info()["workers"]))
         chunk = int(chunk)
@@ -108,11 +124,6 @@ def map_batch(fn: Callable[[Batch], Any], engine: Engine, start: State, shots, n
         for _ in as_completed(futures):
             bar.step()
         return client.gather(futures)
-    finally:
-        if own_client is not None:
-            own_client.close()
-        if own_cluster is not None:
-            own_cluster.close()
 
 
 def _whole(outcome: Batch) -> Batch:
@@ -178,18 +189,12 @@ def rollouts(policy: Callable[[Any], np.ndarray], tables: int, steps: int, task:
     one machine's TableVectorEnv(tables) stepped the same way, whatever the chunking. policy must
     be picklable, as map_batch's fn. address, client and progress as for batch().
     """
-    from dask.distributed import Client, LocalCluster, as_completed
+    from dask.distributed import as_completed
 
     if tables < 1 or steps < 1:
         raise ValueError(f"tables and steps must be at least 1, got {tables} and {steps}")
     engine = engine if engine is not None else Engine("7ft")
-    own_cluster = own_client = None
-    if client is None:
-        if address is None:
-            own_cluster = LocalCluster(threads_per_worker=1, processes=True, dashboard_address=None)
-            address = own_cluster
-        own_client = client = Client(address)
-    try:
+    with _connected(address, client) as client:
         workers = len(client.scheduler_info()["workers"])
         chunk = int(chunk) if chunk is not None else max(1, -(-tables // (CHUNKS_PER_WORKER * max(workers, 1))))
         if chunk < 1:
@@ -201,8 +206,3 @@ def rollouts(policy: Callable[[Any], np.ndarray], tables: int, steps: int, task:
             bar.step()
         parts = client.gather(futures)
         return {key: _concatenate([p[key] for p in parts], axis=1) for key in parts[0]}
-    finally:
-        if own_client is not None:
-            own_client.close()
-        if own_cluster is not None:
-            own_cluster.close()

@@ -17,8 +17,7 @@ public:
   BreakTask(const physics::Engine<double>& engine, const EnvOptions& options)
     : engine_(engine), rules_(options.rack == "eight" ? "eight_ball" : "nine_ball")
   {
-    if (engine.table().pockets().empty())
-      throw std::invalid_argument("task: break needs a table with pockets; '" + engine.table().name() + "' has none");
+    requirePockets(engine, "break");
     game_ = std::make_unique<game::GamePlay>(engine_, rules_);
   }
   BreakTask(const BreakTask& other)
@@ -47,13 +46,7 @@ public:
     StepResult result;
     const game::Turn turn = game_->shoot(plan.strike, false, &at_rest_);
     shot_ = true;
-    result.info.events = static_cast<int>(turn.events.size());
-    result.info.shot_time = turn.events.empty() ? 0 : turn.events.back().time - turn.events.front().time;
-    result.info.pocketed = static_cast<int>(turn.facts.pocketed.size());
-    result.info.scratch = turn.facts.scratch;
-    result.info.first_contact = turn.facts.first_contact;
-    result.info.foul = turn.ruling.foul;
-    result.info.reason = turn.ruling.reason;
+    describeTurn(turn, result.info);
     const bool legal = !turn.ruling.foul && !turn.ruling.rerack;
     result.reward = legal ? static_cast<double>(turn.facts.pocketed.size()) : -1.0;
     result.terminated = true;

@@ -30,9 +30,7 @@ public:
       shaping_(options.shaping),
       cap_(options.max_shots > 0 ? options.max_shots : kGameShotCap)
   {
-    if (engine.table().pockets().empty())
-      throw std::invalid_argument("task: " + rules_ + " needs a table with pockets; '" + engine.table().name() +
-                                  "' has none");
+    requirePockets(engine, rules_);
   }
   GameTask(const GameTask& other)
     : Task(other),
@@ -84,13 +82,7 @@ public:
     if (plan.aimed_ball >= 0)
       game_->call(plan.aimed_ball, plan.aimed_pocket);  // a player calls the shot it aims
     const game::Turn turn = game_->shoot(plan.strike, plan.push_out && game_->state().push_out_allowed);
-    result.info.events = static_cast<int>(turn.events.size());
-    result.info.shot_time = turn.events.empty() ? 0 : turn.events.back().time - turn.events.front().time;
-    result.info.pocketed = static_cast<int>(turn.facts.pocketed.size());
-    result.info.scratch = turn.facts.scratch;
-    result.info.first_contact = turn.facts.first_contact;
-    result.info.foul = turn.ruling.foul;
-    result.info.reason = turn.ruling.reason;
+    describeTurn(turn, result.info);
     result.info.player = shooter;
     result.reward = shapedReward(turn, shooter);
     if (!self_play_)

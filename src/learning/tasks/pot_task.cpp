@@ -37,9 +37,7 @@ public:
       lowest_(position_ || options.target == "lowest"),
       run_(options.max_shots > 1)
   {
-    if (engine.table().pockets().empty())
-      throw std::invalid_argument("task: " + options.task + " needs a table with pockets; '" + engine.table().name() +
-                                  "' has none");
+    requirePockets(engine, options.task);
   }
   std::unique_ptr<Task> clone() const override { return std::make_unique<PotTask>(*this); }
 

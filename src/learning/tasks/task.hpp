@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cue_sim/game/game_play.hpp"
 #include "cue_sim/learning/environment.hpp"
 #include "cue_sim/learning/random.hpp"
 #include "cue_sim/physics/cue_strike.hpp"
@@ -46,6 +47,13 @@ public:
   /// ...and their values now.
   virtual void writeFeatures(float* out) const = 0;
 };
+
+/// Throws std::invalid_argument unless `engine`'s table has pockets (every task pots balls).
+void requirePockets(const physics::Engine<double>& engine, const std::string& task);
+
+/// What a refereed turn did, in a step's info: events, the shot's time, balls pocketed, the first
+/// contact, the foul and the ruling's reason.
+void describeTurn(const game::Turn& turn, StepInfo& info);
 
 /// The task `options.task` names on `engine` (throws std::invalid_argument for an unknown name or a
 /// table it cannot be played on).

@@ -1,4 +1,4 @@
-// The tasks by name: each is one file in tasks/, made here.
+// The tasks by name: each is one file in tasks/, made here; and what the tasks share.
 #include <stdexcept>
 
 #include "learning/tasks/task.hpp"
@@ -24,6 +24,24 @@ const TaskEntry kTasks[] = {
     {"eight_ball", &makeGameTask}, {"nine_ball", &makeGameTask},
 };
 }  // namespace
+
+void requirePockets(const physics::Engine<double>& engine, const std::string& task)
+{
+  if (engine.table().pockets().empty())
+    throw std::invalid_argument("task: " + task + " needs a table with pockets; '" + engine.table().name() +
+                                "' has none");
+}
+
+void describeTurn(const game::Turn& turn, StepInfo& info)
+{
+  info.events = static_cast<int>(turn.events.size());
+  info.shot_time = turn.events.empty() ? 0 : turn.events.back().time - turn.events.front().time;
+  info.pocketed = static_cast<int>(turn.facts.pocketed.size());
+  info.scratch = turn.facts.scratch;
+  info.first_contact = turn.facts.first_contact;
+  info.foul = turn.ruling.foul;
+  info.reason = turn.ruling.reason;
+}
 
 std::vector<std::string> taskNames()
 {
