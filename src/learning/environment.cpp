@@ -124,6 +124,16 @@ const physics::TableState<double>& Environment::restTable() const
   return task_->restTable();
 }
 
+std::optional<GameStart> Environment::gameStart() const
+{
+  return task_->gameStart();
+}
+
+std::vector<PlayedTurn> Environment::lastTurns() const
+{
+  return task_->lastTurns();
+}
+
 void Environment::reset(std::optional<std::uint64_t> seed, const ObservationBuffers& out)
 {
   if (seed)

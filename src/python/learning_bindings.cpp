@@ -354,6 +354,26 @@ void bindLearning(py::module_& m)
       .def("render", &PyEnvironment::render, py::arg("width"), py::arg("height"))
       .def("time_steps", &PyEnvironment::timeSteps, py::arg("actions"), py::arg("seed"))
       .def_property_readonly("done", [](const PyEnvironment& e) { return e.env.done(); })
+      .def_property_readonly("game_start",
+                             [](const PyEnvironment& e) -> py::object {
+                               const auto start = e.env.gameStart();
+                               if (!start)
+                                 return py::none();
+                               return py::dict(py::arg("rules") = start->rules, py::arg("rack_seed") = start->rack_seed,
+                                               py::arg("breaker") = start->breaker);
+                             })
+      .def_property_readonly(
+          "last_turns",
+          [](const PyEnvironment& e) {
+            py::list turns;
+            for (const learning::PlayedTurn& t : e.env.lastTurns())
+              turns.append(py::dict(py::arg("player") = t.player, py::arg("placed") = t.placed, py::arg("x") = t.x,
+                                    py::arg("y") = t.y, py::arg("called_ball") = t.called_ball,
+                                    py::arg("called_pocket") = t.called_pocket, py::arg("push_out") = t.push_out,
+                                    py::arg("strike") = py::make_tuple(t.strike.speed, t.strike.phi, t.strike.theta,
+                                                                       t.strike.a, t.strike.b)));
+            return turns;
+          })
       .def_property_readonly("last_strike",
                              [](const PyEnvironment& e) {
                                const physics::CueStrike<double>& s = e.env.lastStrike();

@@ -77,6 +77,26 @@ struct Spaces
   std::size_t pixelBytes() const { return static_cast<std::size_t>(pixel_width) * pixel_height * 3; }
 };
 
+/// A game's start as an episode drew it: what a live table needs to rack the same game.
+struct GameStart
+{
+  std::string rules;
+  unsigned rack_seed = 0;  ///< game::gameRack's seed
+  int breaker = 0;         ///< who breaks: 0 or 1
+};
+
+/// One turn of a game as it was played, by the agent or the opponent: what a live table must be
+/// sent to play it too.
+struct PlayedTurn
+{
+  int player = 0;
+  bool placed = false;                       ///< the cue ball was in hand and placed...
+  double x = 0, y = 0;                       ///< ...with its centre here [m]
+  int called_ball = -1, called_pocket = -1;  ///< the call made (-1: none)
+  bool push_out = false;                     ///< 9-ball: declared
+  physics::CueStrike<double> strike;         ///< as executed
+};
+
 /// What a step did besides its reward (Gymnasium's info).
 struct StepInfo
 {
@@ -145,6 +165,10 @@ public:
   /// The cue ball's strike the last step played, as executed (the action's, noise included):
   /// what a live table is sent.
   const physics::CueStrike<double>& lastStrike() const { return last_strike_; }
+  /// Games: how the episode's game started, and the turns the last reset or step played (the
+  /// opponent's too), in order; empty for the other tasks.
+  std::optional<GameStart> gameStart() const;
+  std::vector<PlayedTurn> lastTurns() const;
 
   /// The table now (the balls at rest between shots).
   const physics::TableState<double>& table() const;

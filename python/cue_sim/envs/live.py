@@ -8,8 +8,14 @@ rest. A twin TableEnv on the node's own table and physics plays the same strike:
 is the same, so its balls must come to rest exactly where the twin's do, and the reward and the
 rulings are the twin's. A table that differs raises, naming the ball.
 
+In a game (eight_ball, nine_ball) reset starts the same game on the node (~start_game: the rules,
+the rack's seed, who breaks) and every turn the twin plays, the opponent's too, goes to the node in
+order: the cue ball placed in hand (~place_cue_ball), the call and push-out (~call_shot), the
+strike; each waits until the node's referee has finished the shot (~game_state). The node's table
+must then be the twin's, the balls spotted and the cue ball returned as the twin's referee did.
+
 Needs rospy and a running table_node with its noise off (~noise/enabled false: the noise is the
-environment's). The tasks that play here: pot, position and break.
+environment's).
 """
 from __future__ import annotations
 
@@ -21,20 +27,19 @@ import numpy as np
 
 from cue_sim.envs.table_env import TableEnv
 
-#: The tasks whose whole episode is the cue ball's strikes (games also play the opponent's turns
-#: and place the cue ball, which this bridge does not send).
-LIVE_TASKS = ("pot", "position", "break")
+#: The tasks the live table plays: every one.
+LIVE_TASKS = ("pot", "position", "break", "eight_ball", "nine_ball")
+GAMES = ("eight_ball", "nine_ball")
 
 
-class _LatestState:
-    """The node's last ~state, and a condition to wait on for one that satisfies a test."""
+class _Latest:
+    """A topic's last message, and a condition to wait on for one that satisfies a test."""
 
-    def __init__(self, topic):
+    def __init__(self, topic, kind):
         import rospy
-        from cue_sim.msg import TableState
         self._condition = threading.Condition()
         self._msg = None
-        self._subscriber = rospy.Subscriber(topic, TableState, self._keep, queue_size=10)
+        self._subscriber = rospy.Subscriber(topic, kind, self._keep, queue_size=10)
 
     def _keep(self, msg):
         with self._condition:
@@ -48,7 +53,7 @@ class _LatestState:
             while self._msg is None or not ready(self._msg):
                 left = deadline - time.monotonic()
                 if left <= 0:
-                    raise TimeoutError(f"the table node's ~state did not come to the awaited state within {timeout} s")
+                    raise TimeoutError(f"the table node did not come to the awaited state within {timeout} s")
                 self._condition.wait(left)
             return self._msg
 
@@ -81,31 +86,55 @@ class LiveTableEnv:
 
     def __init__(self, task: str = "pot", namespace: str = "/table", timeout: float = 120.0, **options: Any):
         import rospy
-        from cue_sim.srv import Rack, Strike
+        from cue_sim.msg import GameState, TableState
+        from cue_sim.srv import CallShot, PlaceCueBall, Rack, StartGame, Strike
         if task not in LIVE_TASKS:
             raise ValueError(f"task: the live table plays {', '.join(LIVE_TASKS)}, got {task!r}")
         if rospy.get_param(namespace + "/noise/enabled", False):
             raise ValueError(f"{namespace}/noise/enabled is true: the noise is the environment's; turn the node's off")
         self.namespace = namespace.rstrip("/")
         self.timeout = float(timeout)
-        self._twin = TableEnv(task, engine=node_engine(self.namespace), **options)
+        engine = node_engine(self.namespace)
+        self._pocket_names = [name for name, _, _, _ in engine._engine.pockets]
+        self._twin = TableEnv(task, engine=engine, **options)
+        self._game = task in GAMES
         self.observation_space, self.action_space = self._twin.observation_space, self._twin.action_space
         self.action_names, self.observation_names = self._twin.action_names, self._twin.observation_names
         rospy.wait_for_service(self.namespace + "/rack", timeout=self.timeout)
         rospy.wait_for_service(self.namespace + "/strike", timeout=self.timeout)
+        from std_srvs.srv import Trigger
+        rospy.wait_for_service(self.namespace + "/end_game", timeout=self.timeout)
+        self._end_game = rospy.ServiceProxy(self.namespace + "/end_game", Trigger)
         self._rack = rospy.ServiceProxy(self.namespace + "/rack", Rack)
         self._strike = rospy.ServiceProxy(self.namespace + "/strike", Strike)
-        self._state = _LatestState(self.namespace + "/state")
+        self._state = _Latest(self.namespace + "/state", TableState)
+        if self._game:
+            for name in ("start_game", "place_cue_ball", "call_shot"):
+                rospy.wait_for_service(f"{self.namespace}/{name}", timeout=self.timeout)
+            self._start_game = rospy.ServiceProxy(self.namespace + "/start_game", StartGame)
+            self._place = rospy.ServiceProxy(self.namespace + "/place_cue_ball", PlaceCueBall)
+            self._call = rospy.ServiceProxy(self.namespace + "/call_shot", CallShot)
+            self._game_state = _Latest(self.namespace + "/game_state", GameState)
 
     def reset(self, *, seed: Optional[int] = None, options: Optional[dict] = None):
         """The episode's table, drawn by the twin and racked on the node."""
         from geometry_msgs.msg import Point
         obs, info = self._twin.reset(seed=seed, options=options)
-        table = self._twin.table()
-        answer = self._rack(layout="custom", ids=[int(i) for i in table.ids],
-                            positions=[Point(float(p[0]), float(p[1]), 0.0) for p in table.positions])
-        if not answer.success:
-            raise RuntimeError(f"{self.namespace}/rack refused the episode's table: {answer.message}")
+        if self._game:
+            start = self._twin._env.game_start
+            answer = self._start_game(rules=start["rules"], players=[], first_player=start["breaker"],
+                                      seed=start["rack_seed"], balls=[])
+            if not answer.success:
+                raise RuntimeError(f"{self.namespace}/start_game refused the episode's game: {answer.message}")
+            self._shots = answer.state.shots
+            self._play_turns()
+        else:
+            self._end_game()  # free play, if a game was on: the rack is the episode's
+            table = self._twin.table()
+            answer = self._rack(layout="custom", ids=[int(i) for i in table.ids],
+                                positions=[Point(float(p[0]), float(p[1]), 0.0) for p in table.positions])
+            if not answer.success:
+                raise RuntimeError(f"{self.namespace}/rack refused the episode's table: {answer.message}")
         # The node's state before the rack may look alike (as many balls, at rest): wait for the
         # twin's table itself.
         try:
@@ -119,17 +148,47 @@ class LiveTableEnv:
         """One strike on the node, to rest; the twin's observation, reward and info (equal to the
         node's table, which is checked)."""
         obs, reward, terminated, truncated, info = self._twin.step(action)
-        speed, phi, theta, a, b = self._twin._env.last_strike
-        answer = self._strike(ball_id=0, speed=speed, phi=phi, theta=theta, a=a, b=b)
-        if not answer.success:
-            raise RuntimeError(f"{self.namespace}/strike refused the strike: {answer.message}")
-        struck = answer.stamp
+        if self._game:
+            self._play_turns()
+            return obs, reward, terminated, truncated, info
+        struck = self._send_strike(self._twin._env.last_strike)
         # At rest in a state stamped after the strike: the shot is over on the node.
         msg = self._state.wait_for(lambda m: not m.moving and m.header.stamp > struck, self.timeout)
         difference = self._difference(msg)
         if difference is not None:
             raise RuntimeError(f"the node's table is not the twin's after the strike: {difference}")
         return obs, reward, terminated, truncated, info
+
+    def _send_strike(self, strike):
+        speed, phi, theta, a, b = strike
+        answer = self._strike(ball_id=0, speed=speed, phi=phi, theta=theta, a=a, b=b)
+        if not answer.success:
+            raise RuntimeError(f"{self.namespace}/strike refused the strike: {answer.message}")
+        return answer.stamp
+
+    def _play_turns(self):
+        """The turns the twin's last reset or step played, on the node's game in order; then the
+        node's table must be the twin's."""
+        from geometry_msgs.msg import Point
+        for turn in self._twin._env.last_turns:
+            if turn["placed"]:
+                answer = self._place(position=Point(turn["x"], turn["y"], 0.0))
+                if not answer.success:
+                    raise RuntimeError(f"{self.namespace}/place_cue_ball refused the twin's placement: {answer.message}")
+            if turn["called_ball"] >= 0 or turn["push_out"]:
+                pocket = self._pocket_names[turn["called_pocket"]] if turn["called_pocket"] >= 0 else ""
+                answer = self._call(ball=turn["called_ball"], pocket=pocket, push_out=turn["push_out"])
+                if not answer.success:
+                    raise RuntimeError(f"{self.namespace}/call_shot refused the twin's call: {answer.message}")
+            self._send_strike(turn["strike"])
+            self._shots += 1
+            # The referee has ruled and the table is ready for the next shot.
+            self._game_state.wait_for(lambda g, n=self._shots: g.shots >= n and not g.shot_in_progress, self.timeout)
+        try:
+            self._state.wait_for(lambda m: not m.moving and self._difference(m) is None, self.timeout)
+        except TimeoutError:
+            raise RuntimeError("the node's table is not the twin's after the game's turns: "
+                               f"{self._difference(self._state.latest())}") from None
 
     def _difference(self, msg):
         """None if the node's balls in `msg` are the twin's as its last shot left them, exactly;
@@ -150,6 +209,10 @@ class LiveTableEnv:
         return None
 
     def close(self):
+        """Leaves the node in free play (a game's episode ends its game) and stops listening."""
+        if self._game:
+            self._end_game()
+            self._game_state.close()
         self._state.close()
 
     @property

@@ -3,6 +3,7 @@
 // within the agent's step; or in self-play, where every step is the shot of whoever is to play and
 // everything is seen from the shooter's side.
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "cue_sim/game/game_play.hpp"
@@ -41,7 +42,10 @@ public:
       opponent_noise_(other.opponent_noise_),
       shaping_(other.shaping_),
       cap_(other.cap_),
-      game_(other.game_ ? std::make_unique<game::GamePlay>(*other.game_) : nullptr)
+      game_(other.game_ ? std::make_unique<game::GamePlay>(*other.game_) : nullptr),
+      start_(other.start_),
+      turns_(other.turns_),
+      placement_(other.placement_)
   {
   }
   std::unique_ptr<Task> clone() const override { return std::make_unique<GameTask>(*this); }
@@ -52,10 +56,14 @@ public:
     // game it wins before the agent's first shot is drawn again).
     do
     {
-      const int breaker = random.integer(0, 1);
-      game_ = std::make_unique<game::GamePlay>(engine_, rules_, players(),
-                                               game::gameRack(static_cast<unsigned>(random.bits())), breaker);
+      start_.rules = rules_;
+      start_.breaker = random.integer(0, 1);
+      start_.rack_seed = static_cast<unsigned>(random.bits());
+      game_ = std::make_unique<game::GamePlay>(engine_, rules_, players(), game::gameRack(start_.rack_seed),
+                                               start_.breaker);
       game_->setShotCap(cap_);
+      turns_.clear();
+      placement_.reset();
       if (!self_play_)
       {
         StepResult ignored;
@@ -73,15 +81,32 @@ public:
       return;
     const Eigen::Vector2d wanted = low + Eigen::Vector2d(u, v).cwiseProduct(high - low);
     placeNearest(wanted, low, high);
+    placement_ = cueBall();
   }
 
   StepResult shoot(const ShotPlan& plan, Random& random) override
   {
     StepResult result;
     const int shooter = game_->state().turn;
-    if (plan.aimed_ball >= 0)
-      game_->call(plan.aimed_ball, plan.aimed_pocket);  // a player calls the shot it aims
-    const game::Turn turn = game_->shoot(plan.strike, plan.push_out && game_->state().push_out_allowed);
+    PlayedTurn played;
+    played.player = shooter;
+    if (placement_)
+    {
+      played.placed = true;
+      played.x = placement_->x();
+      played.y = placement_->y();
+      placement_.reset();
+    }
+    // A player calls the shot it aims.
+    if (plan.aimed_ball >= 0 && game_->call(plan.aimed_ball, plan.aimed_pocket).empty())
+    {
+      played.called_ball = plan.aimed_ball;
+      played.called_pocket = plan.aimed_pocket;
+    }
+    played.push_out = plan.push_out && game_->state().push_out_allowed;
+    played.strike = plan.strike;
+    turns_.assign(1, played);
+    const game::Turn turn = game_->shoot(plan.strike, played.push_out);
     describeTurn(turn, result.info);
     result.info.player = shooter;
     result.reward = shapedReward(turn, shooter);
@@ -94,6 +119,9 @@ public:
     result.truncated = after.over && after.winner < 0;  // the shot cap
     return result;
   }
+
+  std::optional<GameStart> gameStart() const override { return start_; }
+  std::vector<PlayedTurn> lastTurns() const override { return turns_; }
 
   void addFeatures(BoxSpec& box) const override
   {
@@ -132,6 +160,11 @@ public:
   }
 
 private:
+  Eigen::Vector2d cueBall() const
+  {
+    return game_->table().balls[static_cast<std::size_t>(game_->table().indexOf(0))].r.head<2>();
+  }
+
   std::array<std::string, 2> players() const
   {
     return self_play_ ? std::array<std::string, 2>{"player 1", "player 2"}
@@ -164,13 +197,25 @@ private:
         c = planner.choose(*game_);
       else
         c = wildChoice(random);
-      if (c.place_cue_ball)
-        game_->placeCueBall(c.cue_ball);
-      game_->call(c.ball, c.pocket);
+      PlayedTurn played;
+      played.player = game_->state().turn;
+      if (c.place_cue_ball && game_->placeCueBall(c.cue_ball).empty())
+      {
+        played.placed = true;
+        played.x = cueBall().x();
+        played.y = cueBall().y();
+      }
+      if ((c.ball >= 0 || c.pocket >= 0) && game_->call(c.ball, c.pocket).empty())
+      {
+        played.called_ball = c.ball;
+        played.called_pocket = c.pocket;
+      }
       const physics::CueStrike<double> strike =
           opponent_noise_.isNone()
               ? c.strike
               : physics::NoisyCue(opponent_noise_, random.bits()).execute(c.strike, engine_.params().ball_radius);
+      played.strike = strike;
+      turns_.push_back(played);
       const game::Turn turn = game_->shoot(strike);
       result.info.opponent_shots += 1;
       result.info.opponent_reason = turn.ruling.reason;
@@ -220,6 +265,9 @@ private:
   double shaping_;
   int cap_;
   std::unique_ptr<game::GamePlay> game_;
+  GameStart start_;
+  std::vector<PlayedTurn> turns_;             ///< played by the last reset or step
+  std::optional<Eigen::Vector2d> placement_;  ///< where the coming shot's cue ball was placed in hand
 };
 }  // namespace
 

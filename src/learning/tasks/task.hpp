@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,10 @@ public:
   /// the task needs, an opponent's noise say): the shot to rest, its reward, and whether the
   /// episode ended. The step's `shots` count is the environment's.
   virtual StepResult shoot(const ShotPlan& plan, Random& random) = 0;
+
+  /// Games: how the episode's game started, and the turns the last reset or step played.
+  virtual std::optional<GameStart> gameStart() const { return std::nullopt; }
+  virtual std::vector<PlayedTurn> lastTurns() const { return {}; }
 
   /// The task's own features after the ball block: their names and bounds (appended to `box`)...
   virtual void addFeatures(BoxSpec& box) const = 0;
