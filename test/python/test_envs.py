@@ -99,6 +99,19 @@ def test_bad_options_name_the_option():
         TableEnv("pot", table="carom")
 
 
+def test_bad_seeds_are_refused():
+    env, envs = TableEnv("pot"), TableVectorEnv(3, "pot")
+    for bad in (-1, 2**64, 1.5, "7", True):
+        with pytest.raises(ValueError, match="seed"):
+            env.reset(seed=bad)
+        with pytest.raises(ValueError, match="seed"):
+            envs.reset(seed=bad)
+    with pytest.raises(ValueError, match="seed"):
+        envs.reset(seed=2**64 - 2)  # its third table's seed would not fit
+    env.reset(seed=2**64 - 1)
+    envs.reset(seed=2**64 - 3)
+
+
 def test_step_after_the_end_needs_a_reset():
     env = TableEnv("pot")
     env.reset(seed=0)

@@ -34,6 +34,16 @@ def engine_of(engine=None, table: str = "7ft"):
     return engine._engine
 
 
+def checked_seed(seed, tables: int = 1) -> int:
+    """`seed` as the engine takes it: an integer with seed + tables - 1 below 2**64, else ValueError."""
+    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)):
+        raise ValueError(f"seed: an integer, got {seed!r}")
+    seed = int(seed)
+    if not 0 <= seed <= 2**64 - tables:
+        raise ValueError(f"seed: must be in [0, 2**64 - {tables}], got {seed}")
+    return seed
+
+
 def spaces_of(spec: dict):
     """(observation space, action space) from _core's description of an environment's spaces."""
     Box, Dict = space_classes()
@@ -95,9 +105,7 @@ class TableEnv(_EnvBase):
         if options:
             raise ValueError(f"options: reset takes none (give them to the environment), got {sorted(options)}")
         if seed is not None:
-            seed = int(seed)
-            if not 0 <= seed < 2**64:
-                raise ValueError(f"seed: must be in [0, 2**64), got {seed}")
+            seed = checked_seed(seed)
             self._np_random = np.random.default_rng(seed)
         elif self._np_random is None:
             seed = int(self.np_random.integers(2**63))

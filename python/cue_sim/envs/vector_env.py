@@ -9,7 +9,7 @@ from typing import Any, Optional, Sequence, Union
 import numpy as np
 
 from cue_sim.envs.spaces import space_classes
-from cue_sim.envs.table_env import _core, engine_of, spaces_of
+from cue_sim.envs.table_env import _core, checked_seed, engine_of, spaces_of
 
 
 def batched(space, n: int):
@@ -49,14 +49,14 @@ class TableVectorEnv:
         one seed per table), else each stream goes on."""
         if options:
             raise ValueError(f"options: reset takes none, got {sorted(options)}")
-        if seed is not None and not isinstance(seed, (int, np.integer)):
+        if seed is not None and isinstance(seed, (list, tuple, np.ndarray)):
             seeds = list(seed)
             if len(seeds) != self.num_envs or any(s is None for s in seeds):
                 raise ValueError(f"seed: an int or {self.num_envs} ints, got {seed!r}")
             if seeds != [seeds[0] + i for i in range(self.num_envs)]:
                 raise ValueError("seed: a list must be consecutive (seed, seed + 1, ...); give the first as an int")
             seed = seeds[0]
-        return self._envs.reset(None if seed is None else int(seed)), {}
+        return self._envs.reset(None if seed is None else checked_seed(seed, self.num_envs)), {}
 
     def step(self, actions):
         """Every table plays its row of `actions` ((num_envs, action size)): (observations,
