@@ -121,7 +121,8 @@ bool TableServices::onRack(Rack::Request& request, Rack::Response& response)
   rack.jitter = request.jitter;
   rack.seed = request.seed;
   std::lock_guard<std::mutex> lock(shared_.mutex);
-  answer(shared_.live->rack(rack, toStamp(shared_.now())), response);
+  response.stamp = shared_.now();
+  answer(shared_.live->rack(rack, toStamp(response.stamp)), response);
   return true;
 }
 

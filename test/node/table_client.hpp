@@ -55,6 +55,15 @@ public:
     return srv.response;
   }
 
+  /// The first ~state that shows a rack the node answered with `racked` (at rest, as a rack is).
+  /// Under sim time the node's clock runs ahead of this client's: a state stamped after the
+  /// client's now may still be from before the rack, so the wait is for the rack's own stamp.
+  cue_sim::TableStateConstPtr afterRack(const cue_sim::Rack::Response& racked)
+  {
+    EXPECT_TRUE(racked.success) << racked.message;
+    return stateAfter(racked.stamp);
+  }
+
   static cue_sim::Shot shot(int ball, double speed, double phi, double theta = 0, double a = 0, double b = 0)
   {
     cue_sim::Shot s;
@@ -155,6 +164,24 @@ public:
     }
     ADD_FAILURE() << node_ << ": balls still moving after " << timeout << " s";
     return freshState();
+  }
+
+  /// The first ~state at rest stamped after `stamp` (a strike's, which the node reported): under
+  /// sim time a state at rest stamped after this client's clock may still be from before the
+  /// strike. Waits at most `timeout` seconds of wall time and kGenerousWait more.
+  cue_sim::TableStateConstPtr atRestAfter(const ros::Time& stamp, double timeout)
+  {
+    cue_sim::TableStateConstPtr rest;
+    if (waitFor(
+            [&] {
+              std::lock_guard<std::mutex> lock(mutex_);
+              rest = last_state_;
+              return rest && rest->header.stamp > stamp && !rest->moving;
+            },
+            timeout + kGenerousWait))
+      return rest;
+    ADD_FAILURE() << node_ << ": no ~state at rest after " << stamp << " within " << timeout << " s";
+    return boost::make_shared<cue_sim::TableState>();
   }
 
   static std::map<int, cue_sim::BallState> byId(const std::vector<cue_sim::BallState>& balls)

@@ -264,7 +264,7 @@ TEST(Game, AStartedGameRefereesStrikesPublishesItsStateAndRefusesFreeEdits)
   const auto free_play = client.strike(TableClient::shot(0, 1.0, 0));
   EXPECT_TRUE(free_play.success) << free_play.message;
   EXPECT_FALSE(free_play.ruling.refereed);
-  client.atRest(kRestTimeout);
+  client.atRestAfter(free_play.stamp, kRestTimeout);
 }
 
 TEST(Game, AScratchGivesBallInHandAnywhereWhichPlaceCueBallChecks)

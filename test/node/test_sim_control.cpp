@@ -176,8 +176,7 @@ TEST_F(SimControlTest, PauseFreezesThePhysicsWhileTheClockRunsAndAStepMovesItByT
 
 TEST_F(SimControlTest, SetStatePlacesMovingBallsAndRefusesBadOnesByField)
 {
-  ASSERT_TRUE(table_.rack("custom", {0, 1}, {{-0.5, 0.0}, {0.3, 0.0}}).success);
-  const cue_sim::TableState before = *table_.atRest(10);
+  const cue_sim::TableState before = *table_.afterRack(table_.rack("custom", {0, 1}, {{-0.5, 0.0}, {0.3, 0.0}}));
   cue_sim::BallState cue, other;
   cue.id = 0;
   cue.position.x = -0.2;
@@ -226,8 +225,11 @@ TEST_F(SimControlTest, SetStatePlacesMovingBallsAndRefusesBadOnesByField)
 
 TEST_F(SimControlTest, OneBallIsPlacedMovedOrRemovedAndTheOthersStay)
 {
-  ASSERT_TRUE(table_.rack("custom", {0, 1, 2}, {{-0.5, 0.0}, {0.3, 0.0}, {0.3, 0.2}}).success);
-  const auto before = TableClient::byId(table_.atRest(10)->balls);
+  // The state after the rack's own stamp (under sim time a state at rest stamped after this
+  // client's clock could still be the previous test's table).
+  const auto before = TableClient::byId(
+      table_.afterRack(table_.rack("custom", {0, 1, 2}, {{-0.5, 0.0}, {0.3, 0.0}, {0.3, 0.2}}))->balls);
+  ASSERT_EQ(before.size(), 3u);
   ros::ServiceClient place = nh_.serviceClient<cue_sim::PlaceBall>("/table/place_ball");
   ros::ServiceClient remove = nh_.serviceClient<cue_sim::RemoveBall>("/table/remove_ball");
   cue_sim::PlaceBall in_hand;
@@ -273,8 +275,8 @@ TEST_F(SimControlTest, OneBallIsPlacedMovedOrRemovedAndTheOthersStay)
 TEST_F(SimControlTest, EveryBallTransformInTheBagIsTheExactTrajectoryAtItsStamp)
 {
   const std::vector<int> ids = {0, 1, 2, 3};
-  ASSERT_TRUE(table_.rack("custom", ids, {{-0.6, 0.0}, {0.0, 0.02}, {0.15, -0.2}, {0.3, 0.25}}).success);
-  const cue_sim::TableState rack = *table_.atRest(10);
+  const cue_sim::TableState rack =
+      *table_.afterRack(table_.rack("custom", ids, {{-0.6, 0.0}, {0.0, 0.02}, {0.15, -0.2}, {0.3, 0.25}}));
   ASSERT_EQ(rack.balls.size(), ids.size());
   const std::string bag_path = std::string(CUE_SIM_TEST_DIR) + "/sim_shot_test.bag";
   BagRecording recording(bag_path, std::string(CUE_SIM_TEST_DIR) + "/sim_record_test.log");
@@ -289,7 +291,7 @@ TEST_F(SimControlTest, EveryBallTransformInTheBagIsTheExactTrajectoryAtItsStamp)
   const cue_sim::Shot shot = TableClient::shot(0, 1.5, 0.05, 0.1, 0.2, -0.1);
   const cue_sim::Strike::Response struck = table_.strike(shot);
   ASSERT_TRUE(struck.success) << struck.message;
-  table_.atRest(60);
+  table_.atRestAfter(struck.stamp, 60);
   // Rosbag has the shot, and tf from after the rest (a connection delivers in order).
   ASSERT_TRUE(receivedBy("/record", "/table/shots", shots_before + 1));
   ASSERT_TRUE(receivedBy("/record", "/table/markers", markers_before + 1));
@@ -393,14 +395,14 @@ TEST_F(SimControlTest, TheCameraFollowsSimTimeAndItsGroundTruthIsTheExactTraject
   // ~camera/rate of sim time or slower, never two frames within half a period, each ball's
   // position at its stamp (the exposure's middle) the exact trajectory's.
   const std::vector<int> ids = {0, 1, 2, 3};
-  ASSERT_TRUE(table_.rack("custom", ids, {{-0.6, 0.0}, {0.0, 0.02}, {0.15, -0.2}, {0.3, 0.25}}).success);
-  const cue_sim::TableState rack = *table_.atRest(10);
+  const cue_sim::TableState rack =
+      *table_.afterRack(table_.rack("custom", ids, {{-0.6, 0.0}, {0.0, 0.02}, {0.15, -0.2}, {0.3, 0.25}}));
   GroundTruths truths(nh_);
   ASSERT_TRUE(truths.connected());
   const cue_sim::Shot shot = TableClient::shot(0, 1.5, 0.05, 0.1, 0.2, -0.1);
   const cue_sim::Strike::Response struck = table_.strike(shot);
   ASSERT_TRUE(struck.success) << struck.message;
-  table_.atRest(60);
+  table_.atRestAfter(struck.stamp, 60);
   // Ten frames from the strike on, however fast the sim runs against the camera's thread, which
   // yields to the node's publishing thread (as fast as possible, most come after the rest).
   ASSERT_TRUE(waitFor([&] { return truths.since(struck.stamp).size() >= 10; })) << "ten frames since the strike";
@@ -420,7 +422,9 @@ TEST_F(SimControlTest, TheCameraFollowsSimTimeAndItsGroundTruthIsTheExactTraject
     if (truth.header.stamp - ros::Duration(exposure / 2) < struck.stamp)
       continue;
     if (!previous.isZero())
+    {
       EXPECT_GE((truth.header.stamp - previous).toSec(), 0.5 / rate) << "never two frames within half a period";
+    }
     previous = truth.header.stamp;
     advance(engine, state, (truth.header.stamp - struck.stamp).toSec());
     const auto balls = engine.snapshot(state);
