@@ -47,6 +47,8 @@ class ActionLayout
 public:
   explicit ActionLayout(const EnvOptions& options);
   const BoxSpec& box() const { return box_; }
+  /// Whether the action aims at a ball and a pocket (and needs AimContext's choices).
+  bool relative() const { return relative_; }
   /// Empty if `action` (box().size() values) is inside the box, else which component is not.
   std::string whyInvalid(const double* action, std::size_t size) const;
   /// The shot `action` plans from the table in `aim`. A relative action with no ball to choose

@@ -124,6 +124,11 @@ const physics::TableState<double>& Environment::restTable() const
   return task_->restTable();
 }
 
+std::string Environment::whyActionInvalid(const double* action, std::size_t size) const
+{
+  return layout_->whyInvalid(action, size);
+}
+
 std::optional<GameStart> Environment::gameStart() const
 {
   return task_->gameStart();
@@ -152,7 +157,7 @@ StepResult Environment::step(const double* action, std::size_t size, const Obser
   if (done_)
     throw std::logic_error("step: the episode is over (terminated or truncated); call reset first");
   const ActionLayout& layout = *layout_;
-  if (const std::string why = layout.whyInvalid(action, size); !why.empty())
+  if (const std::string why = whyActionInvalid(action, size); !why.empty())
     throw std::invalid_argument(why);
   double u = 0, v = 0;
   if (layout.placement(action, u, v))
@@ -161,7 +166,8 @@ StepResult Environment::step(const double* action, std::size_t size, const Obser
   aim.table = &task_->table();
   aim.model = &engine_->table();
   aim.ball_radius = engine_->params().ball_radius;
-  aim.choices = task_->aimChoices();
+  if (layout.relative())
+    aim.choices = task_->aimChoices();  // only a relative action chooses among them
   ShotPlan plan = layout.plan(action, aim);
   if (!options_.noise.isNone())
     plan.strike = cue_.execute(plan.strike, engine_->params().ball_radius);

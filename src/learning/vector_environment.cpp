@@ -3,8 +3,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "learning/actions.hpp"
-
 namespace cue_sim
 {
 namespace learning
@@ -24,7 +22,6 @@ VectorEnvironment::VectorEnvironment(std::shared_ptr<const physics::Engine<doubl
                                 std::to_string(count));
   const Environment first(engine, options);
   tables_.assign(static_cast<std::size_t>(count), first);
-  needs_reset_.assign(static_cast<std::size_t>(count), 1);
   pool_ = std::make_unique<physics::ThreadPool>(threads);
 }
 
@@ -43,7 +40,6 @@ void VectorEnvironment::reset(std::optional<std::uint64_t> seed, const VectorBuf
 {
   pool_->parallelFor(tables_.size(), [&](std::size_t i) {
     tables_[i].reset(seed ? std::optional<std::uint64_t>(*seed + i) : std::nullopt, rowOf(out, i));
-    needs_reset_[i] = 0;
   });
 }
 
@@ -52,19 +48,18 @@ void VectorEnvironment::step(const double* actions, std::size_t rows, std::size_
   if (rows != tables_.size())
     throw std::invalid_argument("actions: one row per table, " + std::to_string(tables_.size()) + " rows, got " +
                                 std::to_string(rows));
-  const ActionLayout layout(tables_.front().options());
   for (std::size_t i = 0; i < rows; ++i)
-    if (const std::string why = layout.whyInvalid(actions + i * columns, columns); !why.empty())
+    if (const std::string why = tables_.front().whyActionInvalid(actions + i * columns, columns); !why.empty())
       throw std::invalid_argument("row " + std::to_string(i) + ": " + why);
   pool_->parallelFor(tables_.size(), [&](std::size_t i) {
     Environment& table = tables_[i];
     StepResult result;
-    const bool resetting = needs_reset_[i] || table.done();
+    // A table whose episode ended at the last step (or never began) is reset instead.
+    const bool resetting = table.done();
     if (resetting)
       table.reset(std::nullopt, rowOf(out, i));
     else
       result = table.step(actions + i * columns, columns, rowOf(out, i));
-    needs_reset_[i] = result.terminated || result.truncated;
     if (out.rewards)
       out.rewards[i] = result.reward;
     if (out.terminated)

@@ -346,6 +346,15 @@ struct PyVectorEnvironment
 void bindLearning(py::module_& m)
 {
   m.def("task_names", &learning::taskNames);
+  m.def("default_options", [] {
+    const EnvOptions o;
+    return py::dict(py::arg("balls") = o.balls, py::arg("target") = o.target, py::arg("max_shots") = o.max_shots,
+                    py::arg("rack") = o.rack, py::arg("action") = o.action, py::arg("spin") = o.spin,
+                    py::arg("opponent") = o.opponent, py::arg("opponent_skill") = o.opponent_skill,
+                    py::arg("opponent_noise") = o.opponent_noise, py::arg("shaping") = o.shaping,
+                    py::arg("noise") = !o.noise.isNone(), py::arg("observation") = o.observation,
+                    py::arg("pixel_width") = o.pixel_width, py::arg("pixel_height") = o.pixel_height);
+  });
   py::class_<PyEnvironment>(m, "Env")
       .def(py::init<std::shared_ptr<Engine>, const py::dict&>(), py::arg("engine"), py::arg("options"))
       .def_property_readonly("spaces", [](const PyEnvironment& e) { return spacesDict(e.env.spaces()); })

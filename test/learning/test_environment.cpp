@@ -553,7 +553,6 @@ void checkGame(const std::string& rules, const std::string& opponent, std::uint6
   Random random(seed);
   env.reset(seed, {state.data(), nullptr});
   const std::size_t features = 3 * kBallSlots;
-  double total = 0;
   for (int step = 0; step < 400 && !env.done(); ++step)
   {
     for (std::size_t i = 0; i < state.size(); ++i)
@@ -583,7 +582,6 @@ void checkGame(const std::string& rules, const std::string& opponent, std::uint6
     }
     else
       EXPECT_LE(std::abs(r.reward), 0.1 * 16 + 1e-12);
-    total += r.reward;
   }
   EXPECT_TRUE(env.done()) << rules << " did not end in 400 shots";
 }

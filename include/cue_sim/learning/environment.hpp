@@ -160,6 +160,9 @@ public:
   /// nothing, for a wrong size, a NaN or a value outside the action's box, naming it; and
   /// std::logic_error if the episode is over (reset first).
   StepResult step(const double* action, std::size_t size, const ObservationBuffers& out);
+  /// Empty if `action` (`size` values) is inside the action's box, else which component is not
+  /// and why (what step() refuses with).
+  std::string whyActionInvalid(const double* action, std::size_t size) const;
   /// Whether the episode has ended (terminated or truncated): step() needs a reset first.
   bool done() const { return done_; }
   /// The cue ball's strike the last step played, as executed (the action's, noise included):

@@ -50,7 +50,6 @@ private:
   ObservationBuffers rowOf(const VectorBuffers& out, std::size_t i) const;
 
   std::vector<Environment> tables_;
-  std::vector<std::uint8_t> needs_reset_;
   std::unique_ptr<physics::ThreadPool> pool_;
 };
 

@@ -20,10 +20,8 @@ except ImportError:
 #: The size render() draws at [px].
 RENDER_SIZE = (640, 360)
 
-#: Every task's options and their defaults (doc/learning.md describes each).
-DEFAULT_OPTIONS = {"balls": 2, "target": "any", "max_shots": 0, "rack": "nine", "action": "absolute", "spin": False,
-                   "opponent": "planner", "opponent_skill": 1.0, "opponent_noise": True, "shaping": 0.1,
-                   "noise": True, "observation": "state", "pixel_width": 96, "pixel_height": 48}
+#: Every task's options and their defaults (doc/learning.md describes each), as the C++ declares them.
+DEFAULT_OPTIONS = dict(_core.default_options())
 
 
 def engine_of(engine=None, table: str = "7ft"):
