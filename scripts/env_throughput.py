@@ -6,13 +6,19 @@ the engine's own cost for the same work:
     second on every core, beside one C++ environment's steps per second times the cores;
   - a single environment's Python overhead: TableEnv.step and reset from Python against the same
     episodes stepped in C++ alone (cue_sim._core.Env.time_steps);
-  - the built-in opponent's cost per turn (eight_ball against the planner, less self-play).
+  - the built-in opponent's cost per turn (eight_ball against the planner, less self-play);
+  - with --instructions, the single environment's Python overhead in instructions, which a busy or
+    drifting machine does not change: callgrind counts a loop of TableEnv.step and reset and the
+    same episodes in C++ alone, each at two lengths, and the difference per step is the figure.
 
-    /usr/bin/python3 scripts/env_throughput.py [--quick] [--threads N]
+    /usr/bin/python3 scripts/env_throughput.py [--quick] [--threads N] [--instructions]
 """
 import argparse
 import os
+import re
+import shutil
 import statistics
+import subprocess
 import sys
 import time
 
@@ -81,6 +87,59 @@ def single_costs(steps, repeats, **options):
     return statistics.median(native), statistics.median(ratios), statistics.median(own_ratios)
 
 
+#: The tasks measured: (name, options, tables of the vector environment).
+TASKS = [("pot", dict(task="pot"), 1024), ("pot, 96x48 pixels", dict(task="pot", observation="pixels"), 512),
+         ("position", dict(task="position", balls=4), 512), ("break", dict(task="break"), 256),
+         ("nine_ball self-play", dict(task="nine_ball", opponent="self"), 512),
+         ("eight_ball self-play", dict(task="eight_ball", opponent="self"), 512),
+         ("eight_ball vs planner", dict(task="eight_ball", opponent="planner"), 128)]
+
+
+def run_counted_loop(name, mode, steps):
+    """What the child under callgrind runs: `steps` steps of task `name`, in C++ alone (mode
+    "native") or from Python (mode "python")."""
+    options = next(o for n, o, _ in TASKS if n == name)
+    env = TableEnv(**options)
+    actions = random_actions(env.action_space, steps, 1)
+    if mode == "native":
+        env._env.time_steps(actions, 5)
+    else:
+        env.reset(seed=5)
+        _python_loop(env, actions)
+
+
+def counted_instructions(name, mode, steps):
+    """Instructions callgrind counts in a child that runs run_counted_loop(name, mode, steps)."""
+    command = ["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null", sys.executable, __file__,
+               "--counted-loop", name, mode, str(steps)]
+    # Symbols bound at load: lazy binding would count a lookup at each first call.
+    done = subprocess.run(command, capture_output=True, text=True, env=dict(os.environ, LD_BIND_NOW="1"))
+    found = re.search(r"I\s+refs:\s+([\d,]+)", done.stderr)
+    if done.returncode != 0 or not found:
+        raise RuntimeError(f"callgrind on {name} ({mode}) failed:\n{done.stderr[-2000:]}")
+    return int(found.group(1).replace(",", ""))
+
+
+def instruction_overheads(quick):
+    """Per task: instructions a step in C++ alone, and Python's share over them (a fraction)."""
+    if shutil.which("valgrind") is None:
+        raise SystemExit("--instructions needs valgrind (scripts/install_deps.sh installs it)")
+    print(f"{'task':<24} {'C++ alone [instr/step]':>23} {'Python overhead':>16}")
+    for name, options, _ in TASKS[:1] if quick else TASKS:
+        if "planner" in name:
+            continue  # its turn costs a million instructions; Python's share is lost in them
+        cheap = options["task"] in ("pot", "position")
+        lengths = (100, 300) if quick else ((500, 3000) if cheap else (100, 600))
+        print(f"{name:<24}", end=" ", flush=True)
+        per_step = {}
+        for mode in ("native", "python"):
+            short, long = (counted_instructions(name, mode, n) for n in lengths)
+            per_step[mode] = (long - short) / (lengths[1] - lengths[0])
+        print(f"{per_step['native']:23,.0f} {100 * (per_step['python'] / per_step['native'] - 1):15.1f}%", flush=True)
+    print("(callgrind's instruction counts: TableEnv.step and reset in a learner's loop, against the same episodes"
+          " in cue_sim._core.Env.time_steps; each the difference of two loop lengths, so that loading is not counted)")
+
+
 def opponent_turns(options, steps):
     """Mean opponent shots per agent step."""
     env = TableEnv(**options)
@@ -99,18 +158,23 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="a few steps of each (CI: that it runs)")
     parser.add_argument("--threads", type=int, default=0, help="threads of the vector environments (0: every core)")
+    parser.add_argument("--instructions", action="store_true",
+                        help="the single environment's Python overhead in callgrind's instruction counts")
+    parser.add_argument("--counted-loop", nargs=3, metavar=("TASK", "MODE", "STEPS"), help=argparse.SUPPRESS)
     args = parser.parse_args()
+    if args.counted_loop:
+        name, mode, steps = args.counted_loop
+        run_counted_loop(name, mode, int(steps))
+        return 0
+    if args.instructions:
+        instruction_overheads(args.quick)
+        return 0
     cores = args.threads or os.cpu_count()
     vector_steps, single_steps, repeats = (3, 500, 2) if args.quick else (20, 2000, 31)
-    tasks = [("pot", dict(task="pot"), 1024), ("pot, 96x48 pixels", dict(task="pot", observation="pixels"), 512),
-             ("position", dict(task="position", balls=4), 512), ("break", dict(task="break"), 256),
-             ("nine_ball self-play", dict(task="nine_ball", opponent="self"), 512),
-             ("eight_ball self-play", dict(task="eight_ball", opponent="self"), 512),
-             ("eight_ball vs planner", dict(task="eight_ball", opponent="planner"), 128)]
     print(f"{'task':<24} {'vector steps/s':>15} {'C++ alone x ' + str(cores) + ' cores':>22} "
           f"{'Python overhead':>16} {'without the loop':>17}")
     costs = {}
-    for name, options, num_envs in tasks:
+    for name, options, num_envs in TASKS:
         print(f"{name:<24}", end=" ", flush=True)
         rate = vector_rate(num_envs if not args.quick else 16, args.threads, vector_steps, **options)
         native, overhead, own = single_costs(single_steps // (10 if "planner" in name else 1), repeats, **options)

@@ -5,15 +5,20 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
+#include <initializer_list>
 #include <memory>
+#include <limits>
 #include <optional>
+#include <random>
 #include <stdexcept>
 #include <string>
 
 #include "cue_sim/learning/environment.hpp"
 #include "cue_sim/learning/vector_environment.hpp"
+#include "python/fast_method.hpp"
 #include "python/state_arrays.hpp"
 
 namespace py = pybind11;
@@ -96,6 +101,28 @@ py::dict spacesDict(const learning::Spaces& s)
                   py::arg("pixel_width") = s.pixel_width, py::arg("pixel_height") = s.pixel_height);
 }
 
+/// A new C-contiguous NumPy array of `typenum` (numpy's NPY_* number) and shape `dims`, made
+/// through numpy's C API: pybind11's array constructor builds shape and stride vectors on the heap
+/// first, a cost worth saving on a step that takes some 10 us.
+py::object newArray(int typenum, std::initializer_list<py::ssize_t> dims)
+{
+  auto& api = py::detail::npy_api::get();
+  std::array<Py_intptr_t, 4> shape{};
+  std::copy(dims.begin(), dims.end(), shape.begin());
+  PyObject* descr = api.PyArray_DescrFromType_(typenum);  // the new array takes this reference
+  PyObject* array = api.PyArray_NewFromDescr_(api.PyArray_Type_, descr, static_cast<int>(dims.size()), shape.data(),
+                                              nullptr, nullptr, 0, nullptr);
+  if (!array)
+    throw py::error_already_set();
+  return py::reinterpret_steal<py::object>(array);
+}
+
+template <typename T>
+T* dataOf(const py::object& array)
+{
+  return reinterpret_cast<T*>(py::detail::array_proxy(array.ptr())->data);
+}
+
 /// Observation arrays for `rows` tables (rows 0: one table, no leading axis), or None where the
 /// observation lacks them.
 struct Observations
@@ -113,59 +140,114 @@ struct Observations
 
   Observations(const learning::Spaces& s, std::size_t rows)
   {
-    const auto lead = [rows](std::vector<py::ssize_t> shape) {
-      if (rows > 0)
-        shape.insert(shape.begin(), static_cast<py::ssize_t>(rows));
-      return shape;
-    };
+    using Api = py::detail::npy_api;
+    const auto n = static_cast<py::ssize_t>(rows);
     if (s.state.size() > 0)
     {
       const auto size = static_cast<py::ssize_t>(s.state.size());
-      py::array_t<float> a =
-          rows > 0 ? py::array_t<float>({static_cast<py::ssize_t>(rows), size}) : py::array_t<float>(size);
-      buffers.state = a.mutable_data();
-      state = a;
+      state = rows > 0 ? newArray(Api::NPY_FLOAT_, {n, size}) : newArray(Api::NPY_FLOAT_, {size});
+      buffers.state = dataOf<float>(state);
     }
     if (s.pixel_width > 0)
     {
-      py::array_t<std::uint8_t> a(lead({s.pixel_height, s.pixel_width, 3}));
-      buffers.pixels = a.mutable_data();
-      pixels = a;
+      const py::ssize_t h = s.pixel_height, w = s.pixel_width;
+      pixels = rows > 0 ? newArray(Api::NPY_UBYTE_, {n, h, w, 3}) : newArray(Api::NPY_UBYTE_, {h, w, 3});
+      buffers.pixels = dataOf<std::uint8_t>(pixels);
     }
   }
 };
 
+/// The keys of a step's info: what every task tells, then what games tell, then position's.
+enum InfoKey
+{
+  kShots,
+  kPocketed,
+  kScratch,
+  kFirstContact,
+  kFoul,
+  kEvents,
+  kShotTime,
+  kReason,
+  kPlayer,
+  kNextPlayer,
+  kWinner,
+  kOpponentShots,
+  kOpponentReason,
+  kOpenShots,
+  kInfoKeys
+};
+constexpr std::array<const char*, kInfoKeys> kInfoKeyNames{
+    "shots",  "pocketed", "scratch",     "first_contact", "foul",           "events",          "shot_time",
+    "reason", "player",   "next_player", "winner",        "opponent_shots", "opponent_reason", "open_shots"};
+
+/// The keys as Python strings, made once and kept for the module's life.
+const std::array<py::str, kInfoKeys>& infoKeys()
+{
+  static const auto* keys = [] {
+    auto* k = new std::array<py::str, kInfoKeys>;
+    for (std::size_t i = 0; i < k->size(); ++i)
+      (*k)[i] = py::str(kInfoKeyNames[i]);
+    return k;
+  }();
+  return *keys;
+}
+
+/// A dict of a step's info keys, each None: a step's info is a copy, filled in. A copy of a dict
+/// keeps its size and its keys' hashes, where a new dict would grow twice on the way to its 8 to
+/// 14 keys; a cheap shot's step costs some 10 us, and this is the larger part of Python's share.
+const py::dict& infoTemplate(bool game, bool position)
+{
+  static std::array<py::dict*, 4> templates{};  // made once, kept for the module's life
+  py::dict*& t = templates[(game ? 2 : 0) + (position ? 1 : 0)];
+  if (!t)
+  {
+    t = new py::dict;
+    for (int key = 0; key < kInfoKeys; ++key)
+      if ((key < kPlayer) || (game && key < kOpenShots) || (position && key == kOpenShots))
+        (*t)[infoKeys()[static_cast<std::size_t>(key)]] = py::none();
+  }
+  return *t;
+}
+
+/// d[key] = value, taking `value`'s reference.
+void putInfo(PyObject* d, int key, PyObject* value)
+{
+  const auto owned = py::reinterpret_steal<py::object>(value);
+  if (!value || PyDict_SetItem(d, infoKeys()[static_cast<std::size_t>(key)].ptr(), value) != 0)
+    throw py::error_already_set();
+}
+
+PyObject* stringObject(const std::string& s)
+{
+  return PyUnicode_DecodeUTF8(s.data(), static_cast<Py_ssize_t>(s.size()), "replace");
+}
+
 /// A step's info as a dict: what every task tells, what games tell (`game`) and what position
-/// tells (`position`). Its keys are made once: a step of a cheap shot costs some 12 us, so the
-/// dict's making is a part of Python's share worth keeping small.
+/// tells (`position`).
 py::dict infoDict(const learning::StepInfo& info, bool game, bool position)
 {
-  static const auto* keys =
-      new std::array<py::str, 14>{py::str("shots"),           py::str("pocketed"),  py::str("scratch"),
-                                  py::str("first_contact"),   py::str("foul"),      py::str("events"),
-                                  py::str("shot_time"),       py::str("reason"),    py::str("player"),
-                                  py::str("next_player"),     py::str("winner"),    py::str("opponent_shots"),
-                                  py::str("opponent_reason"), py::str("open_shots")};
-  const auto& k = *keys;
-  py::dict d;
-  d[k[0]] = info.shots;
-  d[k[1]] = info.pocketed;
-  d[k[2]] = info.scratch;
-  d[k[3]] = info.first_contact;
-  d[k[4]] = info.foul;
-  d[k[5]] = info.events;
-  d[k[6]] = info.shot_time;
-  d[k[7]] = info.reason;
+  auto d = py::reinterpret_steal<py::dict>(PyDict_Copy(infoTemplate(game, position).ptr()));
+  if (!d)
+    throw py::error_already_set();
+  PyObject* p = d.ptr();
+  putInfo(p, kShots, PyLong_FromLong(info.shots));
+  putInfo(p, kPocketed, PyLong_FromLong(info.pocketed));
+  putInfo(p, kScratch, PyBool_FromLong(info.scratch));
+  putInfo(p, kFirstContact, PyLong_FromLong(info.first_contact));
+  putInfo(p, kFoul, PyBool_FromLong(info.foul));
+  putInfo(p, kEvents, PyLong_FromLong(info.events));
+  putInfo(p, kShotTime, PyFloat_FromDouble(info.shot_time));
+  putInfo(p, kReason, stringObject(info.reason));
   if (game)
   {
-    d[k[8]] = info.player;
-    d[k[9]] = info.next_player;
-    d[k[10]] = info.winner;
-    d[k[11]] = info.opponent_shots;
-    d[k[12]] = info.opponent_reason;
+    putInfo(p, kPlayer, PyLong_FromLong(info.player));
+    putInfo(p, kNextPlayer, PyLong_FromLong(info.next_player));
+    putInfo(p, kWinner, PyLong_FromLong(info.winner));
+    putInfo(p, kOpponentShots, PyLong_FromLong(info.opponent_shots));
+    putInfo(p, kOpponentReason, stringObject(info.opponent_reason));
   }
   if (position)
-    d[k[13]] = info.open_shots;
+    putInfo(p, kOpenShots, PyLong_FromLong(info.open_shots));
   return d;
 }
 
@@ -180,31 +262,81 @@ py::array_t<double, py::array::c_style | py::array::forcecast> actionRows(const 
   return Rows::ensure(actions);
 }
 
+/// `seed` as the engine takes it for `tables` tables (table i gets seed + i): an integer (not a
+/// bool) with seed + tables - 1 below 2**64; else ValueError naming the value.
+std::uint64_t checkedSeed(PyObject* seed, std::uint64_t tables)
+{
+  if (PyBool_Check(seed) || !PyIndex_Check(seed))
+    throw std::invalid_argument("seed: an integer, got " + std::string(py::repr(seed)));
+  const auto index = py::reinterpret_steal<py::object>(PyNumber_Index(seed));
+  if (!index)
+    throw py::error_already_set();
+  const unsigned long long value = PyLong_AsUnsignedLongLong(index.ptr());
+  const bool overflow = value == static_cast<unsigned long long>(-1) && PyErr_Occurred();
+  if (overflow)
+    PyErr_Clear();
+  if (overflow || value > std::numeric_limits<std::uint64_t>::max() - (tables - 1))
+    throw std::invalid_argument("seed: must be in [0, 2**64 - " + std::to_string(tables) + "], got " +
+                                std::string(py::str(index)));
+  return value;
+}
+
+/// A seed from the operating system's entropy: what a fresh environment's first unseeded reset
+/// plays from, as Gymnasium's environments do.
+std::uint64_t drawnSeed()
+{
+  std::random_device entropy;
+  return (static_cast<std::uint64_t>(entropy()) << 32) ^ entropy();
+}
+
 struct PyEnvironment
 {
   std::shared_ptr<const Engine> engine;
   learning::Environment env;
 
+  bool game_info, position_info;  ///< what the task's info tells beside every task's
+
   PyEnvironment(std::shared_ptr<Engine> e, const py::dict& options)
-    : engine(std::move(e)), env(engine, optionsFrom(options))
+    : engine(std::move(e)),
+      env(engine, optionsFrom(options)),
+      game_info(env.options().task == "eight_ball" || env.options().task == "nine_ball"),
+      position_info(env.options().task == "position")
   {
   }
 
-  /// The first observation of a new episode.
-  py::object reset(std::optional<std::uint64_t> seed)
+  std::uint64_t seeded_resets = 0;  ///< resets that seeded the episodes' stream
+  std::uint64_t last_seed = 0;      ///< ... and the seed of the last of them
+
+  /// Gymnasium's reset: (the first observation, {}). `seed`: None (the stream goes on; a fresh
+  /// environment's first reset draws one) or an integer in [0, 2**64); `options`: None or empty
+  /// (the options are the environment's). Nothing changes when either is refused.
+  py::tuple reset(PyObject* seed, PyObject* options)
   {
+    std::optional<std::uint64_t> s;
+    if (seed != Py_None)
+      s = checkedSeed(seed, 1);
+    if (options != Py_None && (!PyDict_Check(options) || PyDict_Size(options) != 0))
+      throw std::invalid_argument("options: reset takes none (give them to the environment), got " +
+                                  std::string(py::str(py::handle(options))));
+    if (!s && seeded_resets == 0)
+      s = drawnSeed();
     Observations obs(env.spaces(), 0);
     {
-      py::gil_scoped_release release;
-      env.reset(seed, obs.buffers);
+      ReleasedGil released;
+      env.reset(s, obs.buffers);
     }
-    return obs.value();
+    if (s)
+    {
+      ++seeded_resets;
+      last_seed = *s;
+    }
+    return py::make_tuple(obs.value(), py::dict());
   }
 
   /// Gymnasium's step: (observation, reward, terminated, truncated, info).
-  py::tuple step(const py::object& action)
+  py::tuple step(PyObject* action)
   {
-    const auto a = actionRows(action);
+    const auto a = actionRows(py::reinterpret_borrow<py::object>(action));
     if (!a || a.ndim() != 1)
     {
       std::string names;
@@ -216,12 +348,10 @@ struct PyEnvironment
     Observations obs(env.spaces(), 0);
     learning::StepResult r;
     {
-      py::gil_scoped_release release;
+      ReleasedGil released;
       r = env.step(a.data(), static_cast<std::size_t>(a.shape(0)), obs.buffers);
     }
-    const std::string& task = env.options().task;
-    return py::make_tuple(obs.value(), r.reward, r.terminated, r.truncated,
-                          infoDict(r.info, task == "eight_ball" || task == "nine_ball", task == "position"));
+    return py::make_tuple(obs.value(), r.reward, r.terminated, r.truncated, infoDict(r.info, game_info, position_info));
   }
 
   /// The same episodes as reset(seed) and step() over the rows of `actions` (reset when one ends)
@@ -256,6 +386,60 @@ struct PyEnvironment
     return out;
   }
 };
+
+/// Env.step(action): CPython's own method (fast_method.hpp), the call a learner makes most.
+PyObject* envStep(PyObject* self, PyObject* action) noexcept
+{
+  try
+  {
+    return instanceOf<PyEnvironment>(self).step(action).release().ptr();
+  }
+  catch (...)
+  {
+    setPythonError();
+    return nullptr;
+  }
+}
+
+/// Env.reset(*, seed=None, options=None): CPython's own method, with Gymnasium's keywords.
+PyObject* envReset(PyObject* self, PyObject* const* args, Py_ssize_t nargsf, PyObject* kwnames) noexcept
+{
+  try
+  {
+    const Py_ssize_t positional = PyVectorcall_NARGS(nargsf);
+    if (positional != 0)
+      throw py::type_error("reset: takes seed and options by keyword only, got " + std::to_string(positional) +
+                           " positional arguments");
+    PyObject* seed = Py_None;
+    PyObject* options = Py_None;
+    const Py_ssize_t keywords = kwnames ? PyTuple_GET_SIZE(kwnames) : 0;
+    for (Py_ssize_t k = 0; k < keywords; ++k)
+    {
+      PyObject* name = PyTuple_GET_ITEM(kwnames, k);
+      if (PyUnicode_CompareWithASCIIString(name, "seed") == 0)
+        seed = args[k];
+      else if (PyUnicode_CompareWithASCIIString(name, "options") == 0)
+        options = args[k];
+      else
+        throw py::type_error("reset: no argument " + std::string(py::str(name)) + "; it takes seed and options");
+    }
+    return instanceOf<PyEnvironment>(self).reset(seed, options).release().ptr();
+  }
+  catch (...)
+  {
+    setPythonError();
+    return nullptr;
+  }
+}
+
+PyMethodDef envStepDef{
+    "step", reinterpret_cast<PyCFunction>(envStep), METH_O,
+    "step($self, action, /)\n--\n\nPlays one shot: (observation, reward, terminated, truncated, info). "
+    "ValueError names what is wrong with an action."};
+PyMethodDef envResetDef{
+    "reset", reinterpret_cast<PyCFunction>(reinterpret_cast<void (*)()>(envReset)), METH_FASTCALL | METH_KEYWORDS,
+    "reset($self, /, *, seed=None, options=None)\n--\n\nA new episode: (observation, {}). The same seed "
+    "gives the same episode; without one the environment's stream goes on."};
 
 struct PyVectorEnvironment
 {
@@ -355,14 +539,22 @@ void bindLearning(py::module_& m)
                     py::arg("noise") = !o.noise.isNone(), py::arg("observation") = o.observation,
                     py::arg("pixel_width") = o.pixel_width, py::arg("pixel_height") = o.pixel_height);
   });
-  py::class_<PyEnvironment>(m, "Env")
-      .def(py::init<std::shared_ptr<Engine>, const py::dict&>(), py::arg("engine"), py::arg("options"))
+  m.def(
+      "checked_seed",
+      [](const py::object& seed, std::uint64_t tables) {
+        if (tables == 0)
+          throw std::invalid_argument("tables: at least 1");
+        return checkedSeed(seed.ptr(), tables);
+      },
+      py::arg("seed"), py::arg("tables") = 1);
+  py::class_<PyEnvironment> env(m, "Env");
+  env.def(py::init<std::shared_ptr<Engine>, const py::dict&>(), py::arg("engine"), py::arg("options"))
       .def_property_readonly("spaces", [](const PyEnvironment& e) { return spacesDict(e.env.spaces()); })
-      .def("reset", &PyEnvironment::reset, py::arg("seed") = py::none())
-      .def("step", &PyEnvironment::step, py::arg("action"))
       .def("render", &PyEnvironment::render, py::arg("width"), py::arg("height"))
       .def("time_steps", &PyEnvironment::timeSteps, py::arg("actions"), py::arg("seed"))
       .def_property_readonly("done", [](const PyEnvironment& e) { return e.env.done(); })
+      .def_property_readonly("seeding",
+                             [](const PyEnvironment& e) { return py::make_tuple(e.seeded_resets, e.last_seed); })
       .def_property_readonly("game_start",
                              [](const PyEnvironment& e) -> py::object {
                                const auto start = e.env.gameStart();
@@ -390,6 +582,8 @@ void bindLearning(py::module_& m)
                              })
       .def("table", [](const PyEnvironment& e) { return toArrays(e.env.table().balls); })
       .def("rest_table", [](const PyEnvironment& e) { return toArrays(e.env.restTable().balls); });
+  addFastMethod(env, envStepDef);
+  addFastMethod(env, envResetDef);
   py::class_<PyVectorEnvironment>(m, "VectorEnv")
       .def(py::init<std::shared_ptr<Engine>, const py::dict&, int, unsigned>(), py::arg("engine"), py::arg("options"),
            py::arg("num_envs"), py::arg("threads") = 0)

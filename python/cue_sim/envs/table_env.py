@@ -34,12 +34,7 @@ def engine_of(engine=None, table: str = "7ft"):
 
 def checked_seed(seed, tables: int = 1) -> int:
     """`seed` as the engine takes it: an integer with seed + tables - 1 below 2**64, else ValueError."""
-    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)):
-        raise ValueError(f"seed: an integer, got {seed!r}")
-    seed = int(seed)
-    if not 0 <= seed <= 2**64 - tables:
-        raise ValueError(f"seed: must be in [0, 2**64 - {tables}], got {seed}")
-    return seed
+    return _core.checked_seed(seed, tables)
 
 
 def spaces_of(spec: dict):
@@ -83,12 +78,31 @@ class TableEnv(_EnvBase):
         self.observation_space, self.action_space = spaces_of(self._env.spaces)
         self.action_names = list(self._env.spaces["action"]["names"])
         self.observation_names = list(self._env.spaces["state"]["names"])
-        self._np_random = None
+        self._rng, self._rng_seeding = None, None
+        # A learner's loop calls step and reset millions of times: they go to the C++ methods
+        # themselves, without a Python frame between (a cheap shot's step costs some 10 us), unless
+        # a subclass has its own.
+        if type(self).step is TableEnv.step:
+            self.step = self._env.step
+        if type(self).reset is TableEnv.reset:
+            self.reset = self._env.reset
+
+    @property
+    def _np_random(self) -> np.random.Generator:
+        """Gymnasium's generator: seeded by the last reset given a seed (a fresh one each such reset)."""
+        seeding = self._env.seeding
+        if self._rng is None or (seeding[0] and seeding != self._rng_seeding):
+            self._rng = np.random.default_rng(seeding[1] if seeding[0] else None)
+            self._rng_seeding = seeding
+        return self._rng
+
+    @_np_random.setter
+    def _np_random(self, value: np.random.Generator):
+        self._rng, self._rng_seeding = value, self._env.seeding
 
     @property
     def np_random(self) -> np.random.Generator:
-        if self._np_random is None:
-            self._np_random = np.random.default_rng()
+        """A generator for the learner's own draws (Gymnasium's); the episodes have their own stream."""
         return self._np_random
 
     @np_random.setter
@@ -96,18 +110,10 @@ class TableEnv(_EnvBase):
         self._np_random = value
 
     def reset(self, *, seed: Optional[int] = None, options: Optional[dict] = None):
-        """A new episode: from `seed` if given (the same seed, the same episode), else the
-        environment's stream goes on (a fresh environment's first reset draws one)."""
-        if seed is None and options is None and self._np_random is not None:
-            return self._env.reset(None), {}  # the common case, kept short: a one-shot episode resets every step
-        if options:
-            raise ValueError(f"options: reset takes none (give them to the environment), got {sorted(options)}")
-        if seed is not None:
-            seed = checked_seed(seed)
-            self._np_random = np.random.default_rng(seed)
-        elif self._np_random is None:
-            seed = int(self.np_random.integers(2**63))
-        return self._env.reset(seed), {}
+        """A new episode: (observation, {}). From `seed` if given, an integer in [0, 2**64) (the same
+        seed, the same episode), else the environment's stream goes on (a fresh environment's first
+        reset draws one). `options` must be None or empty: the options are the environment's."""
+        return self._env.reset(seed=seed, options=options)
 
     def step(self, action):
         """Plays one shot: (observation, reward, terminated, truncated, info). A NaN, a value
