@@ -64,14 +64,18 @@ inline void addFastMethod(const pybind11::handle& cls, PyMethodDef& def)
   pybind11::setattr(cls, def.ml_name, descriptor);
 }
 
-/// The GIL released for a scope, by CPython's own calls: pybind11's gil_scoped_release also keeps
-/// its thread state in thread-local storage for a gil_scoped_acquire inside, which the code
-/// inside these scopes (C++ only) never makes.
+/// The GIL released for a scope when `release` (else kept), by CPython's own calls: pybind11's
+/// gil_scoped_release also keeps its thread state in thread-local storage for a gil_scoped_acquire
+/// inside, which the code inside these scopes (C++ only) never makes.
 class ReleasedGil
 {
 public:
-  ReleasedGil() : state_(PyEval_SaveThread()) {}
-  ~ReleasedGil() { PyEval_RestoreThread(state_); }
+  explicit ReleasedGil(bool release = true) : state_(release ? PyEval_SaveThread() : nullptr) {}
+  ~ReleasedGil()
+  {
+    if (state_)
+      PyEval_RestoreThread(state_);
+  }
   ReleasedGil(const ReleasedGil&) = delete;
   ReleasedGil& operator=(const ReleasedGil&) = delete;
 

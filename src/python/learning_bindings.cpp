@@ -192,23 +192,6 @@ const std::array<py::str, kInfoKeys>& infoKeys()
   return *keys;
 }
 
-/// A dict of a step's info keys, each None: a step's info is a copy, filled in. A copy of a dict
-/// keeps its size and its keys' hashes, where a new dict would grow twice on the way to its 8 to
-/// 14 keys; a cheap shot's step costs some 10 us, and this is the larger part of Python's share.
-const py::dict& infoTemplate(bool game, bool position)
-{
-  static std::array<py::dict*, 4> templates{};  // made once, kept for the module's life
-  py::dict*& t = templates[(game ? 2 : 0) + (position ? 1 : 0)];
-  if (!t)
-  {
-    t = new py::dict;
-    for (int key = 0; key < kInfoKeys; ++key)
-      if ((key < kPlayer) || (game && key < kOpenShots) || (position && key == kOpenShots))
-        (*t)[infoKeys()[static_cast<std::size_t>(key)]] = py::none();
-  }
-  return *t;
-}
-
 /// d[key] = value, taking `value`'s reference.
 void putInfo(PyObject* d, int key, PyObject* value)
 {
@@ -223,10 +206,12 @@ PyObject* stringObject(const std::string& s)
 }
 
 /// A step's info as a dict: what every task tells, what games tell (`game`) and what position
-/// tells (`position`).
+/// tells (`position`). The dict is made at its final size (CPython's _PyDict_NewPresized, which
+/// Cython's modules use too): grown key by key it would be resized twice; a cheap shot's step
+/// costs some 10 us, and the info is the larger part of Python's share of it.
 py::dict infoDict(const learning::StepInfo& info, bool game, bool position)
 {
-  auto d = py::reinterpret_steal<py::dict>(PyDict_Copy(infoTemplate(game, position).ptr()));
+  auto d = py::reinterpret_steal<py::dict>(_PyDict_NewPresized(kInfoKeys));
   if (!d)
     throw py::error_already_set();
   PyObject* p = d.ptr();
@@ -295,12 +280,19 @@ struct PyEnvironment
   learning::Environment env;
 
   bool game_info, position_info;  ///< what the task's info tells beside every task's
+  /// Whether a step and a reset let other Python threads run: not for the one-shot tasks, pot and
+  /// position, whose steps cost 10 to 20 us; releasing the GIL and taking it back costs some
+  /// 0.5 us on this machine (3 to 5 % of such a step, measured with scripts/env_throughput.py),
+  /// more than another thread could do in the time. A break or a game step costs 80 us and more
+  /// (against the planner, milliseconds), and releases it.
+  bool release_gil;
 
   PyEnvironment(std::shared_ptr<Engine> e, const py::dict& options)
     : engine(std::move(e)),
       env(engine, optionsFrom(options)),
       game_info(env.options().task == "eight_ball" || env.options().task == "nine_ball"),
-      position_info(env.options().task == "position")
+      position_info(env.options().task == "position"),
+      release_gil(env.options().task != "pot" && env.options().task != "position")
   {
   }
 
@@ -322,7 +314,7 @@ struct PyEnvironment
       s = drawnSeed();
     Observations obs(env.spaces(), 0);
     {
-      ReleasedGil released;
+      ReleasedGil released(release_gil);
       env.reset(s, obs.buffers);
     }
     if (s)
@@ -348,7 +340,7 @@ struct PyEnvironment
     Observations obs(env.spaces(), 0);
     learning::StepResult r;
     {
-      ReleasedGil released;
+      ReleasedGil released(release_gil);
       r = env.step(a.data(), static_cast<std::size_t>(a.shape(0)), obs.buffers);
     }
     return py::make_tuple(obs.value(), r.reward, r.terminated, r.truncated, infoDict(r.info, game_info, position_info));

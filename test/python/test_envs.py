@@ -1,6 +1,8 @@
 """cue_sim.envs: Gymnasium's environment contract without Gymnasium (spaces, seeds, resets, bad
 actions), the vector environment against single ones, and gymnasium's own check_env when it is
 installed."""
+import copy
+import inspect
 import math
 
 import numpy as np
@@ -110,6 +112,62 @@ def test_bad_seeds_are_refused():
         envs.reset(seed=2**64 - 2)  # its third table's seed would not fit
     env.reset(seed=2**64 - 1)
     envs.reset(seed=2**64 - 3)
+
+
+def test_refused_resets_change_nothing():
+    env, twin = TableEnv("pot", balls=4), TableEnv("pot", balls=4)
+    env.reset(seed=21)
+    twin.reset(seed=21)
+    for bad in (dict(seed=-3), dict(options={"balls": 2}), dict(options=[1])):
+        with pytest.raises(ValueError, match="seed" if "seed" in bad else "options"):
+            env.reset(**bad)
+    with pytest.raises(TypeError, match="keyword"):
+        env.reset(3)
+    with pytest.raises(TypeError, match="colour"):
+        env.reset(colour=1)
+    # The episode goes on as its twin's, and so do the next episodes of the stream.
+    assert same(env.step([0.3, 1.5]), twin.step([0.3, 1.5]))
+    assert same(env.reset(), twin.reset())
+    env.reset(options={})  # no options is allowed, as Gymnasium's checker tries
+
+
+def test_reset_is_gymnasiums_as_its_checker_reads_it():
+    """What gymnasium.utils.env_checker checks of reset, without Gymnasium: the signature and the
+    generator Gymnasium keeps (the same seed, the same generator; another seed, another)."""
+    env = TableEnv("pot")
+    parameters = inspect.signature(env.reset).parameters
+    assert parameters["seed"].default is None and parameters["options"].default is None
+    assert all(p.kind is inspect.Parameter.KEYWORD_ONLY for p in parameters.values())
+    assert list(inspect.signature(env.step).parameters) == ["action"]
+    env.reset(seed=123)
+    seeded = copy.deepcopy(env.unwrapped._np_random)
+    env.np_random.random(5)  # the learner's own draws move it on ...
+    env.reset(seed=123)  # ... and the same seed starts it again
+    assert env.unwrapped._np_random.bit_generator.state == seeded.bit_generator.state
+    env.reset()  # a reset without a seed leaves it
+    assert env.unwrapped._np_random.bit_generator.state == seeded.bit_generator.state
+    env.reset(seed=456)
+    assert env.unwrapped._np_random.bit_generator.state != seeded.bit_generator.state
+    mine = np.random.default_rng(9)
+    env.np_random = mine
+    assert env.np_random is mine
+
+
+def test_a_subclass_step_and_reset_are_its_own():
+    class Counting(TableEnv):
+        steps = 0
+
+        def step(self, action):
+            self.steps += 1
+            return super().step(action)
+
+        def reset(self, *, seed=None, options=None):
+            return super().reset(seed=seed, options=options)
+
+    env = Counting("pot")
+    env.reset(seed=1)
+    env.step([0.0, 2.0])
+    assert env.steps == 1
 
 
 def test_step_after_the_end_needs_a_reset():
