@@ -148,9 +148,13 @@ def test_reset_is_gymnasiums_as_its_checker_reads_it():
     assert env.unwrapped._np_random.bit_generator.state == seeded.bit_generator.state
     env.reset(seed=456)
     assert env.unwrapped._np_random.bit_generator.state != seeded.bit_generator.state
+    assert env.np_random_seed == 456
     mine = np.random.default_rng(9)
     env.np_random = mine
-    assert env.np_random is mine
+    env.reset()
+    assert env.np_random is mine and env.np_random_seed == -1
+    env.reset(seed=7)
+    assert env.np_random is not mine and env.np_random_seed == 7
 
 
 def test_a_subclass_step_and_reset_are_its_own():

@@ -78,7 +78,7 @@ class TableEnv(_EnvBase):
         self.observation_space, self.action_space = spaces_of(self._env.spaces)
         self.action_names = list(self._env.spaces["action"]["names"])
         self.observation_names = list(self._env.spaces["state"]["names"])
-        self._rng, self._rng_seeding = None, None
+        self._rng, self._rng_seed, self._rng_seeding = None, -1, None
         # A learner's loop calls step and reset millions of times: they go to the C++ methods
         # themselves, without a Python frame between (a cheap shot's step costs some 10 us), unless
         # a subclass has its own.
@@ -87,27 +87,41 @@ class TableEnv(_EnvBase):
         if type(self).reset is TableEnv.reset:
             self.reset = self._env.reset
 
+    def _synced_rng(self):
+        """Gymnasium's generator brought up to date: a fresh one from each reset given a seed (and
+        from a fresh environment's first reset, which draws one); else the one there is."""
+        seeding = self._env.seeding
+        if seeding[0] and seeding != self._rng_seeding:
+            self._rng, self._rng_seed, self._rng_seeding = np.random.default_rng(seeding[1]), seeding[1], seeding
+        elif self._rng is None:
+            self._rng_seed = int(np.random.default_rng().integers(2**63))
+            self._rng = np.random.default_rng(self._rng_seed)
+        return self._rng
+
     @property
     def _np_random(self) -> np.random.Generator:
-        """Gymnasium's generator: seeded by the last reset given a seed (a fresh one each such reset)."""
-        seeding = self._env.seeding
-        if self._rng is None or (seeding[0] and seeding != self._rng_seeding):
-            self._rng = np.random.default_rng(seeding[1] if seeding[0] else None)
-            self._rng_seeding = seeding
-        return self._rng
+        return self._synced_rng()
 
     @_np_random.setter
     def _np_random(self, value: np.random.Generator):
-        self._rng, self._rng_seeding = value, self._env.seeding
+        self._rng, self._rng_seed, self._rng_seeding = value, -1, self._env.seeding
 
     @property
     def np_random(self) -> np.random.Generator:
-        """A generator for the learner's own draws (Gymnasium's); the episodes have their own stream."""
-        return self._np_random
+        """A generator for the learner's own draws (Gymnasium's): seeded by each reset given a
+        seed; the episodes have their own stream in C++."""
+        return self._synced_rng()
 
     @np_random.setter
     def np_random(self, value: np.random.Generator):
         self._np_random = value
+
+    @property
+    def np_random_seed(self) -> int:
+        """np_random's seed, as Gymnasium has it: the last seeded reset's, or -1 once np_random
+        was set directly."""
+        self._synced_rng()
+        return self._rng_seed
 
     def reset(self, *, seed: Optional[int] = None, options: Optional[dict] = None):
         """A new episode: (observation, {}). From `seed` if given, an integer in [0, 2**64) (the same
