@@ -15,60 +15,103 @@ namespace learning
 {
 namespace
 {
-/// The largest pixel observation a step renders [px a side]: beyond it a picture costs more than
-/// the shot, and a learner downsamples anyway.
-constexpr int kMaxPixelSide = 1024;
 /// What the execution noise's stream is seeded with, beside the episode's seed: a stream of its
 /// own, so that the noise does not depend on how many draws the table's setup took.
 constexpr std::uint64_t kNoiseStream = 0x9e3779b97f4a7c15ULL;
-/// The longest run of shots an episode may be given: a whole game is capped at 150 shots.
-constexpr int kMaxShotsCap = 1000;
+}  // namespace
 
-bool oneOf(const std::string& value, std::initializer_list<const char*> names)
+const std::vector<EnvOptionField>& envOptionFields()
 {
-  return std::any_of(names.begin(), names.end(), [&](const char* name) { return value == name; });
+  using Kind = EnvOptionField::Kind;
+  static const std::vector<EnvOptionField> fields = [] {
+    std::vector<EnvOptionField> f;
+#define CUE_SIM_ENV_TEXT(name, default_value, choices, description)                                                  \
+  f.push_back({#name, Kind::kText, description, choices});                                                          \
+  f.back().text = &EnvOptions::name;
+#define CUE_SIM_ENV_INTEGER(name, default_value, min, max, description)                                              \
+  f.push_back({#name, Kind::kInteger, description, "", min, max});                                                  \
+  f.back().integer = &EnvOptions::name;
+#define CUE_SIM_ENV_REAL(name, default_value, min, max, description)                                                 \
+  f.push_back({#name, Kind::kReal, description, "", min, max});                                                     \
+  f.back().real = &EnvOptions::name;
+#define CUE_SIM_ENV_FLAG(name, default_value, description)                                                           \
+  f.push_back({#name, Kind::kFlag, description});                                                                   \
+  f.back().flag = &EnvOptions::name;
+#include "cue_sim/learning/env_options.def"
+#undef CUE_SIM_ENV_TEXT
+#undef CUE_SIM_ENV_INTEGER
+#undef CUE_SIM_ENV_REAL
+#undef CUE_SIM_ENV_FLAG
+    return f;
+  }();
+  return fields;
+}
+
+namespace
+{
+/// The values a text option takes: its declared choices, or for `task` the registry's names.
+std::vector<std::string> choicesOf(const EnvOptionField& field)
+{
+  if (*field.choices == '\0')
+    return taskNames();
+  std::vector<std::string> names;
+  std::istringstream words(field.choices);
+  for (std::string word; words >> word;)
+    names.push_back(word);
+  return names;
+}
+
+/// Empty if `options`' value of `field` is in its declared range or choices, else why not.
+std::string whyOutOfRange(const EnvOptions& options, const EnvOptionField& field)
+{
+  std::ostringstream why;
+  switch (field.kind)
+  {
+    case EnvOptionField::Kind::kText:
+    {
+      const std::string& value = options.*field.text;
+      const std::vector<std::string> names = choicesOf(field);
+      if (std::find(names.begin(), names.end(), value) == names.end())
+      {
+        why << field.name << ": '" << value << "' is not one of";
+        for (std::size_t i = 0; i < names.size(); ++i)
+          why << (i ? ", " : " ") << names[i];
+      }
+      break;
+    }
+    case EnvOptionField::Kind::kInteger:
+    {
+      const int value = options.*field.integer;
+      if (!(value >= field.min && value <= field.max))
+        why << field.name << ": must be in [" << field.min << ", " << field.max << "], got " << value;
+      break;
+    }
+    case EnvOptionField::Kind::kReal:
+    {
+      const double value = options.*field.real;
+      if (!(value >= field.min && value <= field.max))
+        why << field.name << ": must be in [" << field.min << ", " << field.max << "], got " << value;
+      break;
+    }
+    case EnvOptionField::Kind::kFlag:
+      break;
+  }
+  return why.str();
 }
 }  // namespace
 
 std::string EnvOptions::whyInvalid() const
 {
-  std::ostringstream why;
-  const std::vector<std::string> tasks = taskNames();
-  if (std::find(tasks.begin(), tasks.end(), task) == tasks.end())
-  {
-    why << "task: '" << task << "' is not a task; the tasks are";
-    for (std::size_t i = 0; i < tasks.size(); ++i)
-      why << (i ? ", " : " ") << tasks[i];
-  }
-  else if (!(balls >= 1 && balls <= 15))
-    why << "balls: must be in [1, 15], got " << balls;
-  else if (!oneOf(target, {"any", "lowest"}))
-    why << "target: must be any or lowest, got '" << target << "'";
-  else if (!(max_shots >= 0 && max_shots <= kMaxShotsCap))
-    why << "max_shots: must be in [0, " << kMaxShotsCap << "] (0: the task's own), got " << max_shots;
-  else if (!oneOf(rack, {"eight", "nine"}))
-    why << "rack: must be eight or nine, got '" << rack << "'";
-  else if (!oneOf(action, {"absolute", "relative"}))
-    why << "action: must be absolute or relative, got '" << action << "'";
-  else if (!oneOf(opponent, {"planner", "self"}))
-    why << "opponent: must be planner or self, got '" << opponent << "'";
-  else if (!(opponent_skill >= 0 && opponent_skill <= 1))
-    why << "opponent_skill: must be in [0, 1], got " << opponent_skill;
-  else if (!(shaping >= 0 && shaping <= 1))
-    why << "shaping: must be in [0, 1], got " << shaping;
-  else if (!oneOf(observation, {"state", "pixels", "both"}))
-    why << "observation: must be state, pixels or both, got '" << observation << "'";
-  else if (observation != "state" &&
-           !(pixel_width >= 8 && pixel_width <= kMaxPixelSide && pixel_height >= 8 && pixel_height <= kMaxPixelSide))
-    why << "pixel_width, pixel_height: each must be in [8, " << kMaxPixelSide << "] px, got " << pixel_width << " x "
-        << pixel_height;
-  else if (const std::string noisy = noise.validate(); !noisy.empty())
-    why << "noise: " << noisy;
-  return why.str();
+  for (const EnvOptionField& field : envOptionFields())
+    if (std::string why = whyOutOfRange(*this, field); !why.empty())
+      return why;
+  if (const std::string noisy = noise_model.validate(); !noisy.empty())
+    return "noise_model: " + noisy;
+  return "";
 }
 
 Environment::Environment(std::shared_ptr<const physics::Engine<double>> engine, const EnvOptions& options)
-  : engine_(std::move(engine)), options_(options), cue_(options.noise, kNoiseStream)
+  : engine_(std::move(engine)), options_(options), cue_(options.noise ? options.noise_model : physics::ExecutionNoise::none(), kNoiseStream)
 {
   if (!engine_)
     throw std::invalid_argument("engine: none given");
@@ -144,7 +187,8 @@ void Environment::reset(std::optional<std::uint64_t> seed, const ObservationBuff
   if (seed)
   {
     random_.seed(*seed);
-    cue_ = physics::NoisyCue(options_.noise, *seed ^ kNoiseStream);
+    cue_ = physics::NoisyCue(options_.noise ? options_.noise_model : physics::ExecutionNoise::none(),
+                             *seed ^ kNoiseStream);
   }
   task_->reset(random_);
   shots_ = 0;
@@ -169,7 +213,7 @@ StepResult Environment::step(const double* action, std::size_t size, const Obser
   if (layout.relative())
     aim.choices = task_->aimChoices();  // only a relative action chooses among them
   ShotPlan plan = layout.plan(action, aim);
-  if (!options_.noise.isNone())
+  if (options_.noise && !options_.noise_model.isNone())
     plan.strike = cue_.execute(plan.strike, engine_->params().ball_radius);
   last_strike_ = plan.strike;
   StepResult result = task_->shoot(plan, random_);

@@ -32,62 +32,115 @@ namespace
 using learning::EnvOptions;
 using Engine = physics::Engine<double>;
 
-/// The options a dict gives, over the defaults; an unknown key or a value of the wrong type is
-/// refused, naming it.
+/// The option of that name, or null.
+const learning::EnvOptionField* optionField(const std::string& name)
+{
+  for (const learning::EnvOptionField& field : learning::envOptionFields())
+    if (name == field.name)
+      return &field;
+  return nullptr;
+}
+
+/// The options a dict gives, over the defaults (env_options.def); an unknown key or a value of
+/// the wrong type is refused, naming it.
 EnvOptions optionsFrom(const py::dict& given)
 {
+  using Kind = learning::EnvOptionField::Kind;
   EnvOptions o;
   for (const auto& [key_object, value] : given)
   {
     const std::string key = py::str(key_object);
+    const learning::EnvOptionField* field = optionField(key);
+    if (!field)
+    {
+      std::string names;
+      for (const learning::EnvOptionField& f : learning::envOptionFields())
+        names += (names.empty() ? "" : ", ") + std::string(f.name);
+      throw std::invalid_argument(key + ": not an option; the options are " + names);
+    }
+    // Strictly typed: a bool is not taken for a number, nor a number for a flag (NumPy's scalars
+    // are taken as Python's).
+    const std::string type_name = Py_TYPE(value.ptr())->tp_name;
+    const bool is_bool = PyBool_Check(value.ptr()) || type_name == "numpy.bool_" || type_name == "numpy.bool";
+    const bool is_integer = !is_bool && PyIndex_Check(value.ptr());
+    const bool is_real = is_integer || (!is_bool && (PyFloat_Check(value.ptr()) || type_name.rfind("numpy.float", 0) == 0));
+    const bool fits = field->kind == Kind::kText      ? py::isinstance<py::str>(value)
+                      : field->kind == Kind::kInteger ? is_integer
+                      : field->kind == Kind::kReal    ? is_real
+                                                      : is_bool;
     try
     {
-      if (key == "task")
-        o.task = value.cast<std::string>();
-      else if (key == "balls")
-        o.balls = value.cast<int>();
-      else if (key == "target")
-        o.target = value.cast<std::string>();
-      else if (key == "max_shots")
-        o.max_shots = value.cast<int>();
-      else if (key == "rack")
-        o.rack = value.cast<std::string>();
-      else if (key == "action")
-        o.action = value.cast<std::string>();
-      else if (key == "spin")
-        o.spin = value.cast<bool>();
-      else if (key == "opponent")
-        o.opponent = value.cast<std::string>();
-      else if (key == "opponent_skill")
-        o.opponent_skill = value.cast<double>();
-      else if (key == "opponent_noise")
-        o.opponent_noise = value.cast<bool>();
-      else if (key == "shaping")
-        o.shaping = value.cast<double>();
-      else if (key == "noise")
+      if (!fits)
+        throw py::cast_error();
+      switch (field->kind)
       {
-        if (!value.cast<bool>())
-          o.noise = physics::ExecutionNoise::none();
+        case Kind::kText:
+          o.*field->text = value.cast<std::string>();
+          break;
+        case Kind::kInteger:
+          o.*field->integer = value.cast<int>();
+          break;
+        case Kind::kReal:
+          o.*field->real = value.cast<double>();
+          break;
+        case Kind::kFlag:
+          o.*field->flag = value.cast<bool>();
+          break;
       }
-      else if (key == "observation")
-        o.observation = value.cast<std::string>();
-      else if (key == "pixel_width")
-        o.pixel_width = value.cast<int>();
-      else if (key == "pixel_height")
-        o.pixel_height = value.cast<int>();
-      else
-        throw std::invalid_argument(
-            key +
-            ": not an option; the options are task, balls, target, max_shots, rack, "
-            "action, spin, opponent, opponent_skill, opponent_noise, shaping, noise, observation, "
-            "pixel_width, pixel_height");
     }
     catch (const py::cast_error&)
     {
-      throw std::invalid_argument(key + ": " + std::string(py::str(py::repr(value))) + " is of the wrong type");
+      static const char* const kinds[] = {"a string", "an integer", "a number", "True or False"};
+      throw std::invalid_argument(key + ": " + std::string(py::str(py::repr(value))) + " is of the wrong type (" +
+                                  kinds[static_cast<int>(field->kind)] + ")");
     }
   }
   return o;
+}
+
+/// The options as a dict of their values in `o`.
+py::dict optionValues(const EnvOptions& o)
+{
+  using Kind = learning::EnvOptionField::Kind;
+  py::dict values;
+  for (const learning::EnvOptionField& field : learning::envOptionFields())
+    switch (field.kind)
+    {
+      case Kind::kText:
+        values[field.name] = o.*field.text;
+        break;
+      case Kind::kInteger:
+        values[field.name] = o.*field.integer;
+        break;
+      case Kind::kReal:
+        values[field.name] = o.*field.real;
+        break;
+      case Kind::kFlag:
+        values[field.name] = o.*field.flag;
+        break;
+    }
+  return values;
+}
+
+/// Every option's declaration, for the module's documentation and its tests.
+py::list optionDeclarations()
+{
+  using Kind = learning::EnvOptionField::Kind;
+  static const char* const kinds[] = {"text", "integer", "real", "flag"};
+  const py::dict defaults = optionValues(EnvOptions());
+  py::list out;
+  for (const learning::EnvOptionField& field : learning::envOptionFields())
+  {
+    py::dict d(py::arg("name") = field.name, py::arg("kind") = kinds[static_cast<int>(field.kind)],
+               py::arg("default") = defaults[field.name], py::arg("description") = field.description);
+    if (field.kind == Kind::kText)
+      d["choices"] = *field.choices ? py::cast(std::string(field.choices)).attr("split")()
+                                    : py::cast(learning::taskNames());
+    if (field.kind == Kind::kInteger || field.kind == Kind::kReal)
+      d["range"] = py::make_tuple(field.min, field.max);
+    out.append(d);
+  }
+  return out;
 }
 
 py::dict boxDict(const learning::BoxSpec& box)
@@ -522,15 +575,8 @@ struct PyVectorEnvironment
 void bindLearning(py::module_& m)
 {
   m.def("task_names", &learning::taskNames);
-  m.def("default_options", [] {
-    const EnvOptions o;
-    return py::dict(py::arg("balls") = o.balls, py::arg("target") = o.target, py::arg("max_shots") = o.max_shots,
-                    py::arg("rack") = o.rack, py::arg("action") = o.action, py::arg("spin") = o.spin,
-                    py::arg("opponent") = o.opponent, py::arg("opponent_skill") = o.opponent_skill,
-                    py::arg("opponent_noise") = o.opponent_noise, py::arg("shaping") = o.shaping,
-                    py::arg("noise") = !o.noise.isNone(), py::arg("observation") = o.observation,
-                    py::arg("pixel_width") = o.pixel_width, py::arg("pixel_height") = o.pixel_height);
-  });
+  m.def("default_options", [] { return optionValues(EnvOptions()); });
+  m.def("env_options", &optionDeclarations);
   m.def(
       "checked_seed",
       [](const py::object& seed, std::uint64_t tables) {

@@ -157,8 +157,8 @@ TEST(LearningOptions, WrongOptionsNameTheField)
   o.pixel_width = 4;
   refused(o, "pixel_width");
   o = {};
-  o.noise.speed = -1;
-  refused(o, "noise");
+  o.noise_model.speed = -1;
+  refused(o, "noise_model");
   EXPECT_THROW(Environment(engineOf("carom"), EnvOptions()), std::invalid_argument);  // no pockets to pot into
 }
 
@@ -299,7 +299,7 @@ TEST(LearningPot, RewardsSayWhatTheShotDid)
 {
   EnvOptions o;
   o.balls = 3;
-  o.noise = physics::ExecutionNoise::none();
+  o.noise = false;
   const auto engine = engineOf("7ft");
   Environment env(engine, o);
   std::vector<float> state = stateOf(env);
@@ -366,7 +366,7 @@ TEST(LearningPot, TheRelativeActionAimsAtTheBallAndPocketItNames)
   EnvOptions o;
   o.balls = 1;
   o.action = "relative";
-  o.noise = physics::ExecutionNoise::none();
+  o.noise = false;
   const auto engine = engineOf("7ft");
   Environment env(engine, o);
   std::vector<float> state = stateOf(env);
@@ -416,7 +416,7 @@ TEST(LearningBreak, TheRewardIsTheRulingsAndTheRackIsJittered)
     EnvOptions o;
     o.task = "break";
     o.rack = rack;
-    o.noise = physics::ExecutionNoise::none();
+    o.noise = false;
     const auto engine = engineOf("7ft");
     Environment env(engine, o), other(engine, o);
     std::vector<float> state = stateOf(env), other_state = stateOf(other);
@@ -501,7 +501,7 @@ TEST(LearningPosition, APotScoresOneAndLeavingShotsUpToOneMore)
   o.task = "position";
   o.balls = 4;
   o.action = "relative";
-  o.noise = physics::ExecutionNoise::none();
+  o.noise = false;
   const auto engine = engineOf("7ft");
   Environment env(engine, o);
   std::vector<float> state = stateOf(env);
@@ -600,7 +600,7 @@ TEST(LearningGames, TheCueBallInHandGoesWhereTheActionPlacesIt)
   o.task = "nine_ball";
   o.opponent = "self";
   o.action = "relative";
-  o.noise = physics::ExecutionNoise::none();
+  o.noise = false;
   const auto engine = engineOf("7ft");
   const double R = engine->params().ball_radius;
   Environment env(engine, o);

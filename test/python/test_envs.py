@@ -4,11 +4,13 @@ installed."""
 import copy
 import inspect
 import math
+import pathlib
+import re
 
 import numpy as np
 import pytest
 
-from cue_sim.envs import Box, Dict, Discrete, TableEnv, TableVectorEnv, task_names
+from cue_sim.envs import DEFAULT_OPTIONS, Box, Dict, Discrete, TableEnv, TableVectorEnv, task_names
 
 
 def play(env, seed, steps, action_seed=1):
@@ -23,6 +25,13 @@ def play(env, seed, steps, action_seed=1):
             obs, _ = env.reset()
             trace.append(obs)
     return trace
+
+
+def observed(obs, space):
+    """Gymnasium's checks of an observation: inside its space, of the space's dtype (each part of a Dict)."""
+    if isinstance(space, Dict):
+        return obs.keys() == space.spaces.keys() and all(observed(obs[k], space[k]) for k in obs)
+    return isinstance(obs, np.ndarray) and obs.dtype == space.dtype and obs in space
 
 
 def same(a, b):
@@ -43,20 +52,20 @@ def test_the_contract(options):
     env = TableEnv(**options)
     assert options["task"] in task_names()
     obs, info = env.reset(seed=3)
-    assert obs in env.observation_space and isinstance(info, dict)
+    assert observed(obs, env.observation_space) and isinstance(info, dict)
     ends = 0
     for _ in range(40):
         action = env.action_space.sample()
         assert action in env.action_space
         obs, reward, terminated, truncated, info = env.step(action)
-        assert obs in env.observation_space
+        assert observed(obs, env.observation_space)
         assert isinstance(reward, float) and math.isfinite(reward)
         assert isinstance(terminated, bool) and isinstance(truncated, bool)
         assert {"shots", "pocketed", "scratch", "foul", "reason"} <= info.keys() and info["reason"]
         if terminated or truncated:
             ends += 1
             obs, _ = env.reset()
-            assert obs in env.observation_space
+            assert observed(obs, env.observation_space)
     assert ends > 0
     assert same(play(env, 7, 30), play(TableEnv(**options), 7, 30))
     frame = TableEnv(render_mode="rgb_array", **options)
@@ -99,6 +108,27 @@ def test_bad_options_name_the_option():
             TableEnv(**options)
     with pytest.raises(ValueError, match="pockets"):
         TableEnv("pot", table="carom")
+
+
+def test_the_options_table_is_the_declaration():
+    """doc/learning.md's table of options against env_options.def, as _core reads it."""
+    from cue_sim import _core
+    doc = (pathlib.Path(__file__).resolve().parents[2] / "doc" / "learning.md").read_text()
+    rows = {m.group(1): (m.group(2), m.group(3)) for m in re.finditer(r"^\| `(\w+)` \| ([^|]+) \| ([^|]+) \|", doc, re.M)}
+    declared = _core.env_options()
+    assert [o["name"] for o in declared] == list(DEFAULT_OPTIONS)
+    for option in declared:
+        default, values = rows[option["name"]]
+        assert default.strip() == (f'"{option["default"]}"' if option["kind"] == "text" else repr(option["default"]))
+        if "choices" in option:
+            assert values.strip() == ", ".join(option["choices"])
+        elif "range" in option:
+            assert values.strip() == "[{:g}, {:g}]".format(*option["range"])
+        assert DEFAULT_OPTIONS[option["name"]] == option["default"]
+    for name, value in [("balls", True), ("noise", 1), ("opponent_skill", "high"), ("task", 3)]:
+        with pytest.raises(ValueError, match=f"{name}: .* wrong type"):
+            TableEnv(**{name: value}) if name != "task" else TableEnv(task=value)
+    TableEnv(noise=np.False_, opponent_skill=np.float32(0.5), balls=np.int64(3))
 
 
 def test_bad_seeds_are_refused():

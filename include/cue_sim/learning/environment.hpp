@@ -20,42 +20,50 @@ namespace cue_sim
 {
 namespace learning
 {
-/// How an environment is made. Each field is checked by whyInvalid(), which names the field,
-/// its value and its range.
+/// How an environment is made: the options declared in env_options.def (each with its default,
+/// range and meaning), and the execution noise's deviations. whyInvalid() checks every field and
+/// names the one that is wrong, its value and its range.
 struct EnvOptions
 {
-  std::string task = "pot";  ///< taskNames(): pot, position, break, eight_ball, nine_ball
-  /// pot, position: the most object balls on the table; each episode draws 1 (position: 2) to
-  /// this many (ids 1, 2, ...).
-  int balls = 2;
-  /// pot: "any" (every object ball pocketed scores) or "lowest" (the lowest-numbered ball on the
-  /// table must be hit first and pocketed, as in 9-ball).
-  std::string target = "any";
-  /// The shots an episode may take before it is truncated; 0 leaves it to the task (pot and
-  /// break: 1; a game: 150, its shots on both sides). pot: more than 1 is a run of shots that
-  /// goes on while each scores.
-  int max_shots = 0;
-  std::string rack = "nine";  ///< break: "eight" or "nine"
-  /// "absolute": phi and speed; "relative": a ball, a pocket, the cut's offset from the
-  /// ghost-ball aim at them, and speed (actions.md in doc/learning.md).
-  std::string action = "absolute";
-  bool spin = false;  ///< the action also sets elevation and tip offsets (theta, a, b)
-  /// Games: "planner" (the core's PottingPlanner plays the other side within the agent's step)
-  /// or "self" (self-play: every step is the shot of whoever is to play).
-  std::string opponent = "planner";
-  double opponent_skill = 1.0;  ///< the chance the planner plays its own choice, else a random shot
-  bool opponent_noise = true;   ///< the tournaments' execution noise on the opponent's strikes too
-  /// Games: the reward per ball pocketed on a shot that keeps the table (and minus this for a
-  /// foul), beside 1 for a won game and -1 for a lost one.
-  double shaping = 0.1;
-  /// Execution noise on every strike (seeded by the episode's seed); the tournaments' by default.
-  physics::ExecutionNoise noise;
-  /// "state" (positions and flags), "pixels" (the overhead camera, RGB) or "both".
-  std::string observation = "state";
-  int pixel_width = 96, pixel_height = 48;  ///< [px] of a pixel observation
+#define CUE_SIM_ENV_TEXT(name, default_value, choices, description) std::string name = default_value;
+#define CUE_SIM_ENV_INTEGER(name, default_value, min, max, description) int name = default_value;
+#define CUE_SIM_ENV_REAL(name, default_value, min, max, description) double name = default_value;
+#define CUE_SIM_ENV_FLAG(name, default_value, description) bool name = default_value;
+#include "cue_sim/learning/env_options.def"
+#undef CUE_SIM_ENV_TEXT
+#undef CUE_SIM_ENV_INTEGER
+#undef CUE_SIM_ENV_REAL
+#undef CUE_SIM_ENV_FLAG
+  /// The deviations of the execution noise when `noise` is on: the tournaments' by default.
+  physics::ExecutionNoise noise_model;
   /// Empty if usable, else which field is wrong and why.
   std::string whyInvalid() const;
 };
+
+/// One option as env_options.def declares it, with where it lives in EnvOptions: what adapters
+/// (the Python module's keywords, its DEFAULT_OPTIONS) read and write options through.
+struct EnvOptionField
+{
+  enum class Kind
+  {
+    kText,
+    kInteger,
+    kReal,
+    kFlag
+  };
+  const char* name;
+  Kind kind;
+  const char* description;
+  const char* choices = "";  ///< kText: the values it takes, space-separated ("" for task: taskNames())
+  double min = 0, max = 0;   ///< kInteger, kReal: its range, both ends included
+  std::string EnvOptions::*text = nullptr;
+  int EnvOptions::*integer = nullptr;
+  double EnvOptions::*real = nullptr;
+  bool EnvOptions::*flag = nullptr;
+};
+
+/// Every option, in env_options.def's order.
+const std::vector<EnvOptionField>& envOptionFields();
 
 /// The names EnvOptions::task takes.
 std::vector<std::string> taskNames();

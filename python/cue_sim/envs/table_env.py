@@ -20,7 +20,7 @@ except ImportError:
 #: The size render() draws at [px].
 RENDER_SIZE = (640, 360)
 
-#: Every task's options and their defaults (doc/learning.md describes each), as the C++ declares them.
+#: Every option and its default, as env_options.def declares them (doc/learning.md's table of options).
 DEFAULT_OPTIONS = dict(_core.default_options())
 
 
@@ -56,12 +56,12 @@ def spaces_of(spec: dict):
 class TableEnv(_EnvBase):
     """A task on one table (Gymnasium's Env API; Gymnasium itself is not needed).
 
-    task: "pot", "break", "eight_ball" or "nine_ball" (task_names()); the options
-    (DEFAULT_OPTIONS, each described in doc/learning.md): balls, target, max_shots, rack, action
-    ("absolute": phi [rad], speed [m/s]; "relative": ball, pocket, cut_offset [rad], speed),
-    spin (theta, tip_right, tip_up too), opponent ("planner" or "self"), opponent_skill,
-    opponent_noise, shaping, noise (the tournaments' execution noise, seeded by the episode),
-    observation ("state", "pixels" or "both"), pixel_width, pixel_height. Games add place_x,
+    task: one of task_names() (pot, position, break, eight_ball, nine_ball). The options and their
+    defaults are DEFAULT_OPTIONS, each declared once in env_options.def with its range and
+    meaning (cue_sim._core.env_options(); doc/learning.md's table of options): balls, target,
+    max_shots, rack, action ("absolute": phi [rad], speed [m/s]; "relative": ball, pocket,
+    cut_offset [rad], speed), spin (theta, tip_right, tip_up too), opponent, opponent_skill,
+    opponent_noise, shaping, noise, observation, pixel_width, pixel_height. Games add place_x,
     place_y (the cue ball in hand) and, in 9-ball, push_out to the action.
     engine: a cue_sim.Engine (its table, physics and models); else the bundled `table`.
     """
