@@ -25,17 +25,17 @@ const std::vector<EnvOptionField>& envOptionFields()
   using Kind = EnvOptionField::Kind;
   static const std::vector<EnvOptionField> fields = [] {
     std::vector<EnvOptionField> f;
-#define CUE_SIM_ENV_TEXT(name, default_value, choices, description)                                                  \
-  f.push_back({#name, Kind::kText, description, choices});                                                          \
+#define CUE_SIM_ENV_TEXT(name, default_value, choices, description)                                                    \
+  f.push_back({#name, Kind::kText, description, choices});                                                             \
   f.back().text = &EnvOptions::name;
-#define CUE_SIM_ENV_INTEGER(name, default_value, min, max, description)                                              \
-  f.push_back({#name, Kind::kInteger, description, "", min, max});                                                  \
+#define CUE_SIM_ENV_INTEGER(name, default_value, min, max, description)                                                \
+  f.push_back({#name, Kind::kInteger, description, "", min, max});                                                     \
   f.back().integer = &EnvOptions::name;
-#define CUE_SIM_ENV_REAL(name, default_value, min, max, description)                                                 \
-  f.push_back({#name, Kind::kReal, description, "", min, max});                                                     \
+#define CUE_SIM_ENV_REAL(name, default_value, min, max, description)                                                   \
+  f.push_back({#name, Kind::kReal, description, "", min, max});                                                        \
   f.back().real = &EnvOptions::name;
-#define CUE_SIM_ENV_FLAG(name, default_value, description)                                                           \
-  f.push_back({#name, Kind::kFlag, description});                                                                   \
+#define CUE_SIM_ENV_FLAG(name, default_value, description)                                                             \
+  f.push_back({#name, Kind::kFlag, description});                                                                      \
   f.back().flag = &EnvOptions::name;
 #include "cue_sim/learning/env_options.def"
 #undef CUE_SIM_ENV_TEXT
@@ -67,8 +67,7 @@ std::string whyOutOfRange(const EnvOptions& options, const EnvOptionField& field
   std::ostringstream why;
   switch (field.kind)
   {
-    case EnvOptionField::Kind::kText:
-    {
+    case EnvOptionField::Kind::kText: {
       const std::string& value = options.*field.text;
       const std::vector<std::string> names = choicesOf(field);
       if (std::find(names.begin(), names.end(), value) == names.end())
@@ -79,15 +78,13 @@ std::string whyOutOfRange(const EnvOptions& options, const EnvOptionField& field
       }
       break;
     }
-    case EnvOptionField::Kind::kInteger:
-    {
+    case EnvOptionField::Kind::kInteger: {
       const int value = options.*field.integer;
       if (!(value >= field.min && value <= field.max))
         why << field.name << ": must be in [" << field.min << ", " << field.max << "], got " << value;
       break;
     }
-    case EnvOptionField::Kind::kReal:
-    {
+    case EnvOptionField::Kind::kReal: {
       const double value = options.*field.real;
       if (!(value >= field.min && value <= field.max))
         why << field.name << ": must be in [" << field.min << ", " << field.max << "], got " << value;
@@ -111,7 +108,9 @@ std::string EnvOptions::whyInvalid() const
 }
 
 Environment::Environment(std::shared_ptr<const physics::Engine<double>> engine, const EnvOptions& options)
-  : engine_(std::move(engine)), options_(options), cue_(options.noise ? options.noise_model : physics::ExecutionNoise::none(), kNoiseStream)
+  : engine_(std::move(engine)),
+    options_(options),
+    cue_(options.noise ? options.noise_model : physics::ExecutionNoise::none(), kNoiseStream)
 {
   if (!engine_)
     throw std::invalid_argument("engine: none given");

@@ -57,8 +57,8 @@ inline void setPythonError()
 /// Adds `def` (static storage: the descriptor keeps a pointer to it) to the class `cls` as a method.
 inline void addFastMethod(const pybind11::handle& cls, PyMethodDef& def)
 {
-  auto descriptor =
-      pybind11::reinterpret_steal<pybind11::object>(PyDescr_NewMethod(reinterpret_cast<PyTypeObject*>(cls.ptr()), &def));
+  auto descriptor = pybind11::reinterpret_steal<pybind11::object>(
+      PyDescr_NewMethod(reinterpret_cast<PyTypeObject*>(cls.ptr()), &def));
   if (!descriptor)
     throw pybind11::error_already_set();
   pybind11::setattr(cls, def.ml_name, descriptor);

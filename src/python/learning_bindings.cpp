@@ -9,8 +9,8 @@
 #include <array>
 #include <chrono>
 #include <initializer_list>
-#include <memory>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <random>
 #include <stdexcept>
@@ -63,7 +63,8 @@ EnvOptions optionsFrom(const py::dict& given)
     const std::string type_name = Py_TYPE(value.ptr())->tp_name;
     const bool is_bool = PyBool_Check(value.ptr()) || type_name == "numpy.bool_" || type_name == "numpy.bool";
     const bool is_integer = !is_bool && PyIndex_Check(value.ptr());
-    const bool is_real = is_integer || (!is_bool && (PyFloat_Check(value.ptr()) || type_name.rfind("numpy.float", 0) == 0));
+    const bool is_real =
+        is_integer || (!is_bool && (PyFloat_Check(value.ptr()) || type_name.rfind("numpy.float", 0) == 0));
     const bool fits = field->kind == Kind::kText      ? py::isinstance<py::str>(value)
                       : field->kind == Kind::kInteger ? is_integer
                       : field->kind == Kind::kReal    ? is_real
@@ -134,8 +135,8 @@ py::list optionDeclarations()
     py::dict d(py::arg("name") = field.name, py::arg("kind") = kinds[static_cast<int>(field.kind)],
                py::arg("default") = defaults[field.name], py::arg("description") = field.description);
     if (field.kind == Kind::kText)
-      d["choices"] = *field.choices ? py::cast(std::string(field.choices)).attr("split")()
-                                    : py::cast(learning::taskNames());
+      d["choices"] =
+          *field.choices ? py::cast(std::string(field.choices)).attr("split")() : py::cast(learning::taskNames());
     if (field.kind == Kind::kInteger || field.kind == Kind::kReal)
       d["range"] = py::make_tuple(field.min, field.max);
     out.append(d);
