@@ -119,3 +119,9 @@ add_library(cue_sim_learning
 )
 target_include_directories(cue_sim_learning PUBLIC ${CUE_SIM_ROOT}/include PRIVATE ${CUE_SIM_ROOT}/src)
 target_link_libraries(cue_sim_learning PUBLIC cue_sim_game cue_sim_camera)
+
+# Calibration: where a shot's balls are at the instants they were observed, for fitting the
+# simulator's coefficients to a real table (cue_sim.calibrate). No ROS, no Python.
+add_library(cue_sim_calibration ${CUE_SIM_ROOT}/src/calibration/track_prediction.cpp)
+target_include_directories(cue_sim_calibration PUBLIC ${CUE_SIM_ROOT}/include PRIVATE ${CUE_SIM_ROOT}/src)
+target_link_libraries(cue_sim_calibration PUBLIC cue_sim_physics)

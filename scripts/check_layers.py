@@ -41,6 +41,7 @@ PACKAGE_LAYERS = [
     ("session", ["session"]),
     ("camera", ["camera"]),
     ("learning", ["learning"]),
+    ("calibration", ["calibration"]),
     ("adapters", ["node", "python", "tools", "examples"]),
 ]
 # Headers of ROS that the ROS-free layers must not include.

@@ -26,6 +26,7 @@
 #include "cue_sim/table_description/table_catalog.hpp"
 #include "cue_sim/table_description/urdf_table_loader.hpp"
 #include "python/game_bindings.hpp"
+#include "python/calibration_bindings.hpp"
 #include "python/learning_bindings.hpp"
 #include "python/state_arrays.hpp"
 
@@ -337,4 +338,5 @@ PYBIND11_MODULE(_core, m)
       .def("engine_seconds", &engineSeconds);
   bindGames(m);
   bindLearning(m);
+  bindCalibration(m);
 }

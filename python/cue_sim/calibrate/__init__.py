@@ -1,0 +1,15 @@
+"""cue_sim.calibrate: the simulator fitted to a real table from observed shots.
+
+    from cue_sim.calibrate import calibrate, load_tracks
+    tracks = load_tracks("session.csv")                 # t, ball, x, y, shot
+    result = calibrate(tracks, fit=["mu_slide", "mu_roll", "e_cushion"])
+    print(result.summary())
+    open("physics_fitted.yaml", "w").write(result.to_yaml())
+
+doc/calibration.md says what it fits, how, what it assumes and where it fails.
+"""
+from cue_sim.calibrate.fit import DEFAULT_NOISE, FITTABLE, Calibration, ShotReport, calibrate
+from cue_sim.calibrate.tracks import STRIKE_FIELDS, Track, load_tracks, save_tracks
+
+__all__ = ["calibrate", "Calibration", "ShotReport", "Track", "load_tracks", "save_tracks", "FITTABLE",
+           "DEFAULT_NOISE", "STRIKE_FIELDS"]

@@ -1,0 +1,434 @@
+"""The simulator fitted to observed shots: chosen coefficients of the registry, each shot's
+unknowns with them, by robust nonlinear least squares (scipy.optimize.least_squares).
+
+Every observed position is compared with the engine's exact prediction at that instant
+(cue_sim._core.predict_tracks: the events between two frames are where they happen, not at a
+frame). A shot's unknowns are when it was struck on the observer's clock (t0) and either the
+struck ball's velocity and spin just after the strike (vx, vy, wx, wy, wz: nothing assumed of the
+cue) or, when the strike's speed is known, the strike's fields that are not (phi, theta, a, b;
+the cue's model then turns them into the ball's motion). The balls that were not struck start
+where they stood. The loss is robust (soft_l1 on residuals in units of the observation noise), so
+that a detector's outliers do not drag the fit. Standard errors come from the Jacobian at the
+solution (the Gauss-Newton covariance, scaled by the residuals' own variance), with the shots'
+unknowns marginalised; doc/calibration.md says what the method assumes and where it fails.
+"""
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field
+from typing import Dict, List, Optional, Sequence, Tuple
+
+import numpy as np
+
+from cue_sim._interpreter import core
+from cue_sim.calibrate.tracks import Track
+
+_core = core()
+
+#: The coefficients the data of a shot can only determine through a contact of that kind.
+NEEDS_BALL_BALL = ("e_ball", "mu_ball_a", "mu_ball_b", "mu_ball_c", "ball_impact_tolerance")
+NEEDS_CUSHION = ("e_cushion", "f_cushion", "cushion_height", "e_cushion_work", "mu_cushion",
+                 "cushion_frequency_ratio")
+#: What a fit may ask for: the physics of the balls on the cloth and at their contacts (not the
+#: table's or the balls' sizes, nor the integrators' tolerances).
+FITTABLE = ("mu_slide", "mu_roll", "mu_spin", "e_ball", "mu_ball_a", "mu_ball_b", "mu_ball_c", "e_cushion",
+            "f_cushion", "cushion_height", "e_cushion_work", "mu_cushion", "cushion_frequency_ratio")
+
+#: The observation noise the residuals are measured in when none is given [m]: a detector's
+#: typical error on a 1080p overhead camera over a 7 ft table (about a pixel).
+DEFAULT_NOISE = 0.002
+#: A ball has moved once it is this many noise deviations from where it stood (the start of a
+#: shot is found so).
+MOVED_IN_NOISES = 5.0
+#: How far a residual goes, in noises, when a shot cannot be predicted at all (a strike refused,
+#: balls overlapping): large, and the same everywhere, so that the solver backs away.
+UNPREDICTABLE = 1000.0
+#: A coefficient whose standard error is more than this share of its value is reported as not
+#: determined by the data.
+UNDETERMINED_SHARE = 0.5
+#: How far a ball's fitted resting place may be from where it was first seen [m].
+REST_SLACK = 0.02
+#: The bounds of a fitted strike field: within the strike's own limits, and a and b inside the
+#: disc of the largest tip offset (0.5 R) whatever their signs.
+STRIKE_BOUNDS = {"speed": (0.05, 12.0), "phi": (-4 * math.pi, 4 * math.pi), "theta": (0.0, 1.4),
+                 "a": (-0.35, 0.35), "b": (-0.35, 0.35)}
+#: The bounds of a struck ball's fitted motion: speeds and spins a cue can give.
+BALL_BOUNDS = {"vx": (-15.0, 15.0), "vy": (-15.0, 15.0), "wx": (-600.0, 600.0), "wy": (-600.0, 600.0),
+               "wz": (-600.0, 600.0)}
+
+
+@dataclass
+class ShotReport:
+    """What the fit says of one shot: its unknowns, its residuals' RMS overall and per ball [m]
+    (outliers, beyond 5 noises, left out and counted), and its contacts in the fitted simulation."""
+    name: str
+    unknowns: Dict[str, float]
+    rms: float
+    rms_per_ball: Dict[int, float]
+    outliers: int
+    observations: int
+    contacts: Dict[str, int]
+
+
+@dataclass
+class Calibration:
+    """A fit's result: the coefficients with standard errors and correlations, each shot's report,
+    warnings for what the data cannot determine, and the physics as a YAML the module, `simulate`
+    and the node load as it is."""
+    table: str
+    models: Dict[str, str]
+    values: Dict[str, float]
+    standard_errors: Dict[str, float]
+    correlations: np.ndarray
+    fitted: List[str]
+    shots: List[ShotReport]
+    warnings: List[str]
+    noise: float
+    cost: float
+    seconds: float
+    evaluations: int
+    success: bool
+    message: str
+    params: Dict[str, float] = field(default_factory=dict)
+    residuals: Optional[np.ndarray] = None
+
+    def engine(self):
+        """A cue_sim.Engine with the fitted physics."""
+        from cue_sim.api import Engine
+        return Engine(self.table, self.models["ball_ball"], self.models["cushion"], **self.params)
+
+    def summary(self) -> str:
+        lines = [f"fit of {', '.join(self.fitted)} to {len(self.shots)} shots on {self.table} "
+                 f"({self.models['ball_ball']} ball-ball, {self.models['cushion']} cushions): {self.message}"]
+        for name in self.fitted:
+            lines.append(f"  {name:<24} {self.values[name]:.6g} +- {self.standard_errors[name]:.2g}")
+        rms = np.sqrt(np.mean([s.rms ** 2 for s in self.shots]))
+        lines.append(f"  residual RMS {1e3 * rms:.2f} mm over {sum(s.observations for s in self.shots)} positions, "
+                     f"{sum(s.outliers for s in self.shots)} outliers; {self.evaluations} evaluations, "
+                     f"{self.seconds:.1f} s")
+        lines += [f"  warning: {w}" for w in self.warnings]
+        return "\n".join(lines)
+
+    def to_yaml(self) -> str:
+        """The physics as config/physics.yaml has it: every coefficient, the fitted ones with their
+        standard error, and the models."""
+        from cue_sim.api import parameters
+        declared = parameters()
+        lines = [f"# cue_sim.calibrate: {', '.join(self.fitted)} fitted to {len(self.shots)} shots "
+                 f"({self.message}); the others as given.",
+                 "# Load with `rosparam load` into the table node's namespace, as a scene file's physics: block,",
+                 "# or as cue_sim.Engine(table, **yaml.safe_load(...))."]
+        for name, value in self.params.items():
+            note = declared[name]["description"].split(";")[0]
+            if name in self.fitted:
+                note = f"fitted: +- {self.standard_errors[name]:.3g}; {note}"
+            lines.append(f"{name}: {value!r}  # [{declared[name]['unit']}] {note}")
+        lines.append(f"ball_ball_model: {self.models['ball_ball']}")
+        lines.append(f"cushion_model: {self.models['cushion']}")
+        return "\n".join(lines) + "\n"
+
+
+def _coefficient_bounds(name: str, params: Dict[str, float]) -> Tuple[float, float]:
+    from cue_sim.api import parameters
+    declared = parameters()[name]
+    low, high = declared["min"], declared["max"]
+    if name == "cushion_height":  # strictly between R and 2R
+        radius = params["ball_radius"]
+        low, high = radius * 1.0001, radius * 1.9999
+    return float(low), float(high)
+
+
+class _Problem:
+    """The least-squares problem: x is the fitted coefficients, then each shot's unknowns."""
+
+    def __init__(self, tracks: Sequence[Track], table: str, models: Dict[str, str], params: Dict[str, float],
+                 fit: Sequence[str], noise: float, threads: int):
+        self.tracks, self.table, self.models = list(tracks), table, models
+        self.params, self.fit, self.noise, self.threads = dict(params), list(fit), noise, threads
+        self.evaluations = 0
+        self._engine_key, self._engine = None, None
+        self.shot_names: List[List[str]] = []
+        self.rows: List[Tuple[np.ndarray, np.ndarray]] = []  # per shot: observed (k, j) pairs
+        x0, low, high = [], [], []
+        for name in self.fit:
+            bounds = _coefficient_bounds(name, self.params)
+            x0.append(min(max(self.params[name], bounds[0]), bounds[1]))
+            low.append(bounds[0])
+            high.append(bounds[1])
+        for track in self.tracks:
+            guess, names, bounds = self._shot_guess(track)
+            self.shot_names.append(names)
+            for name in names:
+                x0.append(guess[name])
+                low.append(bounds[name][0])
+                high.append(bounds[name][1])
+        self.x0, self.low, self.high = np.array(x0), np.array(low), np.array(high)
+        self.x0 = np.clip(self.x0, self.low + 1e-12 * (self.high - self.low), self.high - 1e-12 * (self.high - self.low))
+        self.set_window(math.inf, self.x0)
+
+    def set_window(self, window: float, x) -> None:
+        """Compares only the observations up to `window` seconds after each shot's strike (as x
+        has it): a fit that starts from the first moments of each shot and takes in the rest as
+        it goes does not lock onto a wrong sequence of contacts."""
+        self.rows = []
+        for track, unknowns in zip(self.tracks, self.shot_unknowns(x)):
+            k, j = np.nonzero(track.seen())
+            inside = track.times[k] <= unknowns["t0"] + window
+            self.rows.append((k[inside], j[inside]))
+        self.size = sum(len(r[0]) for r in self.rows) * 2
+
+    # -- a shot's unknowns and where it starts ------------------------------------------------
+    def _shot_guess(self, track: Track):
+        """Initial unknowns of a shot, their names and bounds, from the struck ball's first motion."""
+        j = int(np.flatnonzero(track.ball_ids == track.struck_ball)[0])
+        rest = track.resting_positions()
+        seen = track.seen()[:, j]
+        moved = seen & (np.linalg.norm(track.positions[:, j] - rest[j], axis=1) > MOVED_IN_NOISES * self.noise)
+        if not moved.any():
+            raise ValueError(f"{track.label}the struck ball {track.struck_ball} is never seen moving")
+        k1 = int(np.flatnonzero(moved)[0])
+        following = np.flatnonzero(seen[k1:])[:4] + k1
+        if len(following) >= 2:
+            v = np.polyfit(track.times[following], track.positions[following, j], 1)[0]
+        else:
+            v = (track.positions[k1, j] - rest[j]) / max(track.times[k1] - track.times[max(k1 - 1, 0)], 1e-3)
+        speed = max(float(np.linalg.norm(v)), 0.05)
+        t0 = track.times[k1] - float(np.linalg.norm(track.positions[k1, j] - rest[j])) / speed
+        # The strike came before the first frame that shows the ball moved: within the frame
+        # before it for a fast shot, a few frames before for a slow one.
+        period = float(np.median(np.diff(track.times)))
+        t_low = track.times[k1] - max(3 * period, 0.1)
+        guess = {"t0": min(max(t0, t_low + 1e-6), track.times[k1] - 1e-6)}
+        bounds = {"t0": (t_low, track.times[k1])}
+        names = ["t0"]
+        if "speed" in track.strike:
+            for name in ("phi", "theta", "a", "b"):
+                if name not in track.strike:
+                    names.append(name)
+                    bounds[name] = STRIKE_BOUNDS[name]
+                    guess[name] = math.atan2(v[1], v[0]) if name == "phi" else 0.0
+        else:
+            names += ["vx", "vy", "wx", "wy", "wz"]
+            guess.update(vx=float(v[0]), vy=float(v[1]), wx=0.0, wy=0.0, wz=0.0)
+            bounds.update(BALL_BOUNDS)
+        # Where each ball stood before the shot is an unknown too, from where it was first seen:
+        # a detector's noise on it would otherwise shift the whole track.
+        rest = track.resting_positions(before=t0)
+        for index, ball in enumerate(track.ball_ids):
+            if np.all(np.isfinite(rest[index])):
+                for axis, value in zip("xy", rest[index]):
+                    names.append(f"{axis}{ball}")
+                    guess[names[-1]] = float(value)
+                    bounds[names[-1]] = (float(value) - REST_SLACK, float(value) + REST_SLACK)
+        return guess, names, bounds
+
+    def coefficients(self, x) -> Dict[str, float]:
+        return dict(self.params, **{name: float(x[i]) for i, name in enumerate(self.fit)})
+
+    def shot_unknowns(self, x) -> List[Dict[str, float]]:
+        out, i = [], len(self.fit)
+        for names in self.shot_names:
+            out.append({name: float(x[i + n]) for n, name in enumerate(names)})
+            i += len(names)
+        return out
+
+    def engine(self, x):
+        from cue_sim.api import Engine
+        key = tuple(float(v) for v in x[:len(self.fit)])
+        if key != self._engine_key:  # a Jacobian's shot columns share the coefficients: one engine
+            self._engine = Engine(self.table, self.models["ball_ball"], self.models["cushion"], **self.coefficients(x))
+            self._engine_key = key
+        return self._engine
+
+    @staticmethod
+    def rest_of(track: Track, unknowns: Dict[str, float]) -> np.ndarray:
+        """(N, 2): where each ball of the track stood before the shot, NaN for a ball never seen."""
+        return np.array([[unknowns.get(f"x{ball}", np.nan), unknowns.get(f"y{ball}", np.nan)]
+                         for ball in track.ball_ids])
+
+    def _start(self, engine, track: Track, rest: np.ndarray, unknowns: Dict[str, float]):
+        from cue_sim.api import State
+        known = np.all(np.isfinite(rest), axis=1)
+        ids = track.ball_ids[known]
+        velocities, spins = np.zeros((len(ids), 3)), np.zeros((len(ids), 3))
+        strike = None
+        struck = int(np.flatnonzero(ids == track.struck_ball)[0])
+        if "vx" in unknowns:
+            velocities[struck, :2] = unknowns["vx"], unknowns["vy"]
+            spins[struck] = unknowns["wx"], unknowns["wy"], unknowns["wz"]
+        else:
+            fields = {name: track.strike.get(name, unknowns.get(name, 0.0)) for name in ("speed", "phi", "theta",
+                                                                                           "a", "b")}
+            strike = (track.struck_ball, fields["speed"], fields["phi"], fields["theta"], fields["a"], fields["b"])
+        return State.from_balls(ids, rest[known], velocities, spins), strike, known
+
+    def predict(self, x):
+        """Per shot: predicted positions (K, N, 2) at every instant of its track, its contacts and
+        whether it could be predicted."""
+        engine = self.engine(x)
+        starts, strikes, times, extras = [], [], [], []
+        rests = []
+        for track, unknowns in zip(self.tracks, self.shot_unknowns(x)):
+            rest = self.rest_of(track, unknowns)
+            rests.append(rest)
+            start, strike, known = self._start(engine, track, rest, unknowns)
+            after = track.times > unknowns["t0"]
+            starts.append(start._arrays())
+            strikes.append(strike)
+            times.append(track.times[after] - unknowns["t0"])
+            extras.append((after, known))
+        try:
+            predictions = _core.predict_tracks(engine._engine, starts, strikes, times, self.threads)
+        except ValueError:
+            predictions = None
+        self.evaluations += 1
+        out = []
+        for i, (track, rest, (after, known)) in enumerate(zip(self.tracks, rests, extras)):
+            positions = np.repeat(rest[None], len(track.times), axis=0)
+            p = None if predictions is None else predictions[i]
+            ok = p is not None and not p["error"]
+            if ok:
+                positions[np.ix_(after, known)] = p["positions"]
+            out.append((positions, ok, p))
+        return out
+
+    def residuals(self, x) -> np.ndarray:
+        parts = []
+        for (positions, ok, _), track, (k, j) in zip(self.predict(x), self.tracks, self.rows):
+            if not ok:
+                parts.append(np.full(2 * len(k), UNPREDICTABLE))
+                continue
+            parts.append(((positions[k, j] - track.positions[k, j]) / self.noise).ravel())
+        return np.concatenate(parts)
+
+    def sparsity(self):
+        from scipy.sparse import lil_matrix
+        pattern = lil_matrix((self.size, len(self.x0)), dtype=int)
+        row, column = 0, len(self.fit)
+        for names, (k, _) in zip(self.shot_names, self.rows):
+            rows = slice(row, row + 2 * len(k))
+            pattern[rows, :len(self.fit)] = 1
+            pattern[rows, column:column + len(names)] = 1
+            row += 2 * len(k)
+            column += len(names)
+        return pattern
+
+
+#: The stages of a fit: (the seconds of each shot compared after its strike, whether the
+#: coefficients move too). The first fits each shot's start alone; each stage starts from the last.
+STAGES = ((0.3, False), (1.0, True), (2.5, True), (math.inf, True))
+
+
+def calibrate(tracks: Sequence[Track], fit: Sequence[str] = ("mu_slide", "mu_roll"), table: str = "7ft",
+              ball_ball_model: Optional[str] = None, cushion_model: Optional[str] = None,
+              params: Optional[Dict[str, float]] = None, noise: float = DEFAULT_NOISE, threads: int = 0,
+              max_evaluations: int = 1000, progress=None) -> Calibration:
+    """Fits the coefficients named in `fit` (of FITTABLE, each within its registry range) and
+    every shot's unknowns to `tracks`, on `table` with the given models, the other coefficients
+    from `params` (else the defaults). `noise` [m] is the observations' standard deviation: the
+    unit of the residuals and the robust loss's scale. `progress(stage, evaluations, cost)` is
+    called as the solver goes. Returns a Calibration."""
+    from cue_sim.api import Engine
+    if not tracks:
+        raise ValueError("tracks: at least one shot")
+    unknown = [name for name in fit if name not in FITTABLE]
+    if unknown or len(set(fit)) != len(fit):
+        raise ValueError(f"fit: {', '.join(unknown) or 'a name twice'}; it takes distinct names of "
+                         f"{', '.join(FITTABLE)}")
+    if not (noise > 0 and math.isfinite(noise)):
+        raise ValueError(f"noise: a positive standard deviation [m], got {noise}")
+    base = Engine(table, ball_ball_model, cushion_model, **(params or {}))
+    models = {"ball_ball": base.models["ball_ball"], "cushion": base.models["cushion"]}
+    problem = _Problem(tracks, table, models, base.params, fit, noise, threads)
+    begin = time.perf_counter()
+    x = problem.x0.copy()
+    result = None
+    for stage, (window, coefficients_too) in enumerate(STAGES):
+        problem.set_window(window, x)
+        active = np.ones(len(x), dtype=bool)
+        active[:len(problem.fit)] = coefficients_too
+        result = _solve(problem, x, active, max_evaluations, lambda n, c, s=stage: progress and progress(s, n, c))
+        x[active] = result.x
+    return _report(problem, x, result, time.perf_counter() - begin)
+
+
+def _solve(problem: _Problem, x, active, max_evaluations: int, progress):
+    """least_squares over the active components of x, the others held."""
+    from scipy.optimize import least_squares
+    full = x.copy()
+
+    def residuals(free):
+        full[active] = free
+        r = problem.residuals(full)
+        progress(problem.evaluations, float(np.sum(np.sqrt(1 + r ** 2) - 1)))  # soft_l1's cost
+        return r
+
+    return least_squares(residuals, x[active], bounds=(problem.low[active], problem.high[active]), loss="soft_l1",
+                         f_scale=1.0, jac_sparsity=problem.sparsity().tocsc()[:, np.flatnonzero(active)], x_scale="jac",
+                         max_nfev=max_evaluations, method="trf", tr_solver="lsmr")
+
+
+def _covariance(jacobian, cost: float, observations: int) -> np.ndarray:
+    """The Gauss-Newton covariance of x: s^2 (J^T J)^+ with s^2 the residuals' variance per degree of
+    freedom (the robust cost's); a direction the data does not see gets an infinite variance."""
+    j = jacobian.toarray() if hasattr(jacobian, "toarray") else np.asarray(jacobian)
+    dof = max(observations - j.shape[1], 1)
+    s2 = 2 * cost / dof
+    _, singular, vt = np.linalg.svd(j, full_matrices=False)
+    keep = singular > singular[0] * 1e-10
+    inverse = (vt[keep].T / singular[keep] ** 2) @ vt[keep]
+    cov = s2 * inverse
+    blind = ~keep
+    if blind.any():  # the null space's directions: infinite along them
+        unseen = np.abs(vt[blind]).max(axis=0) > 1e-6
+        cov[unseen, :] = np.inf
+        cov[:, unseen] = np.inf
+    return cov
+
+
+def _report(problem: _Problem, x, result, seconds: float) -> Calibration:
+    cov = _covariance(result.jac, result.cost, problem.size)
+    n = len(problem.fit)
+    errors = np.sqrt(np.abs(np.diag(cov)[:n]))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        corr = cov[:n, :n] / np.outer(errors, errors)
+    values = problem.coefficients(x)
+    shots, contacts = [], {"ball_ball": 0, "cushion": 0}
+    predicted = problem.predict(x)
+    for track, unknowns, (positions, ok, p), (k, j) in zip(problem.tracks, problem.shot_unknowns(x), predicted,
+                                                            problem.rows):
+        miss = np.linalg.norm(positions[k, j] - track.positions[k, j], axis=1)
+        inlier = miss <= 5 * problem.noise
+        per_ball = {}
+        for index, ball in enumerate(track.ball_ids):
+            mine = (j == index) & inlier
+            if mine.any():
+                per_ball[int(ball)] = float(np.sqrt(np.mean(miss[mine] ** 2)))
+        counts = {"ball_ball": p["ball_ball"], "cushion": p["cushion"], "pocketed": p["pocketed"]} if ok else {}
+        for kind in contacts:
+            contacts[kind] += counts.get(kind, 0)
+        shots.append(ShotReport(track.name, unknowns, float(np.sqrt(np.mean(miss[inlier] ** 2))) if inlier.any()
+                                else float("nan"), per_ball, int((~inlier).sum()), len(k), counts))
+    warnings = _warnings(problem, values, errors, contacts, shots, result)
+    return Calibration(problem.table, problem.models, {name: values[name] for name in problem.fit},
+                       {name: float(e) for name, e in zip(problem.fit, errors)}, corr, list(problem.fit), shots,
+                       warnings, problem.noise, float(result.cost), seconds, problem.evaluations,
+                       bool(result.success), result.message, values, result.fun * problem.noise)
+
+
+def _warnings(problem, values, errors, contacts, shots, result) -> List[str]:
+    out = []
+    for name, error in zip(problem.fit, errors):
+        if name in NEEDS_BALL_BALL and contacts["ball_ball"] == 0:
+            out.append(f"{name}: no shot has a ball-ball contact, so the data says nothing of it")
+        elif name in NEEDS_CUSHION and contacts["cushion"] == 0:
+            out.append(f"{name}: no shot meets a cushion, so the data says nothing of it")
+        elif not np.isfinite(error) or error > UNDETERMINED_SHARE * abs(values[name]):
+            out.append(f"{name}: not determined by the data (standard error {error:.2g} on {values[name]:.3g})")
+    failed = [s.name or str(i) for i, s in enumerate(shots) if not s.contacts]
+    if failed:
+        out.append(f"shots that could not be simulated at the solution: {', '.join(failed)}")
+    if not result.success:
+        out.append(f"the solver stopped before converging: {result.message}")
+    return out
