@@ -4,8 +4,9 @@ unknowns with them, by robust nonlinear least squares (scipy.optimize.least_squa
 Every observed position is compared with the engine's exact prediction at that instant
 (cue_sim._core.predict_tracks: the events between two frames are where they happen, not at a
 frame). A shot's unknowns are when it was struck on the observer's clock (t0) and either the
-struck ball's velocity and spin just after the strike (vx, vy, wx, wy, wz: nothing assumed of the
-cue) or, when the strike's speed is known, the strike's fields that are not (phi, theta, a, b;
+struck ball's velocity and spin just after the strike (vx, vy; the topspin w_top about the
+horizontal axis across the motion, negative for draw; the side spin wz about the vertical: a level
+cue's spins, nothing assumed of the cue's mass or tip) or, when the strike's speed is known, the strike's fields that are not (phi, theta, a, b;
 the cue's model then turns them into the ball's motion). The balls that were not struck start
 where they stood. The loss is robust (soft_l1 on residuals in units of the observation noise), so
 that a detector's outliers do not drag the fit. Standard errors come from the Jacobian at the
@@ -15,6 +16,7 @@ unknowns marginalised; doc/calibration.md says what the method assumes and where
 from __future__ import annotations
 
 import math
+import os
 import time
 from dataclasses import dataclass, field
 from typing import Dict, List, Optional, Sequence, Tuple
@@ -54,8 +56,7 @@ REST_SLACK = 0.02
 STRIKE_BOUNDS = {"speed": (0.05, 12.0), "phi": (-4 * math.pi, 4 * math.pi), "theta": (0.0, 1.4),
                  "a": (-0.35, 0.35), "b": (-0.35, 0.35)}
 #: The bounds of a struck ball's fitted motion: speeds and spins a cue can give.
-BALL_BOUNDS = {"vx": (-15.0, 15.0), "vy": (-15.0, 15.0), "wx": (-600.0, 600.0), "wy": (-600.0, 600.0),
-               "wz": (-600.0, 600.0)}
+BALL_BOUNDS = {"vx": (-15.0, 15.0), "vy": (-15.0, 15.0), "w_top": (-600.0, 600.0), "wz": (-600.0, 600.0)}
 
 
 @dataclass
@@ -150,6 +151,7 @@ class _Problem:
         self._engine_key, self._engine = None, None
         self.shot_names: List[List[str]] = []
         self.rows: List[Tuple[np.ndarray, np.ndarray]] = []  # per shot: observed (k, j) pairs
+        self.alone: List[float] = []  # per shot: how long the struck ball moved alone [s], as seen
         x0, low, high = [], [], []
         for name in self.fit:
             bounds = _coefficient_bounds(name, self.params)
@@ -167,7 +169,7 @@ class _Problem:
         self.x0 = np.clip(self.x0, self.low + 1e-12 * (self.high - self.low), self.high - 1e-12 * (self.high - self.low))
         self.set_window(math.inf, self.x0)
 
-    def set_window(self, window: float, x) -> None:
+    def set_window(self, window: float, x, alone: bool = False) -> None:
         """Compares only the observations up to `window` seconds after each shot's strike (as x
         has it): a fit that starts from the first moments of each shot and takes in the rest as
         it goes does not lock onto a wrong sequence of contacts."""
@@ -179,18 +181,46 @@ class _Problem:
         self.size = sum(len(r[0]) for r in self.rows) * 2
 
     # -- a shot's unknowns and where it starts ------------------------------------------------
+    def _first_motion(self, track: Track, j: int, rest: np.ndarray) -> Optional[int]:
+        """The first instant ball j is seen away from where it stood, in that sighting and the next
+        two (an outlier is one sighting), or None."""
+        seen = track.seen()[:, j]
+        away = seen & (np.linalg.norm(track.positions[:, j] - rest[j], axis=1) > MOVED_IN_NOISES * self.noise)
+        sightings = np.flatnonzero(seen)
+        for n, k in enumerate(sightings[:-2]):
+            if away[sightings[n:n + 3]].all():
+                return int(k)
+        return None
+
+    def _robust_velocity(self, times: np.ndarray, points: np.ndarray) -> np.ndarray:
+        """The velocity of a straight, steady line through the points, an outlier or two left out."""
+        keep = np.ones(len(times), dtype=bool)
+        for _ in range(3):
+            slope, offset = np.polyfit(times[keep], points[keep], 1)
+            miss = np.linalg.norm(points - (np.outer(times, slope) + offset), axis=1)
+            again = miss <= max(4 * self.noise, np.median(miss[keep]) * 4)
+            if again.sum() < 2 or np.array_equal(again, keep):
+                break
+            keep = again
+        return slope
+
     def _shot_guess(self, track: Track):
-        """Initial unknowns of a shot, their names and bounds, from the struck ball's first motion."""
+        """Initial unknowns of a shot, their names and bounds, from the struck ball's first motion
+        before another ball moves."""
         j = int(np.flatnonzero(track.ball_ids == track.struck_ball)[0])
         rest = track.resting_positions()
         seen = track.seen()[:, j]
-        moved = seen & (np.linalg.norm(track.positions[:, j] - rest[j], axis=1) > MOVED_IN_NOISES * self.noise)
-        if not moved.any():
+        k1 = self._first_motion(track, j, rest)
+        if k1 is None:
             raise ValueError(f"{track.label}the struck ball {track.struck_ball} is never seen moving")
-        k1 = int(np.flatnonzero(moved)[0])
-        following = np.flatnonzero(seen[k1:])[:4] + k1
-        if len(following) >= 2:
-            v = np.polyfit(track.times[following], track.positions[following, j], 1)[0]
+        others = [self._first_motion(track, i, rest) for i in range(len(track.ball_ids)) if i != j]
+        others = [track.times[k] for k in others if k is not None and k > k1]
+        alone_until = min(others) if others else math.inf
+        # The struck ball alone, over its first 0.2 s at most: a straight line, near enough.
+        alone = np.flatnonzero(seen & (track.times >= track.times[k1]) & (track.times < min(alone_until,
+                                                                                                 track.times[k1] + 0.2)))
+        if len(alone) >= 3:
+            v = self._robust_velocity(track.times[alone], track.positions[alone, j])
         else:
             v = (track.positions[k1, j] - rest[j]) / max(track.times[k1] - track.times[max(k1 - 1, 0)], 1e-3)
         speed = max(float(np.linalg.norm(v)), 0.05)
@@ -200,6 +230,7 @@ class _Problem:
         period = float(np.median(np.diff(track.times)))
         t_low = track.times[k1] - max(3 * period, 0.1)
         guess = {"t0": min(max(t0, t_low + 1e-6), track.times[k1] - 1e-6)}
+        self.alone.append(alone_until - guess["t0"])
         bounds = {"t0": (t_low, track.times[k1])}
         names = ["t0"]
         if "speed" in track.strike:
@@ -209,8 +240,8 @@ class _Problem:
                     bounds[name] = STRIKE_BOUNDS[name]
                     guess[name] = math.atan2(v[1], v[0]) if name == "phi" else 0.0
         else:
-            names += ["vx", "vy", "wx", "wy", "wz"]
-            guess.update(vx=float(v[0]), vy=float(v[1]), wx=0.0, wy=0.0, wz=0.0)
+            names += ["vx", "vy", "w_top", "wz"]
+            guess.update(vx=float(v[0]), vy=float(v[1]), w_top=0.0, wz=0.0)
             bounds.update(BALL_BOUNDS)
         # Where each ball stood before the shot is an unknown too, from where it was first seen:
         # a detector's noise on it would otherwise shift the whole track.
@@ -255,8 +286,10 @@ class _Problem:
         strike = None
         struck = int(np.flatnonzero(ids == track.struck_ball)[0])
         if "vx" in unknowns:
-            velocities[struck, :2] = unknowns["vx"], unknowns["vy"]
-            spins[struck] = unknowns["wx"], unknowns["wy"], unknowns["wz"]
+            v = np.array([unknowns["vx"], unknowns["vy"]])
+            across = np.array([-v[1], v[0]]) / max(float(np.linalg.norm(v)), 1e-12)  # z x v: the rolling axis
+            velocities[struck, :2] = v
+            spins[struck] = unknowns["w_top"] * across[0], unknowns["w_top"] * across[1], unknowns["wz"]
         else:
             fields = {name: track.strike.get(name, unknowns.get(name, 0.0)) for name in ("speed", "phi", "theta",
                                                                                            "a", "b")}
@@ -316,14 +349,18 @@ class _Problem:
 
 
 #: The stages of a fit: (the seconds of each shot compared after its strike, whether the
-#: coefficients move too). The first fits each shot's start alone; each stage starts from the last.
-STAGES = ((0.3, False), (1.0, True), (2.5, True), (math.inf, True))
+#: coefficients move too). The first fits each shot's start while the struck ball moves alone, the
+#: second its first contact; each stage starts from the last.
+STAGES = ((0.3, False), (0.3, False), (0.6, True), (1.0, True), (1.6, True), (2.5, True), (4.0, True), (math.inf, True))
+#: An intermediate stage stops at this relative change of the cost (it is a start for the next);
+#: the last at least_squares' own default.
+STAGE_TOLERANCE = 1e-5
 
 
 def calibrate(tracks: Sequence[Track], fit: Sequence[str] = ("mu_slide", "mu_roll"), table: str = "7ft",
               ball_ball_model: Optional[str] = None, cushion_model: Optional[str] = None,
               params: Optional[Dict[str, float]] = None, noise: float = DEFAULT_NOISE, threads: int = 0,
-              max_evaluations: int = 1000, progress=None) -> Calibration:
+              max_evaluations: int = 500, progress=None) -> Calibration:
     """Fits the coefficients named in `fit` (of FITTABLE, each within its registry range) and
     every shot's unknowns to `tracks`, on `table` with the given models, the other coefficients
     from `params` (else the defaults). `noise` [m] is the observations' standard deviation: the
@@ -345,15 +382,20 @@ def calibrate(tracks: Sequence[Track], fit: Sequence[str] = ("mu_slide", "mu_rol
     x = problem.x0.copy()
     result = None
     for stage, (window, coefficients_too) in enumerate(STAGES):
-        problem.set_window(window, x)
+        problem.set_window(window, x, alone=stage == 0)
         active = np.ones(len(x), dtype=bool)
         active[:len(problem.fit)] = coefficients_too
-        result = _solve(problem, x, active, max_evaluations, lambda n, c, s=stage: progress and progress(s, n, c))
+        last = stage == len(STAGES) - 1
+        result = _solve(problem, x, active, max_evaluations if last else max_evaluations // 5,
+                        1e-8 if last else STAGE_TOLERANCE, lambda n, c, s=stage: progress and progress(s, n, c))
         x[active] = result.x
+        if os.environ.get("CUE_SIM_CALIBRATE_DEBUG"):
+            print(f"stage {stage}: nfev {result.nfev} njev {result.njev} cost {result.cost:.1f} {result.message}",
+                  flush=True)
     return _report(problem, x, result, time.perf_counter() - begin)
 
 
-def _solve(problem: _Problem, x, active, max_evaluations: int, progress):
+def _solve(problem: _Problem, x, active, max_evaluations: int, tolerance: float, progress):
     """least_squares over the active components of x, the others held."""
     from scipy.optimize import least_squares
     full = x.copy()
@@ -366,7 +408,7 @@ def _solve(problem: _Problem, x, active, max_evaluations: int, progress):
 
     return least_squares(residuals, x[active], bounds=(problem.low[active], problem.high[active]), loss="soft_l1",
                          f_scale=1.0, jac_sparsity=problem.sparsity().tocsc()[:, np.flatnonzero(active)], x_scale="jac",
-                         max_nfev=max_evaluations, method="trf", tr_solver="lsmr")
+                         max_nfev=max_evaluations, method="trf", tr_solver="lsmr", ftol=tolerance, xtol=tolerance)
 
 
 def _covariance(jacobian, cost: float, observations: int) -> np.ndarray:
