@@ -408,7 +408,8 @@ def _solve(problem: _Problem, x, active, max_evaluations: int, tolerance: float,
 
     return least_squares(residuals, x[active], bounds=(problem.low[active], problem.high[active]), loss="soft_l1",
                          f_scale=1.0, jac_sparsity=problem.sparsity().tocsc()[:, np.flatnonzero(active)], x_scale="jac",
-                         max_nfev=max_evaluations, method="trf", tr_solver="lsmr", ftol=tolerance, xtol=tolerance)
+                         max_nfev=max_evaluations, method="trf", tr_solver="lsmr", tr_options={"atol": 1e-10, "btol": 1e-10}, ftol=tolerance,
+                         xtol=1e-8)
 
 
 def _covariance(jacobian, cost: float, observations: int) -> np.ndarray:
