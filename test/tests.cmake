@@ -134,3 +134,7 @@ set_tests_properties(rviz_quiet PROPERTIES RUN_SERIAL TRUE TIMEOUT 300 ENVIRONME
 catkin_add_gtest(learning_tests test/learning/test_environment.cpp)
 target_link_libraries(learning_tests cue_sim_learning cue_sim_table_description gtest_main)
 target_include_directories(learning_tests PRIVATE src)
+
+catkin_add_gtest(calibration_tests test/calibration/test_track_prediction.cpp)
+target_link_libraries(calibration_tests cue_sim_calibration cue_sim_table_description gtest_main)
+target_include_directories(calibration_tests PRIVATE src)

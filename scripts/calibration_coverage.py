@@ -1,0 +1,61 @@
+#!/usr/bin/env python3
+"""How often the fit's intervals cover the truth (doc/calibration.md, "Coverage"): each trial draws
+hidden coefficients in a lab's ranges, plays random shots with them (cushion and ball-ball contacts
+among them), observes them with a tracker's noise, outliers and gaps (cue_sim.calibrate.synthetic),
+fits, and counts whether the truth lies within one and two standard errors of each fitted value.
+A fit whose errors are right covers near 68 % and 95 %.
+
+    /usr/bin/python3 scripts/calibration_coverage.py [--trials 40] [--shots 8] [--noise 0.002]
+"""
+import argparse
+import sys
+import time
+
+import numpy as np
+
+from cue_sim.api import Engine
+from cue_sim.calibrate import calibrate
+from cue_sim.calibrate.synthetic import random_shots
+
+#: The ranges hidden coefficients are drawn in: a cloth and cushions a lab may have.
+HIDDEN = {"mu_slide": (0.15, 0.35), "mu_roll": (0.006, 0.014), "e_cushion": (0.7, 0.9), "e_ball": (0.9, 0.97)}
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--trials", type=int, default=40)
+    parser.add_argument("--shots", type=int, default=8)
+    parser.add_argument("--noise", type=float, default=0.002, help="[m] each axis")
+    parser.add_argument("--outliers", type=float, default=0.01)
+    parser.add_argument("--seed", type=int, default=1)
+    args = parser.parse_args()
+    rng = np.random.default_rng(args.seed)
+    within = {name: [0, 0] for name in HIDDEN}
+    relative = {name: [] for name in HIDDEN}
+    seconds = []
+    for trial in range(args.trials):
+        hidden = {name: float(rng.uniform(*bounds)) for name, bounds in HIDDEN.items()}
+        tracks = random_shots(Engine("7ft", **hidden), args.shots, seed=int(rng.integers(2**32)), noise=args.noise,
+                              outliers=args.outliers, gaps=0.05)
+        begin = time.perf_counter()
+        result = calibrate(tracks, fit=list(HIDDEN), noise=args.noise)
+        seconds.append(time.perf_counter() - begin)
+        for name, value in hidden.items():
+            z = abs(result.values[name] - value) / result.standard_errors[name]
+            within[name][0] += z <= 1
+            within[name][1] += z <= 2
+            relative[name].append(abs(result.values[name] / value - 1))
+        print(f"trial {trial + 1}/{args.trials}: {seconds[-1]:.1f} s, "
+              + ", ".join(f"{n} {100 * relative[n][-1]:.2f} %" for n in HIDDEN)
+              + ("" if not result.warnings else f"; warnings: {result.warnings}"), flush=True)
+    print(f"\n{args.trials} trials of {args.shots} shots, noise {1e3 * args.noise:g} mm, "
+          f"{100 * args.outliers:g} % outliers; a fit takes {np.median(seconds):.1f} s (median)")
+    print(f"{'coefficient':<12} {'within 1 SE':>12} {'within 2 SE':>12} {'median error':>13} {'largest':>9}")
+    for name in HIDDEN:
+        print(f"{name:<12} {100 * within[name][0] / args.trials:11.0f}% {100 * within[name][1] / args.trials:11.0f}% "
+              f"{100 * np.median(relative[name]):12.2f}% {100 * np.max(relative[name]):8.2f}%")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

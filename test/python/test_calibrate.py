@@ -1,0 +1,83 @@
+"""cue_sim.calibrate: fits of the simulator to observed shots whose coefficients are known (the
+simulator's own shots, observed with a tracker's noise, outliers and gaps), the warnings for what
+the data cannot tell, the track files, and refusals."""
+import math
+
+import numpy as np
+import pytest
+import yaml
+
+from cue_sim.api import Engine
+from cue_sim.calibrate import Track, calibrate, load_tracks, save_tracks
+from cue_sim.calibrate.synthetic import observe, random_shots
+
+#: Hidden coefficients are drawn in these ranges: a cloth and cushions a lab may have.
+HIDDEN = {"mu_slide": (0.15, 0.35), "mu_roll": (0.006, 0.014), "e_cushion": (0.7, 0.9), "e_ball": (0.9, 0.97)}
+
+
+def test_hidden_coefficients_come_back_within_two_standard_errors_and_five_percent():
+    rng = np.random.default_rng(2026)
+    hidden = {name: float(rng.uniform(*bounds)) for name, bounds in HIDDEN.items()}
+    truth = Engine("7ft", **hidden)
+    tracks = random_shots(truth, 8, seed=7, noise=0.002, outliers=0.01, gaps=0.05)
+    assert sum(t.truth["ball_ball"] > 0 for t in tracks) >= 4 and sum(t.truth["cushion"] > 0 for t in tracks) >= 4
+    result = calibrate(tracks, fit=list(HIDDEN), noise=0.002)
+    assert result.success and not result.warnings, result.summary()
+    for name, value in hidden.items():
+        fitted, error = result.values[name], result.standard_errors[name]
+        assert 0 < error < 0.05 * value, (name, error)
+        assert abs(fitted - value) <= 2 * error and abs(fitted - value) <= 0.05 * value, (name, fitted, value, error)
+    # The residuals are the observations' noise: a 2-D RMS of sqrt(2) sigma, the outliers set aside.
+    rms = math.sqrt(np.mean([s.rms ** 2 for s in result.shots]))
+    assert 0.9 * math.sqrt(2) * 0.002 < rms < 1.2 * math.sqrt(2) * 0.002
+    for shot, track in zip(result.shots, tracks):
+        assert abs(shot.unknowns["t0"] - track.truth["t0"]) < 2e-3
+    # The physics YAML is the fitted engine's, loaded as the module loads it.
+    loaded = Engine("7ft", **yaml.safe_load(result.to_yaml()))
+    assert loaded.params == result.engine().params and loaded.models == result.engine().models
+    assert all(loaded.params[name] == result.values[name] for name in hidden)
+
+
+def test_what_the_data_cannot_tell_is_said():
+    engine = Engine("7ft")
+    # Slow shots down the middle of the table: no cushion, no other ball.
+    tracks = [observe(engine, [0, 1], [[-0.6, 0.0], [0.6, 0.3]], {"speed": 0.4, "phi": 0.0}, seed=s, name=str(s))
+              for s in range(2)]
+    result = calibrate(tracks, fit=["mu_slide", "mu_roll", "e_cushion", "e_ball"], noise=0.002)
+    said = "\n".join(result.warnings)
+    assert "e_cushion: no shot meets a cushion" in said and "e_ball: no shot has a ball-ball contact" in said
+    assert "mu_roll" not in said and abs(result.values["mu_roll"] - 0.01) < 0.1 * 0.01
+
+
+def test_tracks_round_trip_through_csv_and_npz(tmp_path):
+    engine = Engine("7ft")
+    tracks = random_shots(engine, 2, seed=3, duration=1.0, gaps=0.1)
+    for suffix in (".csv", ".npz"):
+        save_tracks(tmp_path / f"tracks{suffix}", tracks)
+        back = load_tracks(tmp_path / f"tracks{suffix}", strikes=[{"ball": 0}, {}])
+        assert len(back) == 2
+        for a, b in zip(tracks, back):
+            keep = np.isin(a.times, b.times)  # instants where no ball was seen are not written
+            assert np.array_equal(a.times[keep], b.times) and np.array_equal(a.ball_ids, b.ball_ids)
+            assert np.array_equal(a.positions[keep], b.positions, equal_nan=True)
+
+
+def test_bad_input_is_refused_naming_it(tmp_path):
+    good = Track([0.0, 0.1], [0, 1], np.zeros((2, 2, 2)))
+    with pytest.raises(ValueError, match="times"):
+        Track([0.1, 0.0], [0], np.zeros((2, 1, 2)))
+    with pytest.raises(ValueError, match="positions"):
+        Track([0.0, 0.1], [0, 1], np.zeros((2, 1, 2)))
+    with pytest.raises(ValueError, match="ball_ids"):
+        Track([0.0, 0.1], [0, 0], np.zeros((2, 2, 2)))
+    with pytest.raises(ValueError, match="strike"):
+        Track([0.0, 0.1], [1], np.zeros((2, 1, 2)))  # ball 0 struck, not tracked
+    with pytest.raises(ValueError, match="fit: ball_radius"):
+        calibrate([good], fit=["ball_radius"])
+    with pytest.raises(ValueError, match="noise"):
+        calibrate([good], noise=0.0)
+    with pytest.raises(ValueError, match="never seen moving"):
+        calibrate([good])
+    (tmp_path / "bad.csv").write_text("t,ball,x\n0,0,0.1\n")
+    with pytest.raises(ValueError, match="no column y"):
+        load_tracks(tmp_path / "bad.csv")
