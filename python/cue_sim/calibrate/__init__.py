@@ -8,8 +8,8 @@
 
 doc/calibration.md says what it fits, how, what it assumes and where it fails.
 """
-from cue_sim.calibrate.fit import DEFAULT_NOISE, FITTABLE, Calibration, ShotReport, calibrate
+from cue_sim.calibrate.fit import DEFAULT_NOISE, FITTABLE, Calibration, ShotReport, calibrate, compare_models
 from cue_sim.calibrate.tracks import STRIKE_FIELDS, Track, load_tracks, save_tracks
 
-__all__ = ["calibrate", "Calibration", "ShotReport", "Track", "load_tracks", "save_tracks", "FITTABLE",
+__all__ = ["calibrate", "compare_models", "Calibration", "ShotReport", "Track", "load_tracks", "save_tracks", "FITTABLE",
            "DEFAULT_NOISE", "STRIKE_FIELDS"]

@@ -97,7 +97,8 @@ def _columns_to_tracks(columns: Dict[str, np.ndarray], source: str) -> List[Trac
         k = np.searchsorted(times, t[rows])
         j = np.searchsorted(ids, ball[rows].astype(int))
         positions[k, j, 0], positions[k, j, 1] = x[rows], y[rows]
-        tracks.append(Track(times, ids, positions, name=f"{source} shot {name}"))
+        label = int(name) if isinstance(name, float) and name.is_integer() else name
+        tracks.append(Track(times, ids, positions, name=f"{source} shot {label}"))
     return tracks
 
 
