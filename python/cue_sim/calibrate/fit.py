@@ -374,7 +374,7 @@ STAGE_TOLERANCE = 1e-5
 def calibrate(tracks: Sequence[Track], fit: Sequence[str] = ("mu_slide", "mu_roll"), table: str = "7ft",
               ball_ball_model: Optional[str] = None, cushion_model: Optional[str] = None,
               params: Optional[Dict[str, float]] = None, noise: float = DEFAULT_NOISE, threads: int = 0,
-              max_evaluations: int = 500, progress=None) -> Calibration:
+              max_evaluations: int = 300, progress=None) -> Calibration:
     """Fits the coefficients named in `fit` (of FITTABLE, each within its registry range) and
     every shot's unknowns to `tracks`, on `table` with the given models, the other coefficients
     from `params` (else the defaults). `noise` [m] is the observations' standard deviation: the
@@ -407,9 +407,13 @@ def calibrate(tracks: Sequence[Track], fit: Sequence[str] = ("mu_slide", "mu_rol
         x, result = _stages(problem, start, range(held), max_evaluations, progress)
         if best is None or result.cost < best[1].cost:
             best = (x, result)
-    x, result = _stages(problem, best[0], range(held, len(STAGES)), max_evaluations, progress)
-    if _refit_misfits(problem, x, max_evaluations):
-        x, result = _stages(problem, x, [len(STAGES) - 1], max_evaluations, progress)
+    # The whole shots in with the wide loss; then a shot left on other contacts than its data's is
+    # fitted again alone (a narrow loss would leave it be, and take long about it); then the loss
+    # narrows.
+    narrow = next(i for i, stage in enumerate(STAGES) if stage[2] < STAGES[0][2])
+    x, result = _stages(problem, best[0], range(held, narrow), max_evaluations, progress)
+    _refit_misfits(problem, x, max_evaluations)
+    x, result = _stages(problem, x, range(narrow, len(STAGES)), max_evaluations, progress)
     return _report(problem, x, result, time.perf_counter() - begin)
 
 
@@ -435,7 +439,7 @@ def _refit_misfits(problem: _Problem, x, max_evaluations: int) -> bool:
         if share > MISFIT_SHARE:
             alone = _Problem([track], problem.table, problem.models, problem.coefficients(x), [], problem.noise,
                              problem.threads)
-            y, _ = _stages(alone, alone.x0, range(len(STAGES)), max_evaluations, None)
+            y, _ = _stages(alone, alone.x0, range(len(STAGES)), max_evaluations // 5, None)
             alone.set_window(math.inf, y)
             if _misfit_shares(alone, y)[0] < share:
                 x[offset:offset + width] = y
@@ -460,7 +464,7 @@ def _stages(problem: _Problem, x, stages, max_evaluations: int, progress):
                         lambda n, c, s=stage: progress(s, n, c) if progress else None)
         x[active] = result.x
         if os.environ.get("CUE_SIM_CALIBRATE_DEBUG"):
-            print(f"stage {stage}: nfev {result.nfev} njev {result.njev} cost {result.cost:.1f} {result.message} "
+            print(f"{time.perf_counter():.1f} stage {stage}: nfev {result.nfev} njev {result.njev} cost {result.cost:.1f} {result.message} "
                   f"{x[:len(problem.fit)]}", flush=True)
     return x, result
 
