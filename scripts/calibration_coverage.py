@@ -5,7 +5,7 @@ among them), observes them with a tracker's noise, outliers and gaps (cue_sim.ca
 fits, and counts whether the truth lies within one and two standard errors of each fitted value.
 A fit whose errors are right covers near 68 % and 95 %.
 
-    /usr/bin/python3 scripts/calibration_coverage.py [--trials 40] [--shots 8] [--noise 0.002]
+    /usr/bin/python3 scripts/calibration_coverage.py [--trials 40] [--shots 8] [--noise 0.002] [--also NAMES]
 """
 import argparse
 import sys
@@ -28,6 +28,8 @@ def main():
     parser.add_argument("--noise", type=float, default=0.002, help="[m] each axis")
     parser.add_argument("--outliers", type=float, default=0.01)
     parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--also", default="", help="more coefficients to fit, comma-separated (their truth: the "
+                        "defaults), e.g. f_cushion,mu_spin for the six of the issue's timing")
     args = parser.parse_args()
     rng = np.random.default_rng(args.seed)
     within = {name: [0, 0] for name in HIDDEN}
@@ -38,7 +40,7 @@ def main():
         tracks = random_shots(Engine("7ft", **hidden), args.shots, seed=int(rng.integers(2**32)), noise=args.noise,
                               outliers=args.outliers, gaps=0.05)
         begin = time.perf_counter()
-        result = calibrate(tracks, fit=list(HIDDEN), noise=args.noise)
+        result = calibrate(tracks, fit=list(HIDDEN) + [n for n in args.also.split(",") if n], noise=args.noise)
         seconds.append(time.perf_counter() - begin)
         for name, value in hidden.items():
             z = abs(result.values[name] - value) / result.standard_errors[name]
