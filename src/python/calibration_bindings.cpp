@@ -29,9 +29,8 @@ std::optional<calibration::TrackStrike> strikeFrom(const py::handle& row, std::s
     return std::nullopt;
   const auto values = row.cast<std::vector<double>>();
   if (values.size() != 6)
-    throw std::invalid_argument("strikes[" + std::to_string(shot) +
-                                "]: None or (ball, speed, phi, theta, a, b), got " + std::to_string(values.size()) +
-                                " values");
+    throw std::invalid_argument("strikes[" + std::to_string(shot) + "]: None or (ball, speed, phi, theta, a, b), got " +
+                                std::to_string(values.size()) + " values");
   return calibration::TrackStrike{static_cast<int>(values[0]), {values[1], values[2], values[3], values[4], values[5]}};
 }
 

@@ -25,8 +25,8 @@
 #include "cue_sim/session/shot_prediction.hpp"
 #include "cue_sim/table_description/table_catalog.hpp"
 #include "cue_sim/table_description/urdf_table_loader.hpp"
-#include "python/game_bindings.hpp"
 #include "python/calibration_bindings.hpp"
+#include "python/game_bindings.hpp"
 #include "python/learning_bindings.hpp"
 #include "python/state_arrays.hpp"
 

@@ -48,8 +48,8 @@ struct TrackPrediction
 {
   /// Empty if predicted; else why not (a strike refused, a request out of order, the event limit).
   std::string error;
-  std::vector<double> positions;      ///< times x balls x 2 [m] (x, y in the table frame), start's ball order
-  std::vector<std::uint8_t> on_table; ///< times x balls: 0 once a ball is pocketed
+  std::vector<double> positions;       ///< times x balls x 2 [m] (x, y in the table frame), start's ball order
+  std::vector<std::uint8_t> on_table;  ///< times x balls: 0 once a ball is pocketed
   ContactCounts contacts;
 };
 

@@ -464,7 +464,7 @@ def _stages(problem: _Problem, x, stages, max_evaluations: int, progress):
                         lambda n, c, s=stage: progress(s, n, c) if progress else None)
         x[active] = result.x
         if os.environ.get("CUE_SIM_CALIBRATE_DEBUG"):
-            print(f"{time.perf_counter():.1f} stage {stage}: nfev {result.nfev} njev {result.njev} cost {result.cost:.1f} {result.message} "
+            print(f"stage {stage}: nfev {result.nfev} njev {result.njev} cost {result.cost:.1f} {result.message} "
                   f"{x[:len(problem.fit)]}", flush=True)
     return x, result
 
