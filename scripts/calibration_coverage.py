@@ -15,10 +15,8 @@ import numpy as np
 
 from cue_sim.api import Engine
 from cue_sim.calibrate import calibrate
+from cue_sim.calibrate.synthetic import LAB_RANGES as HIDDEN
 from cue_sim.calibrate.synthetic import random_shots
-
-#: The ranges hidden coefficients are drawn in: a cloth and cushions a lab may have.
-HIDDEN = {"mu_slide": (0.15, 0.35), "mu_roll": (0.006, 0.014), "e_cushion": (0.7, 0.9), "e_ball": (0.9, 0.97)}
 
 
 def main():

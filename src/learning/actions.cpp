@@ -43,11 +43,6 @@ ActionLayout::ActionLayout(const EnvOptions& options)
     add("push_out", 0, 1);
 }
 
-bool isGameTask(const std::string& task)
-{
-  return task == "eight_ball" || task == "nine_ball";
-}
-
 std::string ActionLayout::whyInvalid(const double* action, std::size_t size) const
 {
   if (size == box_.size())

@@ -21,9 +21,6 @@ constexpr double kMinActionSpeed = 0.05;
 /// enough to cover throw and squirt at any cut, small enough that the aim still means the shot.
 constexpr double kMaxCutOffset = 0.2;
 
-/// Whether a task is a whole game (its action places the cue ball in hand).
-bool isGameTask(const std::string& task);
-
 /// What a relative action aims at: the balls it may choose (ids, in order) and the table.
 struct AimContext
 {

@@ -344,7 +344,7 @@ struct PyEnvironment
   PyEnvironment(std::shared_ptr<Engine> e, const py::dict& options)
     : engine(std::move(e)),
       env(engine, optionsFrom(options)),
-      game_info(env.options().task == "eight_ball" || env.options().task == "nine_ball"),
+      game_info(learning::isGameTask(env.options().task)),
       position_info(env.options().task == "position"),
       release_gil(env.options().task != "pot" && env.options().task != "position")
   {

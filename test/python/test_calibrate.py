@@ -9,10 +9,8 @@ import yaml
 
 from cue_sim.api import Engine
 from cue_sim.calibrate import Track, calibrate, load_tracks, save_tracks
+from cue_sim.calibrate.synthetic import LAB_RANGES as HIDDEN
 from cue_sim.calibrate.synthetic import observe, random_shots
-
-#: Hidden coefficients are drawn in these ranges: a cloth and cushions a lab may have.
-HIDDEN = {"mu_slide": (0.15, 0.35), "mu_roll": (0.006, 0.014), "e_cushion": (0.7, 0.9), "e_ball": (0.9, 0.97)}
 
 
 def test_hidden_coefficients_come_back_within_two_standard_errors_and_five_percent():
@@ -81,3 +79,13 @@ def test_bad_input_is_refused_naming_it(tmp_path):
     (tmp_path / "bad.csv").write_text("t,ball,x\n0,0,0.1\n")
     with pytest.raises(ValueError, match="no column y"):
         load_tracks(tmp_path / "bad.csv")
+
+
+def test_models_are_compared_each_with_the_models_asked_for():
+    from cue_sim.calibrate import compare_models
+    engine = Engine("7ft", ball_ball_model="frictionless")
+    tracks = [observe(engine, [0, 1], [[-0.6, 0.0], [0.6, 0.3]], {"speed": 0.4, "phi": 0.0}, duration=1.5, seed=1)]
+    results = compare_models(tracks, ["mu_roll"], cushion_models=["han2005", "simple"], ball_ball_model="frictionless")
+    assert sorted(r.models["cushion"] for r in results) == ["han2005", "simple"]
+    assert all(r.models["ball_ball"] == "frictionless" for r in results)
+    assert results[0].cost <= results[1].cost

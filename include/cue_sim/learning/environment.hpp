@@ -67,6 +67,9 @@ const std::vector<EnvOptionField>& envOptionFields();
 
 /// The names EnvOptions::task takes.
 std::vector<std::string> taskNames();
+/// Whether a task is a whole game under the referee (its action places the cue ball in hand, and
+/// its info tells the players and the opponent's turns).
+bool isGameTask(const std::string& task);
 
 /// A box of reals, one name per component, as a learner's space needs it.
 struct BoxSpec

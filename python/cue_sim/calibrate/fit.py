@@ -156,7 +156,6 @@ class _Problem:
         self._engine_key, self._engine = None, None
         self.shot_names: List[List[str]] = []
         self.rows: List[Tuple[np.ndarray, np.ndarray]] = []  # per shot: observed (k, j) pairs
-        self.alone: List[float] = []  # per shot: how long the struck ball moved alone [s], as seen
         x0, low, high = [], [], []
         for name in self.fit:
             bounds = _coefficient_bounds(name, self.params)
@@ -174,10 +173,10 @@ class _Problem:
         self.x0 = np.clip(self.x0, self.low + 1e-12 * (self.high - self.low), self.high - 1e-12 * (self.high - self.low))
         self.set_window(math.inf, self.x0)
 
-    def set_window(self, window: float, x, alone: bool = False) -> None:
+    def set_window(self, window: float, x) -> None:
         """Compares only the observations up to `window` seconds after each shot's strike (as x
-        has it): a fit that starts from the first moments of each shot and takes in the rest as
-        it goes does not lock onto a wrong sequence of contacts."""
+        has it): a fit that starts from the first moments of each shot and takes in the rest as it
+        goes does not lock onto a wrong sequence of contacts."""
         self.rows = []
         for track, unknowns in zip(self.tracks, self.shot_unknowns(x)):
             k, j = np.nonzero(track.seen())
@@ -235,7 +234,6 @@ class _Problem:
         period = float(np.median(np.diff(track.times)))
         t_low = track.times[k1] - max(3 * period, 0.1)
         guess = {"t0": min(max(t0, t_low + 1e-6), track.times[k1] - 1e-6)}
-        self.alone.append(alone_until - guess["t0"])
         bounds = {"t0": (t_low, track.times[k1])}
         names = ["t0"]
         if "speed" in track.strike:
@@ -354,8 +352,9 @@ class _Problem:
 
 
 #: The stages of a fit: (the seconds of each shot compared after its strike, whether the
-#: coefficients move too, the robust loss's scale in noises). The first fits each shot's start while
-#: the struck ball moves alone, the second its first contact; each stage starts from the last. The
+#: coefficients move too, the robust loss's scale in noises). Each stage starts from the last; the
+#: first runs twice (the solver started afresh from where it stopped, with a new trust region: in
+#: the coverage trials a single run left some shots' starts short). The
 #: loss is nearly quadratic out to 10 noises until the whole shots are in, so that a shot far from
 #: its data still pulls the coefficients back (a loss flat beyond a noise lets a wrong start stand),
 #: and then narrows to the noise itself, where a tracker's outliers weigh little.
@@ -455,7 +454,7 @@ def _stages(problem: _Problem, x, stages, max_evaluations: int, progress):
     result = None
     for stage in stages:
         window, coefficients_too, scale = STAGES[stage]
-        problem.set_window(window, x, alone=stage == 0)
+        problem.set_window(window, x)
         active = np.ones(len(x), dtype=bool)
         active[:len(problem.fit)] = coefficients_too
         last = stage == len(STAGES) - 1
@@ -565,8 +564,10 @@ def compare_models(tracks: Sequence[Track], fit: Sequence[str], cushion_models: 
     robust cost at the solution: the model the data prefers. `fit` names each model's own
     coefficients as well as the shared ones; a coefficient a model does not use is reported as not
     determined under it."""
+    cushions = list(cushion_models) or [options.pop("cushion_model", None)]
+    ball_balls = list(ball_ball_models) or [options.pop("ball_ball_model", None)]
     results = []
-    for cushion in list(cushion_models) or [options.pop("cushion_model", None)]:
-        for ball_ball in list(ball_ball_models) or [options.pop("ball_ball_model", None)]:
+    for cushion in cushions:
+        for ball_ball in ball_balls:
             results.append(calibrate(tracks, fit, cushion_model=cushion, ball_ball_model=ball_ball, **options))
     return sorted(results, key=lambda r: r.cost)

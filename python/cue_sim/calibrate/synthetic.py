@@ -14,6 +14,10 @@ import numpy as np
 
 from cue_sim.calibrate.tracks import Track
 
+#: Where a lab's coefficients lie, for hidden ones drawn at random (the tests, the coverage study):
+#: cloth from slow to fast, cushions from dead to lively (Alciatore; Mathavan et al. 2009, 2010).
+LAB_RANGES = {"mu_slide": (0.15, 0.35), "mu_roll": (0.006, 0.014), "e_cushion": (0.7, 0.9), "e_ball": (0.9, 0.97)}
+
 #: How far an outlier is thrown [m], one standard deviation on each axis: a detection of
 #: something else (a reflection, the other ball of a pair).
 OUTLIER_THROW = 0.05
@@ -58,9 +62,8 @@ def observe(engine, ids, positions, strike: dict, rate: float = 60.0, duration: 
     observed[thrown] += rng.normal(0, OUTLIER_THROW, (int(thrown.sum()), 2))
     observed[(rng.random(observed.shape[:2]) < gaps) | ~visible] = np.nan
     clock = float(rng.uniform(0, 100))  # the observer's clock starts anywhere
-    track = Track(times + clock, ids, observed, strike={"ball": ball}, name=name)
-    track.truth = {"t0": clock, "ball_ball": predicted["ball_ball"], "cushion": predicted["cushion"]}
-    return track
+    return Track(times + clock, ids, observed, strike={"ball": ball}, name=name,
+                 truth={"t0": clock, "ball_ball": predicted["ball_ball"], "cushion": predicted["cushion"]})
 
 
 def random_shots(engine, count: int, seed: int = 0, balls: int = 3, **observation) -> List[Track]:

@@ -29,6 +29,8 @@ class Track:
     positions: np.ndarray
     strike: Dict[str, float] = field(default_factory=dict)
     name: str = ""
+    #: What made a synthetic track (cue_sim.calibrate.synthetic), None for an observed one.
+    truth: Optional[dict] = None
 
     def __post_init__(self):
         self.times = np.asarray(self.times, dtype=float)

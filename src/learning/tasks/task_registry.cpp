@@ -51,6 +51,14 @@ std::vector<std::string> taskNames()
   return names;
 }
 
+bool isGameTask(const std::string& task)
+{
+  for (const TaskEntry& entry : kTasks)
+    if (task == entry.name)
+      return entry.make == &makeGameTask;
+  return false;
+}
+
 std::unique_ptr<Task> makeTask(const physics::Engine<double>& engine, const EnvOptions& options)
 {
   for (const TaskEntry& entry : kTasks)
