@@ -149,8 +149,9 @@ class _Problem:
     """The least-squares problem: x is the fitted coefficients, then each shot's unknowns."""
 
     def __init__(self, tracks: Sequence[Track], table: str, models: Dict[str, str], params: Dict[str, float],
-                 fit: Sequence[str], noise: float, threads: int):
+                 fit: Sequence[str], noise: float, threads: int, unknowns: str = "motion"):
         self.tracks, self.table, self.models = list(tracks), table, models
+        self.unknowns = unknowns  # "motion": the struck ball's; "strike": the strike's fields not known
         self.params, self.fit, self.noise, self.threads = dict(params), list(fit), noise, threads
         self.evaluations = 0
         self._engine_key, self._engine = None, None
@@ -236,12 +237,16 @@ class _Problem:
         guess = {"t0": min(max(t0, t_low + 1e-6), track.times[k1] - 1e-6)}
         bounds = {"t0": (t_low, track.times[k1])}
         names = ["t0"]
-        if "speed" in track.strike:
-            for name in ("phi", "theta", "a", "b"):
+        if "speed" in track.strike or self.unknowns == "strike":
+            commanded = track.commanded or {}
+            if "speed" not in track.strike and "speed" not in commanded:
+                raise ValueError(f"{track.label}the strike's fields are fitted from the commanded strike: "
+                                 "the track has none (Track.commanded)")
+            for name in ("speed", "phi", "theta", "a", "b"):
                 if name not in track.strike:
                     names.append(name)
                     bounds[name] = STRIKE_BOUNDS[name]
-                    guess[name] = math.atan2(v[1], v[0]) if name == "phi" else 0.0
+                    guess[name] = commanded.get(name, math.atan2(v[1], v[0]) if name == "phi" else 0.0)
         else:
             names += ["vx", "vy", "w_top", "wz"]
             guess.update(vx=float(v[0]), vy=float(v[1]), w_top=0.0, wz=0.0)
@@ -437,7 +442,7 @@ def _refit_misfits(problem: _Problem, x, max_evaluations: int) -> bool:
         width = len(problem.shot_names[i])
         if share > MISFIT_SHARE:
             alone = _Problem([track], problem.table, problem.models, problem.coefficients(x), [], problem.noise,
-                             problem.threads)
+                             problem.threads, problem.unknowns)
             y, _ = _stages(alone, alone.x0, range(len(STAGES)), max_evaluations // 5, None)
             alone.set_window(math.inf, y)
             if _misfit_shares(alone, y)[0] < share:

@@ -63,7 +63,7 @@ def observe(engine, ids, positions, strike: dict, rate: float = 60.0, duration: 
     observed[(rng.random(observed.shape[:2]) < gaps) | ~visible] = np.nan
     clock = float(rng.uniform(0, 100))  # the observer's clock starts anywhere
     return Track(times + clock, ids, observed, strike={"ball": ball}, name=name,
-                 truth={"t0": clock, "ball_ball": predicted["ball_ball"], "cushion": predicted["cushion"]})
+                 truth={"t0": clock, "phi": fields[1], "ball_ball": predicted["ball_ball"], "cushion": predicted["cushion"]})
 
 
 def random_shots(engine, count: int, seed: int = 0, balls: int = 3, **observation) -> List[Track]:
@@ -79,4 +79,27 @@ def random_shots(engine, count: int, seed: int = 0, balls: int = 3, **observatio
                   "b": rng.uniform(-0.3, 0.3)}
         tracks.append(observe(engine, list(range(balls)), positions, strike, seed=int(rng.integers(2**32)),
                               name=f"shot {i}", **observation))
+    return tracks
+
+
+def repeated_strikes(engine, ids, positions, commanded: dict, deviations: dict, count: int, seed: int = 0,
+                     **observation) -> List[Track]:
+    """`count` strikes of the same `commanded` shot (speed, phi, theta, a, b) from the same balls,
+    each executed with Gaussian noise of `deviations` (the node's units: a and b in metres; the
+    elevation folded at 0 as the node's cue folds it) and observed as observe() does: a robot's
+    repeatability test with the noise known. Each track's `truth` holds its executed strike."""
+    rng = np.random.default_rng(seed)
+    radius = engine.params["ball_radius"]
+    tracks = []
+    for i in range(count):
+        executed = {name: float(commanded.get(name, 0.0)) + rng.normal(0.0, deviations.get(name, 0.0))
+                    / (radius if name in ("a", "b") else 1.0) for name in ("speed", "phi", "theta", "a", "b")}
+        executed["theta"] = max(executed["theta"], 0.0)
+        executed["ball"] = int(commanded.get("ball", 0))
+        track = observe(engine, ids, positions, executed, seed=int(rng.integers(2**32)), name=f"strike {i}",
+                        **observation)
+        track.commanded = {"ball": executed["ball"], **{k: float(commanded.get(k, 0.0)) for k in
+                                                       ("speed", "phi", "theta", "a", "b")}}
+        track.truth["executed"] = executed
+        tracks.append(track)
     return tracks

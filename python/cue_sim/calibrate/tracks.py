@@ -31,6 +31,9 @@ class Track:
     name: str = ""
     #: What made a synthetic track (cue_sim.calibrate.synthetic), None for an observed one.
     truth: Optional[dict] = None
+    #: The strike as it was commanded (all of STRIKE_FIELDS), when a record says: what an
+    #: execution-noise fit compares the executed strike with. Not a fact of the shot: `strike` is.
+    commanded: Optional[Dict[str, float]] = None
 
     def __post_init__(self):
         self.times = np.asarray(self.times, dtype=float)
