@@ -121,7 +121,9 @@ target_include_directories(cue_sim_learning PUBLIC ${CUE_SIM_ROOT}/include PRIVA
 target_link_libraries(cue_sim_learning PUBLIC cue_sim_game cue_sim_camera)
 
 # Calibration: where a shot's balls are at the instants they were observed, for fitting the
-# simulator's coefficients to a real table (cue_sim.calibrate). No ROS, no Python.
-add_library(cue_sim_calibration ${CUE_SIM_ROOT}/src/calibration/track_prediction.cpp)
+# simulator's coefficients to a real table (cue_sim.calibrate), and a shot filmed by the simulated
+# camera (what the fit is proven on end to end). No ROS, no Python.
+add_library(cue_sim_calibration ${CUE_SIM_ROOT}/src/calibration/track_prediction.cpp
+  ${CUE_SIM_ROOT}/src/calibration/shot_film.cpp)
 target_include_directories(cue_sim_calibration PUBLIC ${CUE_SIM_ROOT}/include PRIVATE ${CUE_SIM_ROOT}/src)
-target_link_libraries(cue_sim_calibration PUBLIC cue_sim_physics)
+target_link_libraries(cue_sim_calibration PUBLIC cue_sim_physics cue_sim_camera)

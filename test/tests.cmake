@@ -96,6 +96,12 @@ add_rostest(test/node/camera.test DEPENDENCIES table_node)
 # record or time things.
 set_tests_properties(_ctest_cue_sim_rostest_test_node_camera.test PROPERTIES RUN_SERIAL TRUE)
 
+# A calibration session end to end: shots on the node, the camera, the detector, a bag, the fit, the fit
+# loaded back (launch/calibration_record.launch, cue_sim.calibrate). The camera and the detector take both
+# cores: alone.
+add_rostest(test/node/calibration.test DEPENDENCIES table_node cue_sim_python)
+set_tests_properties(_ctest_cue_sim_rostest_test_node_calibration.test PROPERTIES RUN_SERIAL TRUE)
+
 # The table as a nodelet beside image_proc's rectify in one manager, and unloaded from it.
 add_rostest_gtest(nodelet_tests test/node/nodelet.test test/node/test_nodelet.cpp test/node/rostest_main.cpp)
 target_include_directories(nodelet_tests PRIVATE ${catkin_INCLUDE_DIRS})
@@ -135,6 +141,6 @@ catkin_add_gtest(learning_tests test/learning/test_environment.cpp)
 target_link_libraries(learning_tests cue_sim_learning cue_sim_table_description gtest_main)
 target_include_directories(learning_tests PRIVATE src)
 
-catkin_add_gtest(calibration_tests test/calibration/test_track_prediction.cpp)
+catkin_add_gtest(calibration_tests test/calibration/test_track_prediction.cpp test/calibration/test_shot_film.cpp)
 target_link_libraries(calibration_tests cue_sim_calibration cue_sim_table_description gtest_main)
 target_include_directories(calibration_tests PRIVATE src)

@@ -40,8 +40,11 @@ def cloth_colour(image: np.ndarray) -> np.ndarray:
 
 def colour_distance(image: np.ndarray, colour: np.ndarray) -> np.ndarray:
     """Each pixel's Euclidean distance from ``colour`` in BGR [8-bit levels]."""
-    difference = cv2.absdiff(image, np.array([*np.round(colour), 0], np.float64)).astype(np.int32)
-    return np.sqrt((difference * difference).sum(axis=2).astype(np.float32))
+    difference = cv2.absdiff(image, np.array([*np.round(colour), 0], np.float64)).astype(np.float32)
+    # The channels' squares summed by OpenCV (a 1 x 3 transform), five times numpy's speed: exact,
+    # as the squares of 8-bit levels and their sums are integers a float holds.
+    squares = cv2.multiply(difference, difference)
+    return cv2.sqrt(cv2.transform(squares, np.ones((1, 3), np.float32))).reshape(image.shape[:2])
 
 
 def cloth_region(image: np.ndarray, cloth: np.ndarray) -> np.ndarray:
@@ -81,7 +84,51 @@ def detect_balls(image: np.ndarray, radius: float, region: np.ndarray | None = N
         p = np.array([column, row], dtype=float)
         if all(np.hypot(*(p - q)) > 1.2 * radius for q in kept):
             kept.append(p)
-    return np.array([refine(mask, p, radius) for p in kept]).reshape(-1, 2)
+    centres = [refine(mask, p, radius) for p in kept]
+    inner = cv2.erode(region, np.ones((3, 3), np.uint8))
+    for i, centre in enumerate(centres):
+        if clipped(region, centre, radius):
+            others = [c for j, c in enumerate(centres) if j != i]
+            centres[i] = rim_centre(mask, inner, centre, radius, others)
+    return np.array(centres).reshape(-1, 2)
+
+
+def clipped(region: np.ndarray, centre: np.ndarray, radius: float) -> bool:
+    """Whether the playing area's edge cuts the disc of `radius` around `centre` (a ball at a
+    cushion): its mask is cut there, and its centroid pulled off the centre by millimetres."""
+    h, w = region.shape
+    x0, x1 = int(max(0, centre[0] - radius - 2)), int(min(w, centre[0] + radius + 3))
+    y0, y1 = int(max(0, centre[1] - radius - 2)), int(min(h, centre[1] + radius + 3))
+    ys, xs = np.mgrid[y0:y1, x0:x1]
+    inside = np.hypot(xs - centre[0], ys - centre[1]) <= radius + 1.5
+    return bool(np.any(region[y0:y1, x0:x1][inside] == 0)) or x0 == 0 or y0 == 0 or x1 == w or y1 == h
+
+
+def rim_centre(mask: np.ndarray, inner: np.ndarray, centre: np.ndarray, radius: float, others) -> np.ndarray:
+    """The centre of the circle through the ball's own rim, for a ball whose mask the playing
+    area's edge cuts: the rim pixels (the mask's edge where the cloth, not the area's edge, bounds
+    it; not where a neighbouring ball does) fitted by least squares to a circle (Kasa's algebraic
+    fit: linear in the centre and in r^2 - |c|^2). Every rim pixel lies about half a pixel inside
+    the true edge, which shrinks the circle and leaves its centre. Falls back to `centre` if too
+    little of the rim is seen (under a quarter of it)."""
+    h, w = mask.shape
+    x0, x1 = int(max(0, centre[0] - radius - 4)), int(min(w, centre[0] + radius + 5))
+    y0, y1 = int(max(0, centre[1] - radius - 4)), int(min(h, centre[1] + radius + 5))
+    window = mask[y0:y1, x0:x1]
+    edge = window & ~cv2.erode(window, cv2.getStructuringElement(cv2.MORPH_CROSS, (3, 3)), borderValue=1)
+    edge &= inner[y0:y1, x0:x1]
+    ys, xs = np.nonzero(edge)
+    points = np.column_stack([xs + x0, ys + y0]).astype(float)
+    near = np.abs(np.hypot(*(points - centre).T) - radius) < 4
+    for other in others:
+        near &= np.hypot(*(points - other).T) > radius + 2
+    points = points[near]
+    if len(points) < 0.25 * 2 * np.pi * radius:
+        return centre
+    design = np.column_stack([2 * points, np.ones(len(points))])
+    solution, *_ = np.linalg.lstsq(design, (points ** 2).sum(axis=1), rcond=None)
+    fitted = solution[:2]
+    return fitted if np.hypot(*(fitted - centre)) < radius / 2 else centre
 
 
 def refine(mask: np.ndarray, centre: np.ndarray, radius: float) -> np.ndarray:

@@ -60,3 +60,22 @@ def test_the_detector_finds_both_balls_to_a_tenth_of_a_pixel():
     errors, matched = detection.match(found, truth, RADIUS)
     assert matched.all() and len(found) == 2
     assert errors.max() < 0.15
+
+
+@pytest.mark.parametrize("inside", [0.6, 0.85, 1.0])
+def test_a_ball_at_the_cushion_is_found_at_its_centre_not_its_visible_part(inside):
+    """A ball whose disc the playing area's edge cuts (a ball at a cushion: the area ends a little
+    inside the nose) is found from its own rim: the centroid of what is left of it is pixels off."""
+    image = np.zeros((120, 160, 3), np.uint8)
+    image[:] = CLOTH
+    edge = 100  # the playing area ends at this column
+    centre = np.array([edge - inside * RADIUS, 60.4])
+    disc(image, centre, RADIUS, (40, 40, 200))
+    region = np.ones(image.shape[:2], np.uint8)
+    region[:, edge:] = 0
+    found = detection.detect_balls(image, RADIUS, region)
+    assert len(found) == 1
+    assert np.hypot(*(found[0] - centre)) < 0.25, (found[0], centre)
+    if inside < 0.9:  # what the centroid alone gives when a tenth of the disc or more is cut: a pixel off
+        mask = (detection.colour_distance(image, np.array(CLOTH, float)) >= detection.COLOUR_THRESHOLD) & (region > 0)
+        assert np.hypot(*(detection.refine(mask.astype(np.uint8), centre, RADIUS) - centre)) > 1.0

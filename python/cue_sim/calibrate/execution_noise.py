@@ -88,9 +88,10 @@ def _in_node_units(name: str, value: float, radius: float) -> float:
 def fit_execution_noise(tracks: Sequence[Track], commanded: Optional[Dict[str, float]] = None, table: str = "7ft",
                         ball_ball_model: Optional[str] = None, cushion_model: Optional[str] = None,
                         params: Optional[Dict[str, float]] = None, noise: float = DEFAULT_NOISE, threads: int = 0,
-                        max_evaluations: int = 300) -> NoiseFit:
+                        max_evaluations: int = 300, progress=None) -> NoiseFit:
     """The execution noise of `tracks`, each a strike of the same `commanded` shot (speed, phi,
-    theta, a, b; else each track's own `commanded`), on the physics given (the module's text)."""
+    theta, a, b; else each track's own `commanded`), on the physics given (the module's text).
+    `progress(stage, evaluations, cost)` is called as the solver goes, as calibrate() calls it."""
     from cue_sim.api import Engine
     tracks = list(tracks)
     if len(tracks) < 3:
@@ -117,7 +118,7 @@ def fit_execution_noise(tracks: Sequence[Track], commanded: Optional[Dict[str, f
     radius = base.params["ball_radius"]
     begin = time.perf_counter()
     problem = _Problem(tracks, table, models, base.params, [], noise, threads, unknowns="strike")
-    x, result = _stages(problem, problem.x0, range(len(STAGES)), max_evaluations, None)
+    x, result = _stages(problem, problem.x0, range(len(STAGES)), max_evaluations, progress)
     cov = _covariance(result.jac, result.cost, problem.size)
     executed, errors = [], []
     offset = 0

@@ -511,10 +511,49 @@ def _covariance(jacobian, cost: float, observations: int) -> np.ndarray:
     return cov
 
 
+def _shot_sandwich(jacobian, residuals: np.ndarray, scale: float, shot_rows: Sequence[int]) -> np.ndarray:
+    """The covariance of x robust to errors correlated within a shot (a cluster-robust sandwich, the
+    shots the clusters): B (sum over shots of g_s g_s^T) B G / (G - 1), with B the Gauss-Newton
+    inverse and g_s a shot's gradient of the robust cost. `jacobian` is least_squares' (scaled for
+    the robust loss), `residuals` its raw ones, `scale` the loss's f_scale; `shot_rows` each shot's
+    number of residuals, in order. The columns are scaled to unit norm as in _covariance."""
+    j = jacobian.toarray() if hasattr(jacobian, "toarray") else np.asarray(jacobian, dtype=float)
+    # least_squares' own scaling for soft_l1: J and f multiplied so that J^T f is the gradient.
+    z = (residuals / scale) ** 2
+    first, second = (1 + z) ** -0.5, -0.5 * (1 + z) ** -1.5 / scale ** 2
+    weight = np.maximum(first + 2 * second * residuals ** 2, np.finfo(float).eps)
+    f = residuals * first / np.sqrt(weight)
+    norms = np.linalg.norm(j, axis=0)
+    column = np.where(norms > 0, norms, 1.0)
+    js = j / column
+    _, singular, vt = np.linalg.svd(js, full_matrices=False)
+    keep = singular > max(singular[0], 1e-300) * 1e-8
+    bread = (vt[keep].T / singular[keep] ** 2) @ vt[keep]
+    meat = np.zeros_like(bread)
+    start = 0
+    for rows in shot_rows:
+        g = js[start:start + rows].T @ f[start:start + rows]
+        meat += np.outer(g, g)
+        start += rows
+    clusters = len(shot_rows)
+    cov = bread @ meat @ bread * (clusters / max(clusters - 1, 1)) / np.outer(column, column)
+    unseen = (norms == 0) | (np.sqrt(np.sum(vt[~keep] ** 2, axis=0)) > 1e-3)
+    cov[unseen, :] = np.inf
+    cov[:, unseen] = np.inf
+    return cov
+
+
 def _report(problem: _Problem, x, result, seconds: float) -> Calibration:
-    cov = _covariance(result.jac, result.cost, problem.size)
+    gauss_newton = _covariance(result.jac, result.cost, problem.size)
+    sandwich = _shot_sandwich(result.jac, result.fun, STAGES[-1][2], [2 * len(k) for k, _ in problem.rows])
     n = len(problem.fit)
-    errors = np.sqrt(np.abs(np.diag(cov)[:n]))
+    # The larger of the two: Gauss-Newton's holds for independent errors, the shots' sandwich also
+    # when a detector errs alike through a shot (doc/calibration.md, "Standard errors").
+    cov = sandwich if np.all(np.diag(sandwich)[:n] >= np.diag(gauss_newton)[:n]) else gauss_newton
+    if os.environ.get("CUE_SIM_CALIBRATE_DEBUG"):
+        print("standard errors, Gauss-Newton:", np.sqrt(np.diag(gauss_newton)[:n]), "shots' sandwich:",
+              np.sqrt(np.diag(sandwich)[:n]), flush=True)
+    errors = np.sqrt(np.maximum(np.abs(np.diag(gauss_newton)[:n]), np.abs(np.diag(sandwich)[:n])))
     with np.errstate(invalid="ignore", divide="ignore"):
         corr = cov[:n, :n] / np.outer(errors, errors)
     values = problem.coefficients(x)
