@@ -49,13 +49,15 @@ def main():
         begin = time.perf_counter()
         result = calibrate(tracks, fit=list(HIDDEN) + [n for n in args.also.split(",") if n], noise=args.noise)
         seconds.append(time.perf_counter() - begin)
+        signed = {}
         for name, value in hidden.items():
-            z = abs(result.values[name] - value) / result.standard_errors[name]
-            within[name][0] += z <= 1
-            within[name][1] += z <= 2
+            signed[name] = (result.values[name] - value) / result.standard_errors[name]
+            within[name][0] += abs(signed[name]) <= 1
+            within[name][1] += abs(signed[name]) <= 2
             relative[name].append(abs(result.values[name] / value - 1))
         print(f"trial {trial + 1}/{args.trials}: {seconds[-1]:.1f} s, "
-              + ", ".join(f"{n} {100 * relative[n][-1]:.2f} %" for n in HIDDEN)
+              + ", ".join(f"{n} {100 * (result.values[n] / hidden[n] - 1):+.2f} % ({signed[n]:+.1f} SE)"
+                          for n in HIDDEN)
               + ("" if not result.warnings else f"; warnings: {result.warnings}"), flush=True)
     observed = ("filmed at 30/60/120 Hz and detected" if args.camera else
                 f"noise {1e3 * args.noise:g} mm, {100 * args.outliers:g} % outliers")

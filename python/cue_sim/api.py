@@ -127,6 +127,15 @@ class Engine:
         self._engine = _core.Engine(table, {k: float(v) for k, v in params.items()}, ball_ball_model or "",
                                     cushion_model or "")
 
+    def with_params(self, **params: float) -> "Engine":
+        """This engine with the given coefficients changed (checked as the constructor checks
+        them), on the same table, read once: cheap enough to make at every step of a fit."""
+        table, ball_ball_model, cushion_model, given = self._spec
+        out = Engine.__new__(Engine)
+        out._spec = (table, ball_ball_model, cushion_model, dict(given, **params))
+        out._engine = self._engine.with_params({k: float(v) for k, v in params.items()})
+        return out
+
     def __reduce__(self):
         # Pickled as what it was made from (for Dask's workers, which build their own).
         table, ball_ball_model, cushion_model, params = self._spec

@@ -13,9 +13,6 @@ namespace calibration
 {
 namespace
 {
-/// The longest exposure a film takes [s]: the node's own bound on ~camera/exposure.
-constexpr double kMaxExposure = 0.1;
-
 camera::BallPose poseOf(const physics::Ball<double>& ball)
 {
   camera::BallPose pose;

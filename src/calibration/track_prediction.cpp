@@ -22,6 +22,55 @@ void countContact(const physics::Event<double>& event, ContactCounts& counts)
     ++counts.pocketed;
 }
 
+/// The balls at `t`, each averaged over the exposure around it if an event falls within it (a
+/// ball pocketed at the middle counts as off the table; one pocketed during the exposure is
+/// averaged over the slices it was still in play).
+void observe(physics::Simulation<double>& simulation, double t, double exposure,
+             std::vector<physics::Event<double>>& events, TrackPrediction& p)
+{
+  const double open = t - exposure / 2, close = t + exposure / 2;
+  if (exposure > 0)
+    simulation.advance(std::max(open, simulation.time()), &events);
+  if (exposure <= 0 || simulation.nextCheck() > close)
+  {
+    simulation.advance(t, &events);
+    for (const physics::Ball<double>& ball : simulation.snapshot())
+    {
+      p.positions.push_back(ball.r.x());
+      p.positions.push_back(ball.r.y());
+      p.on_table.push_back(ball.inPlay() ? 1 : 0);
+    }
+    return;
+  }
+  const std::size_t balls = simulation.state().balls.size();
+  std::vector<double> sum(2 * balls, 0.0);
+  std::vector<int> seen(balls, 0);
+  std::vector<std::uint8_t> at_middle(balls, 0);
+  for (int i = 0; i < kExposureSlices; ++i)
+  {
+    const double slice = open + exposure * (i + 0.5) / kExposureSlices;
+    simulation.advance(std::max(slice, simulation.time()), &events);
+    const std::vector<physics::Ball<double>> now = simulation.snapshot();
+    for (std::size_t b = 0; b < balls; ++b)
+    {
+      if (!now[b].inPlay())
+        continue;
+      sum[2 * b] += now[b].r.x();
+      sum[2 * b + 1] += now[b].r.y();
+      ++seen[b];
+      if (i == kExposureSlices / 2)  // the first slice past the middle decides on- or off-table
+        at_middle[b] = 1;
+    }
+  }
+  const std::vector<physics::Ball<double>> last = simulation.snapshot();
+  for (std::size_t b = 0; b < balls; ++b)
+  {
+    p.positions.push_back(seen[b] ? sum[2 * b] / seen[b] : last[b].r.x());
+    p.positions.push_back(seen[b] ? sum[2 * b + 1] / seen[b] : last[b].r.y());
+    p.on_table.push_back(at_middle[b]);
+  }
+}
+
 TrackPrediction predictOne(const physics::Engine<double>& engine, const TrackRequest& request)
 {
   TrackPrediction p;
@@ -38,15 +87,7 @@ TrackPrediction predictOne(const physics::Engine<double>& engine, const TrackReq
   try
   {
     for (const double t : request.times)
-    {
-      simulation.advance(t, &events);
-      for (const physics::Ball<double>& ball : simulation.snapshot())
-      {
-        p.positions.push_back(ball.r.x());
-        p.positions.push_back(ball.r.y());
-        p.on_table.push_back(ball.inPlay() ? 1 : 0);
-      }
-    }
+      observe(simulation, t, request.exposure, events, p);
   }
   catch (const physics::EventLimitError& e)
   {
@@ -63,6 +104,11 @@ std::string whyBadRequest(const physics::Engine<double>& engine, const TrackRequ
   std::ostringstream why;
   if (const std::string bad = engine.whyInvalid(request.start); !bad.empty())
     return "start: " + bad;
+  if (!(request.exposure >= 0 && request.exposure <= kMaxExposure))
+  {
+    why << "exposure: " << request.exposure << " s is outside [0, " << kMaxExposure << "]";
+    return why.str();
+  }
   double previous = request.start.time;
   for (std::size_t k = 0; k < request.times.size(); ++k)
   {
@@ -71,6 +117,12 @@ std::string whyBadRequest(const physics::Engine<double>& engine, const TrackRequ
     {
       why << "times[" << k << "]: " << t << " is not finite or comes before " << previous
           << " (the times are ascending, from the start's)";
+      return why.str();
+    }
+    if (k > 0 && t - request.times[k - 1] < request.exposure)
+    {
+      why << "exposure: " << request.exposure << " s is longer than the " << t - request.times[k - 1]
+          << " s between times[" << k - 1 << "] and times[" << k << "] (the exposures may not overlap)";
       return why.str();
     }
     previous = t;

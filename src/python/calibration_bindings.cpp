@@ -38,11 +38,15 @@ std::optional<calibration::TrackStrike> strikeFrom(const py::handle& row, std::s
 
 /// One dict a shot: positions (K, N, 2), on_table (K, N), contacts, error.
 py::list predictTracks(const Engine& engine, const std::vector<StateArrays>& starts, const py::list& strikes,
-                       const std::vector<std::vector<double>>& times, unsigned threads)
+                       const std::vector<std::vector<double>>& times, unsigned threads,
+                       const std::vector<double>& exposures)
 {
   if (strikes.size() != starts.size() || times.size() != starts.size())
     throw std::invalid_argument("starts, strikes and times: one of each a shot, got " + std::to_string(starts.size()) +
                                 ", " + std::to_string(strikes.size()) + " and " + std::to_string(times.size()));
+  if (!exposures.empty() && exposures.size() != starts.size())
+    throw std::invalid_argument("exposures: one a shot or none, got " + std::to_string(exposures.size()) + " for " +
+                                std::to_string(starts.size()) + " shots");
   std::vector<calibration::TrackRequest> requests(starts.size());
   for (std::size_t i = 0; i < starts.size(); ++i)
   {
@@ -56,6 +60,7 @@ py::list predictTracks(const Engine& engine, const std::vector<StateArrays>& sta
     }
     requests[i].strike = strikeFrom(strikes[i], i);
     requests[i].times = times[i];
+    requests[i].exposure = exposures.empty() ? 0.0 : exposures[i];
   }
   std::vector<calibration::TrackPrediction> predictions;
   {
@@ -170,9 +175,10 @@ void bindCalibration(py::module_& m)
       .def("frame", &frameOf, py::arg("time"))
       .def_property_readonly("lens", &lensOf);
   m.def("predict_tracks", &predictTracks, py::arg("engine"), py::arg("starts"), py::arg("strikes"), py::arg("times"),
-        py::arg("threads") = 0,
+        py::arg("threads") = 0, py::arg("exposures") = std::vector<double>(),
         "Each shot's balls at its times: starts (StateArrays, balls maybe moving), strikes (None or (ball, "
-        "speed, phi, theta, a, b), applied first), times (ascending, from the start's) -> one dict a shot.");
+        "speed, phi, theta, a, b), applied first), times (ascending, from the start's), exposures (one a shot "
+        "[s], each position the average over it; none: instants) -> one dict a shot.");
 }
 
 }  // namespace python

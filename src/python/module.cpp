@@ -43,9 +43,10 @@ using physics::PhysicsParams;
 
 /// Coefficients by name over the defaults: unknown names and values out of range are refused,
 /// naming them.
-PhysicsParams<double> paramsFrom(const std::map<std::string, double>& given)
+PhysicsParams<double> paramsFrom(const std::map<std::string, double>& given,
+                                 const PhysicsParams<double>& base = PhysicsParams<double>())
 {
-  PhysicsParams<double> params;
+  PhysicsParams<double> params = base;
   for (const auto& [name, value] : given)
   {
     bool known = false;
@@ -331,6 +332,15 @@ PYBIND11_MODULE(_core, m)
                                  out.emplace_back(c.name, c.centre.x(), c.centre.y(), c.radius);
                                return out;
                              })
+      .def(
+          "with_params",
+          [](const Engine<double>& e, const std::map<std::string, double>& params) {
+            // The same table model, shared, not read again: what a fit that changes coefficients
+            // at every evaluation needs (a URDF read costs milliseconds).
+            return std::make_shared<Engine<double>>(e.tableShared(), paramsFrom(params, e.params()), e.models(),
+                                                    e.limits());
+          },
+          py::arg("params"), "This engine with the given coefficients changed (validated), the table shared.")
       .def("check", [](const Engine<double>& e, const StateArrays& s) { fromArrays(e, s); })
       .def("rack", &rack)
       .def("simulate", &simulate)

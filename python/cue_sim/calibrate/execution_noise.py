@@ -22,7 +22,8 @@ from typing import Dict, List, Optional, Sequence
 
 import numpy as np
 
-from cue_sim.calibrate.fit import DEFAULT_NOISE, STAGES, _covariance, _Problem, _stages
+from cue_sim.calibrate.fit import DEFAULT_NOISE, STAGES, _Problem, _stages
+from cue_sim.calibrate.uncertainty import gauss_newton
 from cue_sim.calibrate.tracks import Track
 
 #: The noise model's fields, in the node's order (~noise/speed ... ~noise/b).
@@ -119,7 +120,7 @@ def fit_execution_noise(tracks: Sequence[Track], commanded: Optional[Dict[str, f
     begin = time.perf_counter()
     problem = _Problem(tracks, table, models, base.params, [], noise, threads, unknowns="strike")
     x, result = _stages(problem, problem.x0, range(len(STAGES)), max_evaluations, progress)
-    cov = _covariance(result.jac, result.cost, problem.size)
+    cov = gauss_newton(result.jac, result.cost, problem.size)
     executed, errors = [], []
     offset = 0
     for track, names in zip(tracks, problem.shot_names):

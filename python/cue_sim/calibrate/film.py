@@ -27,6 +27,7 @@ class Camera:
                  seed: int = 0):
         from cue_sim._interpreter import core
         self.engine = engine
+        self.exposure = exposure
         self.film = core().ShotFilm(engine._engine, "", width, height, None, exposure, noise, seed)
         self.matrix, self.distortion, pose = self.film.lens
         self.rotation, self.translation = pose[:3, :3], pose[:3, 3]
@@ -76,6 +77,7 @@ def filmed(camera: Camera, ids, positions, strike: dict, rate: float = 60.0, dur
     truth[after] = np.where(exact["on_table"][:, order, None], exact["positions"][:, order], np.nan)
     clock = float(rng.uniform(0, 100))  # the observer's clock starts anywhere
     track.times = track.times + clock
+    track.exposure = camera.exposure
     track.truth = {"t0": clock, "phi": fields[1], "ball_ball": exact["ball_ball"], "cushion": exact["cushion"],
                    "positions": truth}
     return track

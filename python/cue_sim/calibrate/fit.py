@@ -24,6 +24,7 @@ from typing import Dict, List, Optional, Sequence, Tuple
 import numpy as np
 
 from cue_sim._interpreter import core
+from cue_sim.calibrate import uncertainty
 from cue_sim.calibrate.tracks import Track
 
 _core = core()
@@ -154,7 +155,7 @@ class _Problem:
         self.unknowns = unknowns  # "motion": the struck ball's; "strike": the strike's fields not known
         self.params, self.fit, self.noise, self.threads = dict(params), list(fit), noise, threads
         self.evaluations = 0
-        self._engine_key, self._engine = None, None
+        self._engine_key, self._engine, self._base = None, None, None
         self.shot_names: List[List[str]] = []
         self.rows: List[Tuple[np.ndarray, np.ndarray]] = []  # per shot: observed (k, j) pairs
         x0, low, high = [], [], []
@@ -275,8 +276,10 @@ class _Problem:
     def engine(self, x):
         from cue_sim.api import Engine
         key = tuple(float(v) for v in x[:len(self.fit)])
+        if self._base is None:
+            self._base = Engine(self.table, self.models["ball_ball"], self.models["cushion"], **self.params)
         if key != self._engine_key:  # a Jacobian's shot columns share the coefficients: one engine
-            self._engine = Engine(self.table, self.models["ball_ball"], self.models["cushion"], **self.coefficients(x))
+            self._engine = self._base.with_params(**{name: float(x[i]) for i, name in enumerate(self.fit)})
             self._engine_key = key
         return self._engine
 
@@ -287,10 +290,13 @@ class _Problem:
                          for ball in track.ball_ids])
 
     def _start(self, engine, track: Track, rest: np.ndarray, unknowns: Dict[str, float]):
-        from cue_sim.api import State
+        """The shot's start as _core.StateArrays (made here, not through State: a fit makes
+        thousands), its strike or None, and which of the track's balls are in it."""
         known = np.all(np.isfinite(rest), axis=1)
         ids = track.ball_ids[known]
         velocities, spins = np.zeros((len(ids), 3)), np.zeros((len(ids), 3))
+        positions = np.zeros((len(ids), 3))
+        positions[:, :2] = rest[known]
         strike = None
         struck = int(np.flatnonzero(ids == track.struck_ball)[0])
         if "vx" in unknowns:
@@ -302,7 +308,12 @@ class _Problem:
             fields = {name: track.strike.get(name, unknowns.get(name, 0.0)) for name in ("speed", "phi", "theta",
                                                                                            "a", "b")}
             strike = (track.struck_ball, fields["speed"], fields["phi"], fields["theta"], fields["a"], fields["b"])
-        return State.from_balls(ids, rest[known], velocities, spins), strike, known
+        arrays = _core.StateArrays()
+        arrays.ids = ids.astype(np.int32)
+        arrays.positions, arrays.velocities, arrays.spins = positions, velocities, spins
+        arrays.motion = np.zeros(len(ids), dtype=np.uint8)
+        arrays.pocket = np.full(len(ids), -1, dtype=np.int32)
+        return arrays, strike, known
 
     def predict(self, x):
         """Per shot: predicted positions (K, N, 2) at every instant of its track, its contacts and
@@ -315,12 +326,13 @@ class _Problem:
             rests.append(rest)
             start, strike, known = self._start(engine, track, rest, unknowns)
             after = track.times > unknowns["t0"]
-            starts.append(start._arrays())
+            starts.append(start)
             strikes.append(strike)
             times.append(track.times[after] - unknowns["t0"])
             extras.append((after, known))
         try:
-            predictions = _core.predict_tracks(engine._engine, starts, strikes, times, self.threads)
+            predictions = _core.predict_tracks(engine._engine, starts, strikes, times, self.threads,
+                                               [track.exposure for track in self.tracks])
         except ValueError:
             predictions = None
         self.evaluations += 1
@@ -490,72 +502,29 @@ def _solve(problem: _Problem, x, active, max_evaluations: int, tolerance: float,
                          xtol=1e-8)
 
 
-def _covariance(jacobian, cost: float, observations: int) -> np.ndarray:
-    """The Gauss-Newton covariance of x: s^2 (J^T J)^+ with s^2 the residuals' variance per degree of
-    freedom (the robust cost's). The columns are scaled to unit norm first, so that what counts as
-    unseen does not depend on units (a spin in rad/s beside a friction coefficient); a component
-    the data does not see (a column of zeros, or one along a direction the others leave free) gets
-    an infinite variance, and the others are what the seen directions give them."""
-    j = jacobian.toarray() if hasattr(jacobian, "toarray") else np.asarray(jacobian, dtype=float)
-    dof = max(observations - j.shape[1], 1)
-    s2 = 2 * cost / dof
-    norms = np.linalg.norm(j, axis=0)
-    scale = np.where(norms > 0, norms, 1.0)
-    _, singular, vt = np.linalg.svd(j / scale, full_matrices=False)
-    keep = singular > max(singular[0], 1e-300) * 1e-8
-    inverse = (vt[keep].T / singular[keep] ** 2) @ vt[keep]
-    cov = s2 * inverse / np.outer(scale, scale)
-    unseen = (norms == 0) | (np.sqrt(np.sum(vt[~keep] ** 2, axis=0)) > 1e-3)
-    cov[unseen, :] = np.inf
-    cov[:, unseen] = np.inf
-    return cov
-
-
-def _shot_sandwich(jacobian, residuals: np.ndarray, scale: float, shot_rows: Sequence[int]) -> np.ndarray:
-    """The covariance of x robust to errors correlated within a shot (a cluster-robust sandwich, the
-    shots the clusters): B (sum over shots of g_s g_s^T) B G / (G - 1), with B the Gauss-Newton
-    inverse and g_s a shot's gradient of the robust cost. `jacobian` is least_squares' (scaled for
-    the robust loss), `residuals` its raw ones, `scale` the loss's f_scale; `shot_rows` each shot's
-    number of residuals, in order. The columns are scaled to unit norm as in _covariance."""
-    j = jacobian.toarray() if hasattr(jacobian, "toarray") else np.asarray(jacobian, dtype=float)
-    # least_squares' own scaling for soft_l1: J and f multiplied so that J^T f is the gradient.
-    z = (residuals / scale) ** 2
-    first, second = (1 + z) ** -0.5, -0.5 * (1 + z) ** -1.5 / scale ** 2
-    weight = np.maximum(first + 2 * second * residuals ** 2, np.finfo(float).eps)
-    f = residuals * first / np.sqrt(weight)
-    norms = np.linalg.norm(j, axis=0)
-    column = np.where(norms > 0, norms, 1.0)
-    js = j / column
-    _, singular, vt = np.linalg.svd(js, full_matrices=False)
-    keep = singular > max(singular[0], 1e-300) * 1e-8
-    bread = (vt[keep].T / singular[keep] ** 2) @ vt[keep]
-    meat = np.zeros_like(bread)
-    start = 0
-    for rows in shot_rows:
-        g = js[start:start + rows].T @ f[start:start + rows]
-        meat += np.outer(g, g)
-        start += rows
-    clusters = len(shot_rows)
-    cov = bread @ meat @ bread * (clusters / max(clusters - 1, 1)) / np.outer(column, column)
-    unseen = (norms == 0) | (np.sqrt(np.sum(vt[~keep] ** 2, axis=0)) > 1e-3)
-    cov[unseen, :] = np.inf
-    cov[:, unseen] = np.inf
-    return cov
-
-
 def _report(problem: _Problem, x, result, seconds: float) -> Calibration:
-    gauss_newton = _covariance(result.jac, result.cost, problem.size)
-    sandwich = _shot_sandwich(result.jac, result.fun, STAGES[-1][2], [2 * len(k) for k, _ in problem.rows])
     n = len(problem.fit)
-    # The larger of the two: Gauss-Newton's holds for independent errors, the shots' sandwich also
-    # when a detector errs alike through a shot (doc/calibration.md, "Standard errors").
-    cov = sandwich if np.all(np.diag(sandwich)[:n] >= np.diag(gauss_newton)[:n]) else gauss_newton
+    rows = [2 * len(k) for k, _ in problem.rows]
+    columns, start = [], n
+    for names in problem.shot_names:
+        columns.append(list(range(start, start + len(names))))
+        start += len(names)
+    candidates = {"gauss_newton": uncertainty.gauss_newton(result.jac, result.cost, problem.size)[:n, :n]}
+    if n and len(problem.tracks) > 1:
+        candidates["shot_sandwich"] = uncertainty.shot_sandwich(result.jac, result.fun, STAGES[-1][2], rows)[:n, :n]
+        candidates["shot_jackknife"] = uncertainty.shot_jackknife(result.jac, result.fun, STAGES[-1][2], rows,
+                                                                  columns, n)
+    # The largest: Gauss-Newton's holds for independent errors, the shots' sandwich and jackknife
+    # also when a detector errs alike through a shot (doc/calibration.md, "Uncertainty").
+    variances = np.max([np.abs(np.diag(c)) for c in candidates.values()], axis=0) if n else np.zeros(0)
     if os.environ.get("CUE_SIM_CALIBRATE_DEBUG"):
-        print("standard errors, Gauss-Newton:", np.sqrt(np.diag(gauss_newton)[:n]), "shots' sandwich:",
-              np.sqrt(np.diag(sandwich)[:n]), flush=True)
-    errors = np.sqrt(np.maximum(np.abs(np.diag(gauss_newton)[:n]), np.abs(np.diag(sandwich)[:n])))
+        for name, c in candidates.items():
+            print(f"standard errors, {name}: {np.sqrt(np.abs(np.diag(c)))}", flush=True)
+    errors = np.sqrt(variances)
     with np.errstate(invalid="ignore", divide="ignore"):
-        corr = cov[:n, :n] / np.outer(errors, errors)
+        widest = max(candidates.values(),
+                     key=lambda c: float(np.nansum(np.abs(np.diag(c)) / np.maximum(variances, 1e-300))))
+        corr = widest / np.sqrt(np.outer(np.abs(np.diag(widest)), np.abs(np.diag(widest))))
     values = problem.coefficients(x)
     shots, contacts = [], {"ball_ball": 0, "cushion": 0}
     predicted = problem.predict(x)

@@ -29,6 +29,10 @@ class Track:
     positions: np.ndarray
     strike: Dict[str, float] = field(default_factory=dict)
     name: str = ""
+    #: [s] how long the shutter was open around each instant (0: instants). A detector finds a
+    #: smeared ball's centre at its mean position over the exposure, which the fit then predicts:
+    #: at a contact within it, the middle's position is up to v x exposure / 8 off, always on one side.
+    exposure: float = 0.0
     #: What made a synthetic track (cue_sim.calibrate.synthetic), None for an observed one.
     truth: Optional[dict] = None
     #: The strike as it was commanded (all of STRIKE_FIELDS), when a record says: what an
@@ -49,6 +53,11 @@ class Track:
                              f"got {self.positions.shape}")
         if len(set(self.ball_ids.tolist())) != n or np.any(self.ball_ids < 0) or np.any(self.ball_ids > 15):
             raise ValueError(f"{self.label}ball_ids: distinct ids in [0, 15], got {self.ball_ids.tolist()}")
+        if not (0.0 <= self.exposure <= 0.1):
+            raise ValueError(f"{self.label}exposure: {self.exposure} s is outside [0, 0.1]")
+        if k > 1 and self.exposure > float(np.min(np.diff(self.times))):
+            raise ValueError(f"{self.label}exposure: {self.exposure} s is longer than the shortest time between two "
+                             f"instants ({float(np.min(np.diff(self.times)))} s)")
         unknown = set(self.strike) - set(STRIKE_FIELDS)
         if unknown:
             raise ValueError(f"{self.label}strike: unknown fields {sorted(unknown)}; they are {', '.join(STRIKE_FIELDS)}")
@@ -107,9 +116,10 @@ def _columns_to_tracks(columns: Dict[str, np.ndarray], source: str) -> List[Trac
     return tracks
 
 
-def load_tracks(path, strikes: Optional[Sequence[Dict[str, float]]] = None) -> List[Track]:
+def load_tracks(path, strikes: Optional[Sequence[Dict[str, float]]] = None, exposure: float = 0.0) -> List[Track]:
     """The shots of a CSV or NPZ file (the module's text), one Track a shot in the order of their
-    `shot` values; `strikes`, one dict a shot, says what is known of each strike."""
+    `shot` values; `strikes`, one dict a shot, says what is known of each strike; `exposure` [s]
+    the camera's (Track.exposure)."""
     path = pathlib.Path(path)
     if path.suffix == ".npz":
         with np.load(path, allow_pickle=False) as data:
@@ -127,6 +137,9 @@ def load_tracks(path, strikes: Optional[Sequence[Dict[str, float]]] = None) -> L
             except ValueError:
                 columns[name.strip()] = np.array(values)
     tracks = _columns_to_tracks(columns, path.name)
+    for track in tracks:
+        track.exposure = float(exposure)
+        track.__post_init__()
     if strikes is not None:
         if len(strikes) != len(tracks):
             raise ValueError(f"strikes: one a shot, {len(tracks)} shots, got {len(strikes)}")
