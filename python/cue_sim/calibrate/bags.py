@@ -31,6 +31,8 @@ SOURCES = ("ground_truth", "detections", "tf")
 DEFAULT_TOPICS = {"ground_truth": "/table/camera/ground_truth", "detections": "/detect_balls/detections",
                   "tf": "/tf"}
 SHOTS_TOPIC = "/table/shots"
+#: The node's camera's shutter time by default (config/table_node.yaml, ~camera/exposure) [s].
+NODE_EXPOSURE = 0.004
 STATE_TOPIC = "/table/state"
 #: A ball frame lower than this share of a radius above the cloth is a pocketed ball's (the node
 #: puts those below the cloth): not seen.
@@ -107,10 +109,11 @@ def _state_before(messages, state_topic: str, stamp: float) -> Optional[Dict[int
 def tracks_from_bag(path, source: str = "detections", topic: Optional[str] = None, shots_topic: str = SHOTS_TOPIC,
                     state_topic: str = STATE_TOPIC, known: Sequence[str] = (), before: float = 0.5,
                     longest: float = 15.0, table_frame: str = "table", ball_frame_prefix: str = "ball_",
-                    ball_radius: float = 0.028575, noise: float = 0.002, exposure: float = 0.0) -> List[Track]:
+                    ball_radius: float = 0.028575, noise: float = 0.002,
+                    exposure: Optional[float] = None) -> List[Track]:
     """The shots of the bag at `path`, one Track a strike (the module's text); `exposure` [s] is
-    the camera's shutter time (Track.exposure; the node's ~camera/exposure, for its camera's
-    detections on its images; the ground truth and /tf are at instants)."""
+    the camera's shutter time for the detections (Track.exposure; None: the node's default
+    ~camera/exposure, NODE_EXPOSURE); the ground truth and /tf are at instants."""
     import rosbag
     if source not in SOURCES:
         raise ValueError(f"source: one of {', '.join(SOURCES)}, got '{source}'")
@@ -146,7 +149,8 @@ def tracks_from_bag(path, source: str = "detections", topic: Optional[str] = Non
         track.strike = {"ball": commanded["ball"], **{f: commanded[f] for f in known if f != "ball"}}
         track.commanded = commanded
         track.truth = {"executed": _shot_fields(shot.executed), "noise": bool(shot.noise)}
-        track.exposure = exposure if source == "detections" else 0.0  # the others are at instants
+        shutter = NODE_EXPOSURE if exposure is None else exposure
+        track.exposure = shutter if source == "detections" else 0.0  # the others are at instants
         track.__post_init__()
         tracks.append(track)
     if not tracks:

@@ -23,7 +23,7 @@ from typing import Dict, List, Optional, Sequence
 import numpy as np
 
 from cue_sim.calibrate.fit import DEFAULT_NOISE, STAGES, _Problem, _stages
-from cue_sim.calibrate.uncertainty import gauss_newton
+from cue_sim.calibrate.uncertainty import shot_block
 from cue_sim.calibrate.tracks import Track
 
 #: The noise model's fields, in the node's order (~noise/speed ... ~noise/b).
@@ -120,15 +120,17 @@ def fit_execution_noise(tracks: Sequence[Track], commanded: Optional[Dict[str, f
     begin = time.perf_counter()
     problem = _Problem(tracks, table, models, base.params, [], noise, threads, unknowns="strike")
     x, result = _stages(problem, problem.x0, range(len(STAGES)), max_evaluations, progress)
-    cov = gauss_newton(result.jac, result.cost, problem.size)
     executed, errors = [], []
-    offset = 0
-    for track, names in zip(tracks, problem.shot_names):
+    offset, row = 0, 0
+    for track, names, (k, _) in zip(tracks, problem.shot_names, problem.rows):
         values = {name: float(x[offset + n]) for n, name in enumerate(names)}
         executed.append({f: values.get(f, track.strike.get(f, math.nan)) for f in NOISE_FIELDS})
-        errors.append({f: float(np.sqrt(abs(cov[offset + names.index(f), offset + names.index(f)])))
-                       if f in names else math.inf for f in NOISE_FIELDS})
+        cov = shot_block(result.jac, result.cost, problem.size, slice(row, row + 2 * len(k)),
+                         range(offset, offset + len(names)))
+        errors.append({f: float(np.sqrt(abs(cov[names.index(f), names.index(f)]))) if f in names else math.inf
+                       for f in NOISE_FIELDS})
         offset += len(names)
+        row += 2 * len(k)
     return _spread(executed, errors, command, radius, len(tracks), time.perf_counter() - begin)
 
 

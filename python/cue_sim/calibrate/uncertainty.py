@@ -1,50 +1,35 @@
-"""How well a fit knows what it found: covariances at the least-squares solution.
+"""How well a fit knows what it found: the coefficients' covariance at the least-squares solution.
 
-Three estimates, all from the Jacobian that scipy's least_squares returns (scaled for the robust
+The problem is block-arrow shaped: every shot's residuals depend on the coefficients and on that
+shot's own unknowns only. Each shot's own unknowns are profiled out of its block (its coefficient
+columns and residuals projected off its own columns), which leaves what the shot says of the
+coefficients whatever its own unknowns are; the coefficients' information is the sum of those over
+the shots (the Schur complement of J^T J: the coefficient block of its inverse, without forming
+it). Three estimates, from the Jacobian that scipy's least_squares returns (scaled for the robust
 loss, so that J^T J is the Gauss-Newton Hessian of the robust cost and J^T f its gradient):
 
-- `gauss_newton`: s^2 (J^T J)^+, right when every position's error is independent;
-- `shot_sandwich`: the cluster-robust covariance with the shots as clusters (CR1), right also
-  when a detector errs alike through a shot;
+- `gauss_newton`: s^2 H^+, right when every position's error is independent;
+- `shot_sandwich`: H^+ (sum over shots of g_s g_s^T) H^+ G/(G-1), the cluster-robust covariance
+  with the shots as clusters (CR1), right also when a detector errs alike through a shot;
 - `shot_jackknife`: the coefficients refitted without each shot in turn, one Newton step from the
-  solution with that shot's own unknowns profiled out (CR3, the delete-one-cluster jackknife):
-  the sandwich's small-sample correction, larger when one shot carries much of what is known.
+  solution (CR3, the delete-one-cluster jackknife): the sandwich's small-sample correction, larger
+  when one shot carries much of what is known.
 
-The columns are scaled to unit norm first, so that what counts as unseen does not depend on units
-(a spin in rad/s beside a friction coefficient); a component the data does not see (a column of
-zeros, or one along a direction the others leave free) gets an infinite variance.
+The coefficients' columns are scaled to unit norm first, so that what counts as unseen does not
+depend on units; a coefficient the data does not see (no information, or only along a direction
+the others leave free) gets an infinite variance.
 """
 from __future__ import annotations
 
-from typing import List, Sequence, Tuple
+from dataclasses import dataclass
+from typing import List, Sequence
 
 import numpy as np
 
-#: Singular values below this share of the largest count as zero: a direction the data leaves free.
+#: Singular values of J below this share of the largest count as zero (of J^T J: its square).
 RANK_SHARE = 1e-8
-#: A column whose unit vector has more than this of its length in the free directions is unseen.
+#: A coefficient whose unit vector has more than this of its length in the free directions is unseen.
 UNSEEN_SHARE = 1e-3
-
-
-def _dense(jacobian) -> np.ndarray:
-    return jacobian.toarray() if hasattr(jacobian, "toarray") else np.asarray(jacobian, dtype=float)
-
-
-def _pseudo_inverse(j: np.ndarray) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """((J^T J)^+ of the unit-norm columns, the column norms, which columns are unseen)."""
-    norms = np.linalg.norm(j, axis=0)
-    scale = np.where(norms > 0, norms, 1.0)
-    _, singular, vt = np.linalg.svd(j / scale, full_matrices=False)
-    keep = singular > max(singular[0], 1e-300) * RANK_SHARE
-    inverse = (vt[keep].T / singular[keep] ** 2) @ vt[keep]
-    unseen = (norms == 0) | (np.sqrt(np.sum(vt[~keep] ** 2, axis=0)) > UNSEEN_SHARE)
-    return inverse, scale, unseen
-
-
-def _mark_unseen(cov: np.ndarray, unseen: np.ndarray) -> np.ndarray:
-    cov[unseen, :] = np.inf
-    cov[:, unseen] = np.inf
-    return cov
 
 
 def robust_residuals(residuals: np.ndarray, scale: float) -> np.ndarray:
@@ -56,72 +41,114 @@ def robust_residuals(residuals: np.ndarray, scale: float) -> np.ndarray:
     return residuals * first / np.sqrt(weight)
 
 
-def gauss_newton(jacobian, cost: float, observations: int) -> np.ndarray:
-    """s^2 (J^T J)^+, s^2 the residuals' variance per degree of freedom (the robust cost's)."""
-    j = _dense(jacobian)
-    s2 = 2 * cost / max(observations - j.shape[1], 1)
-    inverse, scale, unseen = _pseudo_inverse(j)
-    return _mark_unseen(s2 * inverse / np.outer(scale, scale), unseen)
+@dataclass
+class Profiled:
+    """The coefficients' information with the shots' own unknowns profiled out, in units where
+    each coefficient's column has unit norm (`scale` the norms)."""
+    information: np.ndarray  # H, n x n
+    per_shot: List[np.ndarray]  # H_s
+    gradients: List[np.ndarray]  # g_s of the robust cost
+    scale: np.ndarray
+    unseen: np.ndarray  # which coefficients the data does not see
 
 
-def shot_sandwich(jacobian, residuals: np.ndarray, scale: float, shot_rows: Sequence[int]) -> np.ndarray:
-    """B (sum over shots of g_s g_s^T) B G / (G - 1): B the Gauss-Newton inverse, g_s a shot's
-    gradient of the robust cost, G the shots. `residuals` are least_squares' raw ones, `scale` the
-    loss's f_scale, `shot_rows` each shot's number of residuals, in order."""
-    j = _dense(jacobian)
-    f = robust_residuals(residuals, scale)
-    inverse, column, unseen = _pseudo_inverse(j)
-    js = j / column
-    meat = np.zeros_like(inverse)
-    start = 0
-    for rows in shot_rows:
-        g = js[start:start + rows].T @ f[start:start + rows]
-        meat += np.outer(g, g)
-        start += rows
-    clusters = len(shot_rows)
-    cov = inverse @ meat @ inverse * (clusters / max(clusters - 1, 1)) / np.outer(column, column)
-    return _mark_unseen(cov, unseen)
-
-
-def _profiled(a: np.ndarray, b: np.ndarray, f: np.ndarray):
-    """A shot's coefficient columns `a` and residuals `f` with its own unknowns' columns `b`
-    projected out: what the shot says of the coefficients whatever its own unknowns are."""
+def _own_columns_out(a: np.ndarray, b: np.ndarray, f: np.ndarray):
+    """`a` and `f` projected off the span of `b`'s columns."""
     if b.shape[1] == 0:
         return a, f
     q, r = np.linalg.qr(b)
-    keep = np.abs(np.diag(r)) > max(np.abs(np.diag(r)).max(), 1e-300) * RANK_SHARE
-    q = q[:, keep]
+    diagonal = np.abs(np.diag(r))
+    q = q[:, diagonal > max(diagonal.max(initial=0.0), 1e-300) * RANK_SHARE]
     return a - q @ (q.T @ a), f - q @ (q.T @ f)
 
 
-def shot_jackknife(jacobian, residuals: np.ndarray, scale: float, shot_rows: Sequence[int],
-                   shot_columns: Sequence[Sequence[int]], coefficients: int) -> np.ndarray:
-    """The covariance of the first `coefficients` components of x by the delete-one-shot jackknife:
-    (G - 1)/G sum over shots of (d_s - mean d)(d_s - mean d)^T, with d_s = -(H - H_s)^+ g_s the
-    Newton step that takes the solution to the fit without shot s (H and g with each shot's own
-    unknowns, `shot_columns`, profiled out). A coefficient that some single shot alone determines
-    gets an infinite variance."""
-    j = _dense(jacobian)
-    f = robust_residuals(residuals, scale)
-    norms = np.linalg.norm(j[:, :coefficients], axis=0)
-    column = np.where(norms > 0, norms, 1.0)
-    pieces: List[Tuple[np.ndarray, np.ndarray]] = []
+def _inverse(h: np.ndarray):
+    """(H^+, which coefficients lie in H's null space)."""
+    _, singular, vt = np.linalg.svd(h)
+    keep = singular > max(singular[0] if len(singular) else 0.0, 1e-300) * RANK_SHARE ** 2
+    unseen = np.sqrt(np.sum(vt[~keep] ** 2, axis=0)) > UNSEEN_SHARE
+    return (vt[keep].T / singular[keep]) @ vt[keep], unseen
+
+
+def profile(jacobian, residuals: np.ndarray, loss_scale: float, shot_rows: Sequence[int],
+            shot_columns: Sequence[Sequence[int]], coefficients: int) -> Profiled:
+    """The profiled information of the first `coefficients` components of x: `jacobian` and the raw
+    `residuals` are least_squares', `loss_scale` its f_scale; `shot_rows` each shot's number of
+    residuals in order, `shot_columns` its own unknowns' columns."""
+    j = jacobian.tocsr() if hasattr(jacobian, "tocsr") else np.asarray(jacobian, dtype=float)
+    f = robust_residuals(residuals, loss_scale)
+    blocks = []
     start = 0
     for rows, columns in zip(shot_rows, shot_columns):
-        a, r = _profiled(j[start:start + rows, :coefficients] / column, j[start:start + rows, list(columns)],
-                         f[start:start + rows])
-        pieces.append((a.T @ a, a.T @ r))
+        block = j[start:start + rows]
+        block = block.toarray() if hasattr(block, "toarray") else block
+        blocks.append((block[:, :coefficients], block[:, list(columns)], f[start:start + rows]))
         start += rows
-    total = sum(h for h, _ in pieces)
+    norms = np.sqrt(sum(np.sum(a ** 2, axis=0) for a, _, _ in blocks)) if blocks else np.zeros(coefficients)
+    scale = np.where(norms > 0, norms, 1.0)
+    per_shot, gradients = [], []
+    for a, b, r in blocks:
+        a, r = _own_columns_out(a / scale, b, r)
+        per_shot.append(a.T @ a)
+        gradients.append(a.T @ r)
+    information = sum(per_shot) if per_shot else np.zeros((coefficients, coefficients))
+    _, unseen = _inverse(information)
+    return Profiled(information, per_shot, gradients, scale, unseen | (norms == 0))
+
+
+def _in_units(cov: np.ndarray, profiled: Profiled) -> np.ndarray:
+    cov = cov / np.outer(profiled.scale, profiled.scale)
+    cov[profiled.unseen, :] = np.inf
+    cov[:, profiled.unseen] = np.inf
+    return cov
+
+
+def gauss_newton(profiled: Profiled, cost: float, observations: int, unknowns: int) -> np.ndarray:
+    """s^2 H^+, s^2 the residuals' variance per degree of freedom (the robust cost's)."""
+    s2 = 2 * cost / max(observations - unknowns, 1)
+    inverse, _ = _inverse(profiled.information)
+    return _in_units(s2 * inverse, profiled)
+
+
+def shot_sandwich(profiled: Profiled) -> np.ndarray:
+    """H^+ (sum over shots of g_s g_s^T) H^+ G/(G-1)."""
+    inverse, _ = _inverse(profiled.information)
+    meat = sum(np.outer(g, g) for g in profiled.gradients)
+    clusters = len(profiled.gradients)
+    return _in_units(inverse @ meat @ inverse * clusters / max(clusters - 1, 1), profiled)
+
+
+def shot_jackknife(profiled: Profiled) -> np.ndarray:
+    """(G - 1)/G sum over shots of (d_s - mean d)(d_s - mean d)^T, d_s = -(H - H_s)^+ g_s the
+    Newton step that takes the solution to the fit without shot s. A coefficient that some single
+    shot alone determines gets an infinite variance."""
     steps = []
-    unseen = np.zeros(coefficients, dtype=bool)
-    for h, g in pieces:
-        _, singular, vt = np.linalg.svd(total - h)
-        keep = singular > max(singular[0], 1e-300) * RANK_SHARE
-        unseen |= np.sqrt(np.sum(vt[~keep] ** 2, axis=0)) > UNSEEN_SHARE
-        steps.append(-(vt[keep].T / singular[keep]) @ (vt[keep] @ g))
+    unseen = profiled.unseen.copy()
+    for h, g in zip(profiled.per_shot, profiled.gradients):
+        inverse, alone = _inverse(profiled.information - h)
+        unseen |= alone
+        steps.append(-inverse @ g)
     steps = np.array(steps)
     clusters = len(steps)
     deviation = steps - steps.mean(axis=0)
-    cov = (clusters - 1) / clusters * deviation.T @ deviation / np.outer(column, column)
-    return _mark_unseen(cov, unseen | (norms == 0))
+    cov = (clusters - 1) / clusters * deviation.T @ deviation
+    cov[unseen, :] = np.inf
+    cov[:, unseen] = np.inf
+    return _in_units(cov, profiled)
+
+
+def shot_block(jacobian, cost: float, observations: int, rows: slice, columns: Sequence[int]) -> np.ndarray:
+    """s^2 (B^T B)^+ of one shot's own unknowns (`columns`, its residuals `rows`) with nothing shared
+    fitted: the shots are then independent, and this is each one's Gauss-Newton covariance."""
+    j = jacobian.tocsr() if hasattr(jacobian, "tocsr") else np.asarray(jacobian, dtype=float)
+    b = j[rows][:, list(columns)]
+    b = b.toarray() if hasattr(b, "toarray") else b
+    s2 = 2 * cost / max(observations - j.shape[1], 1)
+    norms = np.linalg.norm(b, axis=0)
+    scale = np.where(norms > 0, norms, 1.0)
+    inverse, unseen = _inverse((b / scale).T @ (b / scale))
+    cov = s2 * inverse / np.outer(scale, scale)
+    unseen |= norms == 0
+    cov[unseen, :] = np.inf
+    cov[:, unseen] = np.inf
+    return cov
