@@ -6,7 +6,8 @@ Subscribes to the table node's ~camera/image_raw and ~camera/ground_truth, finds
 takes them onto the table through the calibration and the camera's pose in tf, publishes them
 as a geometry_msgs/PoseArray on ~detections in the table frame, and logs its error in
 millimetres against the ground truth every `~report_every` frames. With ~save it writes the
-first image with its detections drawn (README's figure).
+first image with its detections drawn (README's figure). ~queue_size (1) images wait their turn:
+1 drops what it has no time for (live), more finds the balls in every image, late (a recording).
 
   rosrun cue_sim detect_balls.py _save:=/tmp/detections.png
 """
@@ -31,7 +32,7 @@ def quaternion_matrix(q):
 class Detector:
     """Detections per image, scored against the ground truth with the same stamp."""
 
-    def __init__(self, camera_ns, table_frame, ball_radius):
+    def __init__(self, camera_ns, table_frame, ball_radius, queue_size=1):
         self.table_frame = table_frame
         self.ball_radius = ball_radius
         self.bridge = CvBridge()
@@ -42,7 +43,7 @@ class Detector:
         self.results = []  # (found, visible, errors [mm]) per scored image
         rospy.Subscriber(camera_ns + "/camera_info", CameraInfo, self.on_info, queue_size=1)
         rospy.Subscriber(camera_ns + "/ground_truth", CameraGroundTruth, self.on_truth, queue_size=10)
-        rospy.Subscriber(camera_ns + "/image_raw", Image, self.on_image, queue_size=1, buff_size=2 ** 24)
+        rospy.Subscriber(camera_ns + "/image_raw", Image, self.on_image, queue_size=queue_size, buff_size=2 ** 24)
         self.publisher = rospy.Publisher("~detections", PoseArray, queue_size=1)
         self.last_image = None
         self.region = None
@@ -105,8 +106,11 @@ def draw(image, pixels, radius, path):
 def main():
     rospy.init_node("detect_balls")
     camera_ns = rospy.get_param("~camera", "/table/camera")
+    # ~queue_size: 1 (live) keeps only the newest image, dropping those it has no time for; a
+    # recording (calibration_record.launch) keeps more, and finds the balls in every image, late.
     detector = Detector(camera_ns, rospy.get_param("~table_frame", "table"),
-                        rospy.get_param("~ball_radius", rospy.get_param("/table/ball_radius", 0.028575)))
+                        rospy.get_param("~ball_radius", rospy.get_param("/table/ball_radius", 0.028575)),
+                        int(rospy.get_param("~queue_size", 1)))
     report_every = rospy.get_param("~report_every", 30)
     save = rospy.get_param("~save", "")
     reported = 0

@@ -21,6 +21,9 @@ import numpy as np
 import rospy
 import rostest
 import yaml
+from geometry_msgs.msg import PoseArray
+
+from cue_sim.msg import CameraGroundTruth
 
 HERE = os.path.dirname(os.path.realpath(__file__))
 SESSION = os.path.join(HERE, "..", "..", "scripts", "calibration_session.py")
@@ -56,9 +59,21 @@ class CalibrationSession(unittest.TestCase):
             return ("/calibration_record" in subscribers.get("/table/shots", [])
                     and "/detect_balls" in subscribers.get("/table/camera/image_raw", []))
         wait_for(subscribed, 60, "the recorder and the detector subscribed")
+        latest = {"truth": rospy.Time(0), "detections": rospy.Time(0)}
+
+        def seen(kind):
+            def on(message):
+                latest[kind] = max(latest[kind], message.header.stamp)
+            return on
+        rospy.Subscriber("/table/camera/ground_truth", CameraGroundTruth, seen("truth"), queue_size=100)
+        rospy.Subscriber("/detect_balls/detections", PoseArray, seen("detections"), queue_size=100)
         played = subprocess.run([sys.executable, SESSION, f"_shots:={SHOTS}", "_seed:=4", "__name:=session"],
                                 capture_output=True, text=True, timeout=300)
         assert played.returncode == 0, played.stdout + played.stderr
+        # The detector takes every image, late on a busy machine: the recording ends once it has
+        # caught up with the last image of the session.
+        last = latest["truth"]
+        wait_for(lambda: latest["detections"] >= last, 120, "the detector caught up with the camera")
         close_recording(cls.bag)
         from cue_sim.calibrate.bags import tracks_from_bag
         cls.truth = tracks_from_bag(cls.bag, "ground_truth")
@@ -67,7 +82,7 @@ class CalibrationSession(unittest.TestCase):
 
     @classmethod
     def tearDownClass(cls):
-        if os.path.exists(cls.bag):
+        if os.path.exists(cls.bag) and not os.environ.get("CUE_SIM_KEEP_BAG"):
             os.remove(cls.bag)
 
     def test_1_each_source_gives_each_shot(self):
@@ -78,11 +93,14 @@ class CalibrationSession(unittest.TestCase):
                 self.assertEqual(set(track.commanded), {"ball", "speed", "phi", "theta", "a", "b"})
                 self.assertLess(track.times[0], 0)  # the balls seen standing before the strike
                 self.assertEqual(len(track.ball_ids), 3)
-        # 30 Hz images, tf at the node's rate (higher)
-        for truth, tf in zip(self.truth, self.tf):
+        # images at up to 30 Hz (fewer when the machine is busy), tf at the node's 100 Hz; every
+        # image's detections are recorded (the detector's queue in calibration_record.launch)
+        for truth, detected, tf in zip(self.truth, self.detected, self.tf):
             self.assertGreater(len(tf.times), len(truth.times))
-            period = np.median(np.diff(truth.times))
-            self.assertAlmostEqual(period, 1 / 30, delta=0.004)
+            self.assertLessEqual((len(truth.times) - 1) / (truth.times[-1] - truth.times[0]), 30.5)
+        # (the last shot's track runs to the recording's end, which cuts the detector's lag)
+        counts = [(len(d.times), len(t.times)) for d, t in zip(self.detected, self.truth)]
+        self.assertTrue(all(d == t for d, t in counts[:-1]), counts)
 
     def test_2_detections_follow_the_true_balls(self):
         errors = []
