@@ -529,6 +529,13 @@ def _stages(problem: _Problem, x, stages, max_evaluations: int, progress):
             if os.environ.get("CUE_SIM_CALIBRATE_DEBUG"):
                 print(f"stage {stage}: shots {sorted(misfits)} left out and fitted again: misfit shares "
                       f"{np.round(shares, 3)} -> {np.round(_misfit_shares(problem, x), 3)}", flush=True)
+            # and the stage once more with every shot in: its result (the cost that ranks models,
+            # the Jacobian the standard errors come from) is the whole data's
+            result = _solve(problem, x, active, max_evaluations if last else max_evaluations // 5,
+                            LAST_TOLERANCE if last else STAGE_TOLERANCE, scale,
+                            lambda n, c, s=stage: progress(s, n, c) if progress else None,
+                            LAST_SUBPROBLEM_TOLERANCE if last else STAGE_SUBPROBLEM_TOLERANCE)
+            x[active] = result.x
         if os.environ.get("CUE_SIM_CALIBRATE_DEBUG"):
             print(f"stage {stage}: nfev {result.nfev} njev {result.njev} cost {result.cost:.1f} {result.message} "
                   f"{x[:len(problem.fit)]}", flush=True)
