@@ -515,27 +515,31 @@ def _stages(problem: _Problem, x, stages, max_evaluations: int, progress):
         shares = _misfit_shares(problem, x) if coefficients_too and problem.fit else [0.0]
         misfits = {i for i, share in enumerate(shares) if share > STAGE_MISFIT_SHARE}
         if misfits and len(misfits) < len(problem.tracks):
-            # A shot the longer window put on other contacts than its data's pulls the coefficients
-            # after it: the stage runs again from where it began without that shot, which is then
-            # fitted again alone with the coefficients the others give, and compared again.
-            x = before
-            problem.set_window(window, x, left_out=misfits)
-            result = _solve(problem, x, active, max_evaluations if last else max_evaluations // 5,
-                            LAST_TOLERANCE if last else STAGE_TOLERANCE, scale,
-                            lambda n, c, s=stage: progress(s, n, c) if progress else None,
-                            LAST_SUBPROBLEM_TOLERANCE if last else STAGE_SUBPROBLEM_TOLERANCE)
-            x[active] = result.x
-            _refit_misfits(problem, x, max_evaluations, window, STAGE_MISFIT_SHARE, only=misfits)
+            # A shot the longer window put on other contacts than its data's may pull the
+            # coefficients after it: the stage runs again from where it began without that shot,
+            # which is then fitted again alone with the coefficients the others give, and the stage
+            # once more with every shot in; of the two ends, the one whose whole data's cost is lower
+            # stands (leaving a shot out helps when it drags the others, not when it alone is hard).
+            other = before.copy()
+            problem.set_window(window, other, left_out=misfits)
+            trial = _solve(problem, other, active, max_evaluations if last else max_evaluations // 5,
+                           LAST_TOLERANCE if last else STAGE_TOLERANCE, scale,
+                           lambda n, c, s=stage: progress(s, n, c) if progress else None,
+                           LAST_SUBPROBLEM_TOLERANCE if last else STAGE_SUBPROBLEM_TOLERANCE)
+            other[active] = trial.x
+            _refit_misfits(problem, other, max_evaluations, window, STAGE_MISFIT_SHARE, only=misfits)
+            trial = _solve(problem, other, active, max_evaluations if last else max_evaluations // 5,
+                           LAST_TOLERANCE if last else STAGE_TOLERANCE, scale,
+                           lambda n, c, s=stage: progress(s, n, c) if progress else None,
+                           LAST_SUBPROBLEM_TOLERANCE if last else STAGE_SUBPROBLEM_TOLERANCE)
+            other[active] = trial.x
             if os.environ.get("CUE_SIM_CALIBRATE_DEBUG"):
-                print(f"stage {stage}: shots {sorted(misfits)} left out and fitted again: misfit shares "
-                      f"{np.round(shares, 3)} -> {np.round(_misfit_shares(problem, x), 3)}", flush=True)
-            # and the stage once more with every shot in: its result (the cost that ranks models,
-            # the Jacobian the standard errors come from) is the whole data's
-            result = _solve(problem, x, active, max_evaluations if last else max_evaluations // 5,
-                            LAST_TOLERANCE if last else STAGE_TOLERANCE, scale,
-                            lambda n, c, s=stage: progress(s, n, c) if progress else None,
-                            LAST_SUBPROBLEM_TOLERANCE if last else STAGE_SUBPROBLEM_TOLERANCE)
-            x[active] = result.x
+                print(f"stage {stage}: shots {sorted(misfits)} left out and fitted again: cost {result.cost:.1f} -> "
+                      f"{trial.cost:.1f}", flush=True)
+            if trial.cost < result.cost:
+                x, result = other, trial
+            else:
+                problem.set_window(window, x)
         if os.environ.get("CUE_SIM_CALIBRATE_DEBUG"):
             print(f"stage {stage}: nfev {result.nfev} njev {result.njev} cost {result.cost:.1f} {result.message} "
                   f"{x[:len(problem.fit)]}", flush=True)
