@@ -6,9 +6,8 @@ Sets the table (~set_state) for each shot, strikes it (~strike), and waits until
 whole. Two kinds of session:
 
 - ``_repeat:=false`` (default): `~shots` shots, each from a random layout of `~balls` balls, the
-  cue ball struck towards one of the others at 1 to 3 m/s with draw or follow (what
-  cue_sim.calibrate.synthetic.random_shots plays): cushion and ball-ball contacts for the
-  physics fit;
+  cue ball struck towards one of the others at 1 to 3 m/s with draw or follow
+  (cue_sim.calibrate.synthetic.random_shot): cushion and ball-ball contacts for the physics fit;
 - ``_repeat:=true``: the same layout and the same commanded shot `~shots` times (a robot's
   repeatability test): for the execution-noise fit.
 
@@ -66,7 +65,7 @@ def ball_states(positions, radius):
 def main():
     rospy.init_node("calibration_session")
     from cue_sim.api import Engine
-    from cue_sim.calibrate.synthetic import random_layout
+    from cue_sim.calibrate.synthetic import random_shot
     table_ns = rospy.get_param("~table_ns", "/table")
     shots = int(rospy.get_param("~shots", 10))
     balls = int(rospy.get_param("~balls", 3))
@@ -78,15 +77,11 @@ def main():
     set_state = rospy.ServiceProxy(table_ns + "/set_state", SetState)
     strike = rospy.ServiceProxy(table_ns + "/strike", Strike)
     watch = RestWatch(table_ns + "/state")
-    layout = random_layout(engine, rng, balls)
     shot = None
     for i in range(shots):
         if not repeat or shot is None:
-            layout = layout if repeat else random_layout(engine, rng, balls)
-            target = layout[1 + i % (balls - 1)] - layout[0]
-            shot = StrikeRequest(ball_id=0, speed=rng.uniform(1.0, 3.0),
-                                 phi=float(np.arctan2(target[1], target[0]) + rng.normal(0, 0.05)),
-                                 theta=0.0, a=0.0, b=rng.uniform(-0.3, 0.3))
+            layout, strike = random_shot(engine, rng, i, balls)
+            shot = StrikeRequest(ball_id=0, theta=0.0, a=0.0, **strike)
         placed = set_state(ball_states(layout, radius))
         if not placed.success:
             rospy.logerr("calibration_session: ~set_state refused: %s", placed.message)

@@ -10,8 +10,7 @@
 
 #include "cue_sim/calibration/shot_film.hpp"
 #include "cue_sim/physics/simulation.hpp"
-#include "cue_sim/table_description/table_catalog.hpp"
-#include "cue_sim/table_description/urdf_table_loader.hpp"
+#include "engine_7ft.hpp"
 
 namespace cue_sim
 {
@@ -21,13 +20,6 @@ namespace
 {
 using physics::Engine;
 using physics::TableState;
-
-std::shared_ptr<const Engine<double>> engine7ft()
-{
-  return std::make_shared<const Engine<double>>(
-      std::make_shared<const physics::TableModel>(tableFromUrdfFile(tableUrdfPath("7ft"))),
-      physics::PhysicsParams<double>());
-}
 
 FilmSettings overhead(const Engine<double>& engine, double exposure)
 {

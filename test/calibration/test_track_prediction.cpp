@@ -9,8 +9,7 @@
 #include "cue_sim/calibration/track_prediction.hpp"
 #include "cue_sim/physics/rack.hpp"
 #include "cue_sim/physics/simulation.hpp"
-#include "cue_sim/table_description/table_catalog.hpp"
-#include "cue_sim/table_description/urdf_table_loader.hpp"
+#include "engine_7ft.hpp"
 
 namespace cue_sim
 {
@@ -20,13 +19,6 @@ namespace
 {
 using physics::Engine;
 using physics::TableState;
-
-std::shared_ptr<const Engine<double>> engine7ft()
-{
-  return std::make_shared<const Engine<double>>(
-      std::make_shared<const physics::TableModel>(tableFromUrdfFile(tableUrdfPath("7ft"))),
-      physics::PhysicsParams<double>());
-}
 
 TrackRequest breakRequest(const Engine<double>& engine, double speed)
 {

@@ -53,6 +53,7 @@ def test_bad_input_and_a_bad_command_line_are_refused(tmp_path):
     (tmp_path / "bad.csv").write_text("t,ball,x\n0,0,0.1\n")
     refused = run(tmp_path / "bad.csv")
     assert refused.returncode == 1 and "no column y" in refused.stderr
-    unknown = run(tmp_path / "bad.csv", "--fit", "ball_radius")
-    assert unknown.returncode == 1
+    save_tracks(tmp_path / "good.csv", random_shots(Engine("7ft"), 1, seed=1, duration=1.0))
+    unknown = run(tmp_path / "good.csv", "--fit", "ball_radius")  # good tracks, a coefficient not fittable
+    assert unknown.returncode == 1 and "fit: ball_radius" in unknown.stderr
     assert run("--no-such-flag").returncode == 2

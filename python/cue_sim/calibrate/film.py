@@ -15,7 +15,7 @@ from typing import List, Optional
 import numpy as np
 
 from cue_sim.calibrate.association import associate
-from cue_sim.calibrate.synthetic import random_layout
+from cue_sim.calibrate.synthetic import random_shot
 from cue_sim.calibrate.tracks import Track
 
 
@@ -85,7 +85,7 @@ def filmed(camera: Camera, ids, positions, strike: dict, rate: float = 60.0, dur
 
 def filmed_shots(engine, count: int, seed: int = 0, balls: int = 3, rates=(60.0,), duration: float = 4.0,
                  threads: int = 0, **camera) -> List[Track]:
-    """`count` shots played as cue_sim.calibrate.synthetic.random_shots plays them, each filmed at
+    """`count` shots (cue_sim.calibrate.synthetic.random_shot), each filmed at
     one of `rates` in turn by its own Camera(engine, **camera) and found by the detector, on
     `threads` threads (0: every core; the renderer, OpenCV and numpy leave the GIL)."""
     import os
@@ -93,10 +93,7 @@ def filmed_shots(engine, count: int, seed: int = 0, balls: int = 3, rates=(60.0,
     rng = np.random.default_rng(seed)
     plans = []
     for i in range(count):
-        positions = random_layout(engine, rng, balls)
-        target = positions[1 + i % (balls - 1)] - positions[0]
-        strike = {"speed": rng.uniform(1.0, 3.0), "phi": float(np.arctan2(target[1], target[0]) + rng.normal(0, 0.05)),
-                  "b": rng.uniform(-0.3, 0.3)}
+        positions, strike = random_shot(engine, rng, i, balls)
         plans.append((positions, strike, rates[i % len(rates)], int(rng.integers(2**32)), f"shot {i}"))
 
     def film(plan):

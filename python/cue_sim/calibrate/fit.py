@@ -506,12 +506,18 @@ def _stages(problem: _Problem, x, stages, max_evaluations: int, progress):
         active = np.ones(len(x), dtype=bool)
         active[:len(problem.fit)] = coefficients_too
         last = stage == len(STAGES) - 1
+
+        def solve(start, stage=stage, scale=scale, active=active, last=last):
+            """The stage's least_squares from `start`, which takes its result."""
+            run = _solve(problem, start, active, max_evaluations if last else max_evaluations // 5,
+                         LAST_TOLERANCE if last else STAGE_TOLERANCE, scale,
+                         lambda n, c: progress(stage, n, c) if progress else None,
+                         LAST_SUBPROBLEM_TOLERANCE if last else STAGE_SUBPROBLEM_TOLERANCE)
+            start[active] = run.x
+            return run
+
         before = x.copy()
-        result = _solve(problem, x, active, max_evaluations if last else max_evaluations // 5,
-                        LAST_TOLERANCE if last else STAGE_TOLERANCE, scale,
-                        lambda n, c, s=stage: progress(s, n, c) if progress else None,
-                        LAST_SUBPROBLEM_TOLERANCE if last else STAGE_SUBPROBLEM_TOLERANCE)
-        x[active] = result.x
+        result = solve(x)
         shares = _misfit_shares(problem, x) if coefficients_too and problem.fit else [0.0]
         misfits = {i for i, share in enumerate(shares) if share > STAGE_MISFIT_SHARE}
         if misfits and len(misfits) < len(problem.tracks):
@@ -520,19 +526,11 @@ def _stages(problem: _Problem, x, stages, max_evaluations: int, progress):
             # which is then fitted again alone with the coefficients the others give, and the stage
             # once more with every shot in; of the two ends, the one whose whole data's cost is lower
             # stands (leaving a shot out helps when it drags the others, not when it alone is hard).
-            other = before.copy()
+            other = before
             problem.set_window(window, other, left_out=misfits)
-            trial = _solve(problem, other, active, max_evaluations if last else max_evaluations // 5,
-                           LAST_TOLERANCE if last else STAGE_TOLERANCE, scale,
-                           lambda n, c, s=stage: progress(s, n, c) if progress else None,
-                           LAST_SUBPROBLEM_TOLERANCE if last else STAGE_SUBPROBLEM_TOLERANCE)
-            other[active] = trial.x
+            solve(other)
             _refit_misfits(problem, other, max_evaluations, window, STAGE_MISFIT_SHARE, only=misfits)
-            trial = _solve(problem, other, active, max_evaluations if last else max_evaluations // 5,
-                           LAST_TOLERANCE if last else STAGE_TOLERANCE, scale,
-                           lambda n, c, s=stage: progress(s, n, c) if progress else None,
-                           LAST_SUBPROBLEM_TOLERANCE if last else STAGE_SUBPROBLEM_TOLERANCE)
-            other[active] = trial.x
+            trial = solve(other)
             if os.environ.get("CUE_SIM_CALIBRATE_DEBUG"):
                 print(f"stage {stage}: shots {sorted(misfits)} left out and fitted again: cost {result.cost:.1f} -> "
                       f"{trial.cost:.1f}", flush=True)

@@ -66,17 +66,24 @@ def observe(engine, ids, positions, strike: dict, rate: float = 60.0, duration: 
                  truth={"t0": clock, "phi": fields[1], "ball_ball": predicted["ball_ball"], "cushion": predicted["cushion"]})
 
 
+def random_shot(engine, rng: np.random.Generator, index: int, balls: int = 3):
+    """One shot of a calibration session: a random layout of `balls` balls (random_layout) and the
+    cue ball (0) struck towards ball 1 + index % (balls - 1), a little off, at 1 to 3 m/s, with draw
+    or follow. Returns (positions (balls, 2), strike {speed, phi, b}). The same draws whoever plays
+    it: random_shots, cue_sim.calibrate.film and scripts/calibration_session.py."""
+    positions = random_layout(engine, rng, balls)
+    target = positions[1 + index % (balls - 1)] - positions[0]
+    strike = {"speed": rng.uniform(1.0, 3.0), "phi": float(np.arctan2(target[1], target[0]) + rng.normal(0, 0.05)),
+              "b": rng.uniform(-0.3, 0.3)}
+    return positions, strike
+
+
 def random_shots(engine, count: int, seed: int = 0, balls: int = 3, **observation) -> List[Track]:
-    """`count` shots, each from a random layout of `balls` balls, the cue ball (0) struck towards
-    one of the others (a little off, at 1 to 3 m/s, with draw or follow), observed as observe()
-    does with `observation`'s options."""
+    """`count` shots (random_shot), observed as observe() does with `observation`'s options."""
     rng = np.random.default_rng(seed)
     tracks = []
     for i in range(count):
-        positions = random_layout(engine, rng, balls)
-        target = positions[1 + i % (balls - 1)] - positions[0]
-        strike = {"speed": rng.uniform(1.0, 3.0), "phi": float(np.arctan2(target[1], target[0]) + rng.normal(0, 0.05)),
-                  "b": rng.uniform(-0.3, 0.3)}
+        positions, strike = random_shot(engine, rng, i, balls)
         tracks.append(observe(engine, list(range(balls)), positions, strike, seed=int(rng.integers(2**32)),
                               name=f"shot {i}", **observation))
     return tracks

@@ -90,7 +90,7 @@ class Track:
         return out
 
 
-def _columns_to_tracks(columns: Dict[str, np.ndarray], source: str) -> List[Track]:
+def _columns_to_tracks(columns: Dict[str, np.ndarray], source: str, exposure: float = 0.0) -> List[Track]:
     missing = [c for c in ("t", "ball", "x", "y") if c not in columns]
     if missing:
         raise ValueError(f"{source}: no column {', '.join(missing)} (it needs t, ball, x, y; shot optional)")
@@ -112,7 +112,7 @@ def _columns_to_tracks(columns: Dict[str, np.ndarray], source: str) -> List[Trac
         j = np.searchsorted(ids, ball[rows].astype(int))
         positions[k, j, 0], positions[k, j, 1] = x[rows], y[rows]
         label = int(name) if isinstance(name, float) and name.is_integer() else name
-        tracks.append(Track(times, ids, positions, name=f"{source} shot {label}"))
+        tracks.append(Track(times, ids, positions, name=f"{source} shot {label}", exposure=float(exposure)))
     return tracks
 
 
@@ -136,10 +136,7 @@ def load_tracks(path, strikes: Optional[Sequence[Dict[str, float]]] = None, expo
                 columns[name.strip()] = np.array([float(v) if v not in ("", None) else np.nan for v in values])
             except ValueError:
                 columns[name.strip()] = np.array(values)
-    tracks = _columns_to_tracks(columns, path.name)
-    for track in tracks:
-        track.exposure = float(exposure)
-        track.__post_init__()
+    tracks = _columns_to_tracks(columns, path.name, exposure)
     if strikes is not None:
         if len(strikes) != len(tracks):
             raise ValueError(f"strikes: one a shot, {len(tracks)} shots, got {len(strikes)}")
