@@ -80,8 +80,8 @@ def main():
     shot = None
     for i in range(shots):
         if not repeat or shot is None:
-            layout, strike = random_shot(engine, rng, i, balls)
-            shot = StrikeRequest(ball_id=0, theta=0.0, a=0.0, **strike)
+            layout, commanded = random_shot(engine, rng, i, balls)
+            shot = StrikeRequest(ball_id=0, theta=0.0, a=0.0, **commanded)
         placed = set_state(ball_states(layout, radius))
         if not placed.success:
             rospy.logerr("calibration_session: ~set_state refused: %s", placed.message)
