@@ -152,6 +152,94 @@ def _coefficient_bounds(name: str, params: Dict[str, float]) -> Tuple[float, flo
     return float(low), float(high)
 
 
+STRIKE_FIELDS = ("speed", "phi", "theta", "a", "b")
+
+
+class _ShotLayout:
+    """Where a shot's unknowns lie in x and how its start is made from them: worked out once, used
+    at every evaluation (a fit makes thousands; building each start from named unknowns took half
+    of a 20-shot fit's time in Python)."""
+
+    def __init__(self, track: Track, names: Sequence[str], offset: int):
+        index = {name: offset + n for n, name in enumerate(names)}
+        self.t0 = index["t0"]
+        #: (N, 2): the columns of x that hold where each ball stood, -1 for a ball never seen
+        self.rest_columns = np.array([[index.get(f"x{ball}", -1), index.get(f"y{ball}", -1)]
+                                      for ball in track.ball_ids]).reshape(-1, 2)
+        known = np.all(self.rest_columns >= 0, axis=1)
+        #: per ball of the track: its index in the prediction (the balls seen), -1 if not in it
+        self.column = np.where(known, np.cumsum(known) - 1, -1)
+        ids = track.ball_ids[known]
+        self.struck = int(np.flatnonzero(ids == track.struck_ball)[0])
+        self.rest_known = self.rest_columns[known]
+        #: the struck ball's motion (vx, vy, w_top, wz), or None when the strike's fields are fitted
+        self.motion = [index[n] for n in ("vx", "vy", "w_top", "wz")] if "vx" in index else None
+        #: the strike's fields: (column of x, or -1 for a value the track knows, that value)
+        self.fields = [(index.get(name, -1), float(track.strike.get(name, 0.0))) for name in STRIKE_FIELDS]
+        self.ball = int(track.struck_ball)
+        self.arrays = _core.StateArrays()
+        self.arrays.ids = ids.astype(np.int32)
+        self.arrays.motion = np.zeros(len(ids), dtype=np.uint8)
+        self.arrays.pocket = np.full(len(ids), -1, dtype=np.int32)
+        self.count = len(ids)
+
+    def rest(self, x) -> np.ndarray:
+        """(N, 2): where each ball of the track stood before the shot, NaN for a ball never seen."""
+        rest = np.full(self.rest_columns.shape, np.nan)
+        rest[self.column >= 0] = x[self.rest_known]
+        return rest
+
+    def start(self, x, rest: np.ndarray):
+        """The shot's start as _core.StateArrays (reused: made into the engine's state at once)."""
+        positions = np.zeros((self.count, 3))
+        positions[:, :2] = rest[self.column >= 0]
+        velocities, spins = np.zeros((self.count, 3)), np.zeros((self.count, 3))
+        if self.motion is not None:
+            vx, vy, w_top, wz = (float(x[i]) for i in self.motion)
+            speed = max(math.hypot(vx, vy), 1e-12)
+            velocities[self.struck, :2] = vx, vy
+            spins[self.struck] = -vy / speed * w_top, vx / speed * w_top, wz  # w_top about z x v: the rolling axis
+        arrays = self.arrays
+        arrays.positions, arrays.velocities, arrays.spins = positions, velocities, spins
+        return arrays
+
+    def strike(self, x):
+        """(ball, speed, phi, theta, a, b) when the strike's fields are fitted, else None."""
+        if self.motion is not None:
+            return None
+        return (self.ball, *(float(x[i]) if i >= 0 else value for i, value in self.fields))
+
+
+@dataclass
+class _ShotPrediction:
+    """A shot's prediction: predict_tracks' dict (None if it could not be made) for the instants
+    from `first` on (after t0), where the balls stood before, and the balls' columns in it."""
+    result: Optional[dict]
+    first: int
+    rest: np.ndarray
+    column: np.ndarray
+
+    @property
+    def ok(self) -> bool:
+        return self.result is not None
+
+    def at(self, k: np.ndarray, j: np.ndarray) -> np.ndarray:
+        """(len(k), 2): ball j of the track at its instant k: where it stood before the strike,
+        predicted after it (NaN for a ball never seen); where it stood if the shot has no prediction."""
+        if self.result is None:
+            return self.rest[j]
+        after = k >= self.first
+        out = self.rest[j]
+        out[after] = self.result["positions"][k[after] - self.first, self.column[j[after]]]
+        return out
+
+    def positions(self, instants: int) -> np.ndarray:
+        """(instants, N, 2): every ball at every instant of the track."""
+        n = len(self.column)
+        k, j = np.repeat(np.arange(instants), n), np.tile(np.arange(n), instants)
+        return self.at(k, j).reshape(instants, n, 2)
+
+
 class _Problem:
     """The least-squares problem: x is the fitted coefficients, then each shot's unknowns."""
 
@@ -170,8 +258,10 @@ class _Problem:
             x0.append(min(max(self.params[name], bounds[0]), bounds[1]))
             low.append(bounds[0])
             high.append(bounds[1])
+        self.layouts: List[_ShotLayout] = []
         for track in self.tracks:
             guess, names, bounds = self._shot_guess(track)
+            self.layouts.append(_ShotLayout(track, names, len(x0)))
             self.shot_names.append(names)
             for name in names:
                 x0.append(guess[name])
@@ -250,7 +340,7 @@ class _Problem:
             if "speed" not in track.strike and "speed" not in commanded:
                 raise ValueError(f"{track.label}the strike's fields are fitted from the commanded strike: "
                                  "the track has none (Track.commanded)")
-            for name in ("speed", "phi", "theta", "a", "b"):
+            for name in STRIKE_FIELDS:
                 if name not in track.strike:
                     names.append(name)
                     bounds[name] = STRIKE_BOUNDS[name]
@@ -296,70 +386,35 @@ class _Problem:
         return np.array([[unknowns.get(f"x{ball}", np.nan), unknowns.get(f"y{ball}", np.nan)]
                          for ball in track.ball_ids])
 
-    def _start(self, engine, track: Track, rest: np.ndarray, unknowns: Dict[str, float]):
-        """The shot's start as _core.StateArrays (made here, not through State: a fit makes
-        thousands), its strike or None, and which of the track's balls are in it."""
-        known = np.all(np.isfinite(rest), axis=1)
-        ids = track.ball_ids[known]
-        velocities, spins = np.zeros((len(ids), 3)), np.zeros((len(ids), 3))
-        positions = np.zeros((len(ids), 3))
-        positions[:, :2] = rest[known]
-        strike = None
-        struck = int(np.flatnonzero(ids == track.struck_ball)[0])
-        if "vx" in unknowns:
-            v = np.array([unknowns["vx"], unknowns["vy"]])
-            across = np.array([-v[1], v[0]]) / max(float(np.linalg.norm(v)), 1e-12)  # z x v: the rolling axis
-            velocities[struck, :2] = v
-            spins[struck] = unknowns["w_top"] * across[0], unknowns["w_top"] * across[1], unknowns["wz"]
-        else:
-            fields = {name: track.strike.get(name, unknowns.get(name, 0.0)) for name in ("speed", "phi", "theta",
-                                                                                           "a", "b")}
-            strike = (track.struck_ball, fields["speed"], fields["phi"], fields["theta"], fields["a"], fields["b"])
-        arrays = _core.StateArrays()
-        arrays.ids = ids.astype(np.int32)
-        arrays.positions, arrays.velocities, arrays.spins = positions, velocities, spins
-        arrays.motion = np.zeros(len(ids), dtype=np.uint8)
-        arrays.pocket = np.full(len(ids), -1, dtype=np.int32)
-        return arrays, strike, known
-
-    def predict(self, x):
-        """Per shot: predicted positions (K, N, 2) at every instant of its track, its contacts and
-        whether it could be predicted."""
+    def predict(self, x) -> List[_ShotPrediction]:
+        """Per shot: its prediction from x at every instant of its track after its strike (t0)."""
         engine = self.engine(x)
-        starts, strikes, times, extras = [], [], [], []
-        rests = []
-        for track, unknowns in zip(self.tracks, self.shot_unknowns(x)):
-            rest = self.rest_of(track, unknowns)
+        starts, strikes, times, firsts, rests = [], [], [], [], []
+        for track, layout in zip(self.tracks, self.layouts):
+            t0 = float(x[layout.t0])
+            rest = layout.rest(x)
+            starts.append(layout.start(x, rest))
+            strikes.append(layout.strike(x))
+            first = int(np.searchsorted(track.times, t0, side="right"))  # the first instant after t0
+            times.append(track.times[first:] - t0)
+            firsts.append(first)
             rests.append(rest)
-            start, strike, known = self._start(engine, track, rest, unknowns)
-            after = track.times > unknowns["t0"]
-            starts.append(start)
-            strikes.append(strike)
-            times.append(track.times[after] - unknowns["t0"])
-            extras.append((after, known))
         try:
             predictions = _core.predict_tracks(engine._engine, starts, strikes, times, self.threads,
                                                [track.exposure for track in self.tracks])
         except ValueError:
-            predictions = None
+            predictions = [None] * len(self.tracks)
         self.evaluations += 1
-        out = []
-        for i, (track, rest, (after, known)) in enumerate(zip(self.tracks, rests, extras)):
-            positions = np.repeat(rest[None], len(track.times), axis=0)
-            p = None if predictions is None else predictions[i]
-            ok = p is not None and not p["error"]
-            if ok:
-                positions[np.ix_(after, known)] = p["positions"]
-            out.append((positions, ok, p))
-        return out
+        return [_ShotPrediction(p if p is not None and not p["error"] else None, first, rest, layout.column)
+                for p, first, rest, layout in zip(predictions, firsts, rests, self.layouts)]
 
     def residuals(self, x) -> np.ndarray:
         parts = []
-        for (positions, ok, _), track, (k, j) in zip(self.predict(x), self.tracks, self.rows):
-            if not ok:
+        for predicted, track, (k, j) in zip(self.predict(x), self.tracks, self.rows):
+            if not predicted.ok:
                 parts.append(np.full(2 * len(k), UNPREDICTABLE))
                 continue
-            parts.append(((positions[k, j] - track.positions[k, j]) / self.noise).ravel())
+            parts.append(((predicted.at(k, j) - track.positions[k, j]) / self.noise).ravel())
         return np.concatenate(parts)
 
     def sparsity(self):
@@ -403,6 +458,12 @@ LAST_SUBPROBLEM_TOLERANCE = 1e-10
 #: to six digits (a tenth of a standard error), for a fifth less time.
 STAGE_TOLERANCE = 1e-5
 LAST_TOLERANCE = 1e-7
+#: The last stage of a fit with coefficients runs in rounds of this many evaluations (_settle) ...
+SETTLE_ROUND = 20
+#: ... and stops once a round has moved no coefficient by more than this share of its standard
+#: error: at a linear rate of 0.95 an evaluation (the slowest seen), what is left of its way is
+#: then about half a round's move, under 1 % of a standard error.
+SETTLED_SHARE = 0.01
 
 
 def calibrate(tracks: Sequence[Track], fit: Sequence[str] = ("mu_slide", "mu_roll"), table: str = "7ft",
@@ -463,8 +524,9 @@ def calibrate(tracks: Sequence[Track], fit: Sequence[str] = ("mu_slide", "mu_rol
 def _misfit_shares(problem: _Problem, x) -> List[float]:
     """Per shot: the share of its positions beyond 5 noises of the prediction from x."""
     shares = []
-    for (positions, ok, _), track, (k, j) in zip(problem.predict(x), problem.tracks, problem.rows):
-        miss = np.linalg.norm(positions[k, j] - track.positions[k, j], axis=1) if ok else np.full(len(k), np.inf)
+    for predicted, track, (k, j) in zip(problem.predict(x), problem.tracks, problem.rows):
+        miss = (np.linalg.norm(predicted.at(k, j) - track.positions[k, j], axis=1) if predicted.ok
+                else np.full(len(k), np.inf))
         shares.append(float(np.mean(miss > 5 * problem.noise)) if len(k) else 0.0)
     return shares
 
@@ -509,9 +571,11 @@ def _stages(problem: _Problem, x, stages, max_evaluations: int, progress):
 
         def solve(start, stage=stage, scale=scale, active=active, last=last):
             """The stage's least_squares from `start`, which takes its result."""
+            report = (lambda n, c: progress(stage, n, c)) if progress else (lambda n, c: None)
+            if last and problem.fit:
+                return _settle(problem, start, active, max_evaluations, scale, report)
             run = _solve(problem, start, active, max_evaluations if last else max_evaluations // 5,
-                         LAST_TOLERANCE if last else STAGE_TOLERANCE, scale,
-                         lambda n, c: progress(stage, n, c) if progress else None,
+                         LAST_TOLERANCE if last else STAGE_TOLERANCE, scale, report,
                          LAST_SUBPROBLEM_TOLERANCE if last else STAGE_SUBPROBLEM_TOLERANCE)
             start[active] = run.x
             return run
@@ -544,32 +608,90 @@ def _stages(problem: _Problem, x, stages, max_evaluations: int, progress):
     return x, result
 
 
+def _settle(problem: _Problem, x, active, max_evaluations: int, scale: float, progress):
+    """The last stage of a fit with coefficients: least_squares in rounds of SETTLE_ROUND
+    evaluations, each from where the last stopped, until a round converges by LAST_TOLERANCE, moves
+    no coefficient by more than SETTLED_SHARE of its standard error, or max_evaluations are spent.
+    x takes the result. With the loss narrowed to the noise the solver's steps converge only
+    linearly (the robust loss's curvature is left out of its Gauss-Newton model): seen, 300
+    evaluations in which the shots' unknowns crept by micrometres and the cost by 1e-5 of itself a
+    step, never within its tolerance, while the coefficients moved by a millionth of themselves."""
+    spent, n = 0, len(problem.fit)
+    while True:
+        before = x[:n].copy()
+        run = _solve(problem, x, active, min(SETTLE_ROUND, max_evaluations - spent), LAST_TOLERANCE, scale, progress,
+                     LAST_SUBPROBLEM_TOLERANCE)
+        x[active] = run.x
+        spent += run.nfev
+        if run.status != 0 or spent >= max_evaluations:  # converged by its own tolerances, or out of budget
+            break
+        errors = np.sqrt(np.abs(np.diag(uncertainty.gauss_newton(_profile(problem, run), run.cost, problem.size,
+                                                                  len(x)))))
+        if np.all(np.abs(x[:n] - before) <= SETTLED_SHARE * errors):
+            run.status, run.success = 2, True
+            run.message = (f"the coefficients moved less than {100 * SETTLED_SHARE:g} % of their standard errors in "
+                           f"{run.nfev} evaluations")
+            break
+    run.nfev = spent
+    return run
+
+
+def _profile(problem: _Problem, result) -> uncertainty.Profiled:
+    """The coefficients' information from least_squares' result on the problem, its shots'
+    unknowns profiled out (uncertainty.profile)."""
+    rows = [2 * len(k) for k, _ in problem.rows]
+    columns, start = [], len(problem.fit)
+    for names in problem.shot_names:
+        columns.append(list(range(start, start + len(names))))
+        start += len(names)
+    return uncertainty.profile(result.jac, result.fun, STAGES[-1][2], rows, columns, len(problem.fit))
+
+
 def _solve(problem: _Problem, x, active, max_evaluations: int, tolerance: float, scale: float, progress,
            subproblem_tolerance: float):
     """least_squares over the active components of x, the others held."""
     from scipy.optimize import least_squares
     full = x.copy()
+    last = {}
 
     def residuals(free):
         full[active] = free
         r = problem.residuals(full)
+        last["x"], last["r"] = free.copy(), r
         progress(problem.evaluations, float(np.sum(np.sqrt(1 + r ** 2) - 1)))  # soft_l1's cost
         return r
 
-    return least_squares(residuals, x[active], bounds=(problem.low[active], problem.high[active]), loss="soft_l1",
-                         f_scale=scale, jac_sparsity=problem.sparsity().tocsc()[:, np.flatnonzero(active)], x_scale="jac",
-                         max_nfev=max_evaluations, method="trf", tr_solver="lsmr", tr_options={"atol": subproblem_tolerance, "btol": subproblem_tolerance}, ftol=tolerance,
+    jacobian = _SparseDifferences(residuals, last, problem.sparsity().tocsc()[:, np.flatnonzero(active)],
+                                  (problem.low[active], problem.high[active]))
+    return least_squares(residuals, x[active], jac=jacobian, bounds=jacobian.bounds, loss="soft_l1", f_scale=scale,
+                         x_scale="jac", max_nfev=max_evaluations, method="trf", tr_solver="lsmr",
+                         tr_options={"atol": subproblem_tolerance, "btol": subproblem_tolerance}, ftol=tolerance,
                          xtol=1e-8)
+
+
+class _SparseDifferences:
+    """The residuals' Jacobian by forward differences over the sparsity's column groups, as
+    least_squares makes it from `jac_sparsity`, without the entries that are zero: more than half
+    of the pattern (a ball's rows before it moves depend only on where it stood), which lsmr's
+    products then skip. least_squares spent half of a 20-shot fit in lsmr, on the full pattern."""
+
+    def __init__(self, residuals, last, sparsity, bounds):
+        from scipy.optimize._numdiff import group_columns  # least_squares' own column grouping
+        self.residuals, self.last, self.bounds = residuals, last, bounds
+        self.sparsity = (sparsity, group_columns(sparsity))
+
+    def __call__(self, free):
+        from scipy.optimize._numdiff import approx_derivative  # least_squares' own differences
+        f0 = self.last["r"] if "x" in self.last and np.array_equal(self.last["x"], free) else None
+        jac = approx_derivative(self.residuals, free, method="2-point", f0=f0, bounds=self.bounds,
+                                sparsity=self.sparsity)
+        jac.eliminate_zeros()
+        return jac
 
 
 def _report(problem: _Problem, x, result, seconds: float) -> Calibration:
     n = len(problem.fit)
-    rows = [2 * len(k) for k, _ in problem.rows]
-    columns, start = [], n
-    for names in problem.shot_names:
-        columns.append(list(range(start, start + len(names))))
-        start += len(names)
-    profiled = uncertainty.profile(result.jac, result.fun, STAGES[-1][2], rows, columns, n)
+    profiled = _profile(problem, result)
     candidates = {"gauss_newton": uncertainty.gauss_newton(profiled, result.cost, problem.size, len(x))}
     if n and len(problem.tracks) > 1:
         candidates["shot_sandwich"] = uncertainty.shot_sandwich(profiled)
@@ -588,9 +710,9 @@ def _report(problem: _Problem, x, result, seconds: float) -> Calibration:
     values = problem.coefficients(x)
     shots, contacts = [], {"ball_ball": 0, "cushion": 0}
     predicted = problem.predict(x)
-    for track, unknowns, (positions, ok, p), (k, j) in zip(problem.tracks, problem.shot_unknowns(x), predicted,
-                                                            problem.rows):
-        miss = np.linalg.norm(positions[k, j] - track.positions[k, j], axis=1)
+    for track, unknowns, shot, (k, j) in zip(problem.tracks, problem.shot_unknowns(x), predicted, problem.rows):
+        miss = np.linalg.norm(shot.at(k, j) - track.positions[k, j], axis=1)
+        ok, p = shot.ok, shot.result
         inlier = miss <= 5 * problem.noise
         per_ball = {}
         for index, ball in enumerate(track.ball_ids):
@@ -607,7 +729,7 @@ def _report(problem: _Problem, x, result, seconds: float) -> Calibration:
                        {name: float(e) for name, e in zip(problem.fit, errors)}, corr, list(problem.fit), shots,
                        warnings, problem.noise, float(result.cost), seconds, problem.evaluations,
                        bool(result.success), result.message, values, result.fun * problem.noise,
-                       [positions for positions, _, _ in predicted])
+                       [shot.positions(len(track.times)) for shot, track in zip(predicted, problem.tracks)])
 
 
 def _warnings(problem, values, errors, contacts, shots, result) -> List[str]:
