@@ -139,7 +139,13 @@ class CalibrationSession(unittest.TestCase):
         path = self.bag + ".yaml"
         with open(path, "w") as f:
             f.write(result.to_yaml())
-        loaded = subprocess.run(["rosrun", "dynamic_reconfigure", "dynparam", "load", "/table", path],
+        # `rosrun dynamic_reconfigure dynparam load /table fit.yaml`, by this interpreter: dynparam
+        # starts with `#!/usr/bin/env python3`, which a pyenv python3 first on PATH (catkin_route.sh
+        # stands one in) would take, without ROS's modules.
+        from roslib.packages import find_node
+        dynparam = find_node("dynamic_reconfigure", "dynparam")
+        self.assertTrue(dynparam, "dynamic_reconfigure's dynparam not found")
+        loaded = subprocess.run([sys.executable, dynparam[0], "load", "/table", path],
                                 capture_output=True, text=True, timeout=60)
         os.remove(path)
         self.assertEqual(loaded.returncode, 0, loaded.stdout + loaded.stderr)
