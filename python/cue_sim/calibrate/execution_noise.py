@@ -24,10 +24,10 @@ import numpy as np
 
 from cue_sim.calibrate.fit import DEFAULT_NOISE, STAGES, _Problem, _stages
 from cue_sim.calibrate.uncertainty import shot_block
-from cue_sim.calibrate.tracks import Track
+from cue_sim.calibrate.tracks import CUE_FIELDS, Track
 
 #: The noise model's fields, in the node's order (~noise/speed ... ~noise/b).
-NOISE_FIELDS = ("speed", "phi", "theta", "a", "b")
+NOISE_FIELDS = CUE_FIELDS
 #: Each field's unit in the node's ~noise/* (a and b are metres there, units of R in a strike).
 NOISE_UNITS = {"speed": "m/s", "phi": "rad", "theta": "rad", "a": "m", "b": "m"}
 #: A deviation is not determined when the tracks' own error on a shot's field is more than this

@@ -25,7 +25,7 @@ import numpy as np
 
 from cue_sim._interpreter import core
 from cue_sim.calibrate import uncertainty
-from cue_sim.calibrate.tracks import Track
+from cue_sim.calibrate.tracks import CUE_FIELDS, Track
 
 _core = core()
 
@@ -152,9 +152,6 @@ def _coefficient_bounds(name: str, params: Dict[str, float]) -> Tuple[float, flo
     return float(low), float(high)
 
 
-STRIKE_FIELDS = ("speed", "phi", "theta", "a", "b")
-
-
 class _ShotLayout:
     """Where a shot's unknowns lie in x and how its start is made from them: worked out once, used
     at every evaluation (a fit makes thousands; building each start from named unknowns took half
@@ -175,7 +172,7 @@ class _ShotLayout:
         #: the struck ball's motion (vx, vy, w_top, wz), or None when the strike's fields are fitted
         self.motion = [index[n] for n in ("vx", "vy", "w_top", "wz")] if "vx" in index else None
         #: the strike's fields: (column of x, or -1 for a value the track knows, that value)
-        self.fields = [(index.get(name, -1), float(track.strike.get(name, 0.0))) for name in STRIKE_FIELDS]
+        self.fields = [(index.get(name, -1), float(track.strike.get(name, 0.0))) for name in CUE_FIELDS]
         self.ball = int(track.struck_ball)
         self.arrays = _core.StateArrays()
         self.arrays.ids = ids.astype(np.int32)
@@ -340,7 +337,7 @@ class _Problem:
             if "speed" not in track.strike and "speed" not in commanded:
                 raise ValueError(f"{track.label}the strike's fields are fitted from the commanded strike: "
                                  "the track has none (Track.commanded)")
-            for name in STRIKE_FIELDS:
+            for name in CUE_FIELDS:
                 if name not in track.strike:
                     names.append(name)
                     bounds[name] = STRIKE_BOUNDS[name]
@@ -379,12 +376,6 @@ class _Problem:
             self._engine = self._base.with_params(**{name: float(x[i]) for i, name in enumerate(self.fit)})
             self._engine_key = key
         return self._engine
-
-    @staticmethod
-    def rest_of(track: Track, unknowns: Dict[str, float]) -> np.ndarray:
-        """(N, 2): where each ball of the track stood before the shot, NaN for a ball never seen."""
-        return np.array([[unknowns.get(f"x{ball}", np.nan), unknowns.get(f"y{ball}", np.nan)]
-                         for ball in track.ball_ids])
 
     def predict(self, x) -> List[_ShotPrediction]:
         """Per shot: its prediction from x at every instant of its track after its strike (t0)."""
@@ -652,18 +643,16 @@ def _solve(problem: _Problem, x, active, max_evaluations: int, tolerance: float,
     """least_squares over the active components of x, the others held."""
     from scipy.optimize import least_squares
     full = x.copy()
-    last = {}
 
     def residuals(free):
         full[active] = free
         r = problem.residuals(full)
-        last["x"], last["r"] = free.copy(), r
         progress(problem.evaluations, float(np.sum(np.sqrt(1 + r ** 2) - 1)))  # soft_l1's cost
         return r
 
-    jacobian = _SparseDifferences(residuals, last, problem.sparsity().tocsc()[:, np.flatnonzero(active)],
+    jacobian = _SparseDifferences(residuals, problem.sparsity().tocsc()[:, np.flatnonzero(active)],
                                   (problem.low[active], problem.high[active]))
-    return least_squares(residuals, x[active], jac=jacobian, bounds=jacobian.bounds, loss="soft_l1", f_scale=scale,
+    return least_squares(jacobian.residuals, x[active], jac=jacobian, bounds=jacobian.bounds, loss="soft_l1", f_scale=scale,
                          x_scale="jac", max_nfev=max_evaluations, method="trf", tr_solver="lsmr",
                          tr_options={"atol": subproblem_tolerance, "btol": subproblem_tolerance}, ftol=tolerance,
                          xtol=1e-8)
@@ -675,14 +664,21 @@ class _SparseDifferences:
     of the pattern (a ball's rows before it moves depend only on where it stood), which lsmr's
     products then skip. least_squares spent half of a 20-shot fit in lsmr, on the full pattern."""
 
-    def __init__(self, residuals, last, sparsity, bounds):
+    def __init__(self, residuals, sparsity, bounds):
         from scipy.optimize._numdiff import group_columns  # least_squares' own column grouping
-        self.residuals, self.last, self.bounds = residuals, last, bounds
+        self._residuals, self.bounds = residuals, bounds
         self.sparsity = (sparsity, group_columns(sparsity))
+        self._last = None  # (x, residuals there): the solver asks for the Jacobian where it just evaluated
+
+    def residuals(self, free):
+        """The residuals at free, kept for the Jacobian there."""
+        r = self._residuals(free)
+        self._last = (free.copy(), r)
+        return r
 
     def __call__(self, free):
         from scipy.optimize._numdiff import approx_derivative  # least_squares' own differences
-        f0 = self.last["r"] if "x" in self.last and np.array_equal(self.last["x"], free) else None
+        f0 = self._last[1] if self._last is not None and np.array_equal(self._last[0], free) else None
         jac = approx_derivative(self.residuals, free, method="2-point", f0=f0, bounds=self.bounds,
                                 sparsity=self.sparsity)
         jac.eliminate_zeros()

@@ -18,7 +18,9 @@ from typing import Dict, List, Optional, Sequence
 import numpy as np
 
 #: The strike's fields, as ~strike and cue_sim.simulate name them.
-STRIKE_FIELDS = ("ball", "speed", "phi", "theta", "a", "b")
+#: The cue's fields of a strike: what the cue does (and what the node's noise model perturbs).
+CUE_FIELDS = ("speed", "phi", "theta", "a", "b")
+STRIKE_FIELDS = ("ball",) + CUE_FIELDS
 
 
 @dataclass
