@@ -24,7 +24,10 @@ PACKAGES=(
   libopencv-dev libimage-transport-dev libcamera-info-manager-dev libsensor-msgs-dev ros-sensor-msgs
   libcv-bridge-dev python3-opencv python3-cv-bridge python3-sensor-msgs python3-tf2-ros image-transport-tools
   # the table as a nodelet (cue_sim/TableNodelet), and image_proc's nodelets beside it in one manager
+  # (Debian 12 ships image_proc's nodelet_plugins.xml in libimage-proc-dev, not in ros-image-proc:
+  # without it pluginlib knows no image_proc/rectify)
   libnodelet-dev libnodeletlib-dev libnodeletlib-tools python3-nodelet pluginlib-dev ros-image-proc libimage-proc0d
+  libimage-proc-dev
   # rviz, and rviz without a screen (screenshots)
   rviz xvfb xauth imagemagick
   # plots of the work-precision report
