@@ -29,4 +29,5 @@ assert s.at_rest and len(s.events) > 20 and cue_sim.msg.BallState and cue_sim.sr
 print('catkin_route: cue_sim imports from the workspace:', len(s.events), 'events in a 9-ball break')")
 echo "catkin_route: catkin_make run_tests (log: $ws/run_tests.log)"
 catkin_make run_tests "${python[@]}" > "$ws/run_tests.log" 2>&1 || { tail -40 "$ws/run_tests.log"; exit 1; }
-catkin_test_results build/test_results
+# --verbose: a failing test's whole result file (each failed assertion with its message) in the log.
+catkin_test_results --verbose build/test_results
