@@ -6,8 +6,9 @@ Subscribes to the table node's ~camera/image_raw and ~camera/ground_truth, finds
 takes them onto the table through the calibration and the camera's pose in tf, publishes them
 as a geometry_msgs/PoseArray on ~detections in the table frame, and logs its error in
 millimetres against the ground truth every `~report_every` frames. With ~save it writes the
-first image with its detections drawn (README's figure). ~queue_size (1) images wait their turn:
-1 drops what it has no time for (live), more finds the balls in every image, late (a recording).
+first image with its detections drawn (README's figure). ~queue_size (1) images, and as many
+detections, wait their turn: 1 drops what it has no time for (live), more finds the balls in
+every image, late, and publishes every image's detections (a recording).
 
   rosrun cue_sim detect_balls.py _save:=/tmp/detections.png
 """
@@ -44,7 +45,9 @@ class Detector:
         rospy.Subscriber(camera_ns + "/camera_info", CameraInfo, self.on_info, queue_size=1)
         rospy.Subscriber(camera_ns + "/ground_truth", CameraGroundTruth, self.on_truth, queue_size=10)
         rospy.Subscriber(camera_ns + "/image_raw", Image, self.on_image, queue_size=queue_size, buff_size=2 ** 24)
-        self.publisher = rospy.Publisher("~detections", PoseArray, queue_size=1)
+        # The detections wait as the images do: a detector behind its images publishes back to
+        # back, faster than a queue of 1 reaches a recorder on a busy machine.
+        self.publisher = rospy.Publisher("~detections", PoseArray, queue_size=queue_size)
         self.last_image = None
         self.region = None
 

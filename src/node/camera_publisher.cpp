@@ -58,7 +58,7 @@ CameraPublisher::CameraPublisher(ros::NodeHandle& private_node, const CameraPara
     throw std::runtime_error("~camera/info_url '" + parameters.info_url + "': " + why);
   info_ = infoOf(intrinsics_, parameters.frame);
   transport_ = std::make_unique<image_transport::ImageTransport>(camera_node_);
-  image_publisher_ = transport_->advertiseCamera("image_raw", 2);
+  image_publisher_ = transport_->advertiseCamera("image_raw", static_cast<uint32_t>(parameters.queue_size));
   truth_publisher_ = camera_node_.advertise<cue_sim::CameraGroundTruth>("ground_truth", 10);
   if (!parameters.publish_frame)
   {

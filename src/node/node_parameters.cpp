@@ -134,6 +134,7 @@ void readCamera(ParameterReader& reader, CameraParameters& camera)
   reader.read("camera/rate", camera.rate);
   reader.read("camera/exposure", camera.exposure);
   reader.read("camera/noise", camera.noise);
+  reader.read("camera/queue_size", camera.queue_size);
   reader.read("camera/info_url", camera.info_url);
   reader.read("camera/width", camera.width);
   reader.read("camera/height", camera.height);
@@ -151,6 +152,8 @@ void readCamera(ParameterReader& reader, CameraParameters& camera)
     refuse("camera/exposure", camera.exposure, "[0, 0.1] s");
   if (!(camera.noise >= 0 && camera.noise <= 50))
     refuse("camera/noise", camera.noise, "[0, 50] levels");
+  if (camera.queue_size < 1 || camera.queue_size > kMaxCameraQueue)
+    refuse("camera/queue_size", camera.queue_size, "[1, 1000] images");
   for (const auto& [name, value] :
        {std::pair<const char*, int>{"camera/width", camera.width}, {"camera/height", camera.height}})
     if (value != 0 && (value < 16 || value > 8192))

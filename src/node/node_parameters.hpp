@@ -25,6 +25,9 @@ struct CameraParameters
   double rate = 30.0;                          ///< [Hz] of stamp time, in (0, 120]
   double exposure = 0.004;                     ///< [s] shutter open, in [0, 0.1]
   double noise = 0.0;                          ///< [8-bit levels] Gaussian sensor noise, in [0, 50]
+  /// Images a subscriber may fall behind before its oldest is dropped, in [1, 1000]: few live
+  /// (the newest image matters), more for a recording that wants every one (a busy detector).
+  int queue_size = 2;
   std::string info_url = "package://cue_sim/config/camera/overhead_1920x1200.yaml";
   int width = 0, height = 0;  ///< [px] the calibrated sensor read out scaled to this size; 0: as calibrated
   /// Broadcast `frame` in /tf_static at `pose`; false: something else (a robot's tf) places it.
@@ -54,6 +57,9 @@ struct NodeParameters
 
 /// Longest accepted ~tf_timeout [s]: a lookup holds one service thread at most this long.
 constexpr double kMaxTfTimeout = 1.0;
+/// Largest accepted ~camera/queue_size: 1000 images of 1920x1200 (6.9 MB each) are 6.9 GB a
+/// stalled subscriber could hold in the node; more is a mistake, not a need.
+constexpr int kMaxCameraQueue = 1000;
 
 /// Reads and checks every parameter; throws std::runtime_error naming the first one that is
 /// wrong, its value and its accepted range.
