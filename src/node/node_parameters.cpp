@@ -153,7 +153,7 @@ void readCamera(ParameterReader& reader, CameraParameters& camera)
   if (!(camera.noise >= 0 && camera.noise <= 50))
     refuse("camera/noise", camera.noise, "[0, 50] levels");
   if (camera.queue_size < 1 || camera.queue_size > kMaxCameraQueue)
-    refuse("camera/queue_size", camera.queue_size, "[1, 1000] images");
+    refuse("camera/queue_size", camera.queue_size, "[1, " + std::to_string(kMaxCameraQueue) + "] images");
   for (const auto& [name, value] :
        {std::pair<const char*, int>{"camera/width", camera.width}, {"camera/height", camera.height}})
     if (value != 0 && (value < 16 || value > 8192))

@@ -391,5 +391,9 @@ TEST_F(TableNodeTest, MisspelledOrMistypedParametersStopTheNodeWithAReason)
   EXPECT_EQ(bad_limit.first, 1);
   EXPECT_NE(bad_limit.second.find("~max_batch_shots must be in [1, 2147483647], got 0"), std::string::npos)
       << bad_limit.second;
+  const auto no_queue = run("no_queue", "_camera/queue_size:=0");
+  EXPECT_EQ(no_queue.first, 1);
+  EXPECT_NE(no_queue.second.find("~camera/queue_size must be in [1, 1000] images, got 0"), std::string::npos)
+      << no_queue.second;
 }
 }  // namespace
