@@ -25,6 +25,8 @@ target_link_libraries(physics_tests cue_sim_physics gtest_main)
 # The event search's internal structures are tested on their own too.
 target_include_directories(physics_tests PRIVATE src)
 target_compile_definitions(physics_tests PRIVATE CUE_SIM_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+# The second longest (1 to 2 minutes): early, beside the others.
+set_tests_properties(_ctest_cue_sim_gtest_physics_tests PROPERTIES COST 500)
 
 catkin_add_gtest(game_tests test/game/test_referee.cpp)
 target_link_libraries(game_tests cue_sim_game gtest_main)
@@ -130,6 +132,9 @@ catkin_run_tests_target("layers" "check_layers" "layers-check_layers.xml"
 catkin_run_tests_target("pytest" "python" "pytest-python.xml"
   COMMAND "env CUE_SIM_SIMULATE=$<TARGET_FILE:simulate> /usr/bin/python3 -m pytest ${PROJECT_SOURCE_DIR}/test/python -q -p no:cacheprovider --junitxml=${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/pytest-python.xml"
   DEPENDENCIES cue_sim_python simulate)
+# The longest test (4 to 11 minutes): first, beside the others, not last and alone (ctest -j2 starts
+# the costliest first; a fresh build has no timings of its own to rank them by).
+set_tests_properties(_ctest_cue_sim_pytest_python PROPERTIES COST 1000)
 
 # rviz without complaints: 60 s of rviz under Xvfb while a client racks, breaks, previews, steps,
 # aims, strikes and starts games; fails on any error or warning rviz prints.

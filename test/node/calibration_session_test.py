@@ -71,7 +71,8 @@ class CalibrationSession(unittest.TestCase):
         # calibration and pose (seen: the first shot's first five images without detections). The
         # session starts once it has found balls in an image.
         wait_for(lambda: latest["detections"] > rospy.Time(0), 60, "the detector's first detections")
-        played = subprocess.run([sys.executable, SESSION, f"_shots:={SHOTS}", "_seed:=4", "__name:=session"],
+        played = subprocess.run([sys.executable, SESSION, f"_shots:={SHOTS}", "_seed:=4", "__name:=session",
+                                 "_tracker:=/detect_balls/detections"],
                                 capture_output=True, text=True, timeout=300)
         assert played.returncode == 0, played.stdout + played.stderr
         # The detector takes every image, late on a busy machine: the recording ends once it has
