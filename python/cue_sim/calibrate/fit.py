@@ -62,7 +62,7 @@ STAGE_MISFIT_SHARE = 0.03
 #: A shot the joint fit left on other contacts is fitted again alone from its first guess, then,
 #: while its first moments (the first stage's window) do not fit either, from the struck ball this
 #: many times faster (a cushion model that cannot fit the shot misses later, and is not helped by
-#: them; trying them all took a model comparison from 100 to 300 s): a fast shot at a near ball, seen
+#: them; a model comparison then fits many shots again): a fast shot at a near ball, seen
 #: once before the next ball moves, has its speed from one frame's way, short by the share of the
 #: frame before the strike (seen at 30 Hz with frames dropped: 2.3 for 3.7 m/s); 0.7 for a guess
 #: that took in the first contact.
