@@ -266,6 +266,9 @@ class _Problem:
         self.unknowns = unknowns  # "motion": the struck ball's; "strike": the strike's fields not known
         self.params, self.fit, self.noise, self.threads = dict(params), list(fit), noise, threads
         self.evaluations = 0
+        #: Shots a stage left on other contacts that leaving out and fitting again alone did not
+        #: help: not tried again in the later stages (see _stages).
+        self.given_up = set()
         self._engine_key, self._engine, self._base = None, None, None
         self.shot_names: List[List[str]] = []
         self.rows: List[Tuple[np.ndarray, np.ndarray]] = []  # per shot: observed (k, j) pairs
@@ -619,7 +622,7 @@ def _stages(problem: _Problem, x, stages, max_evaluations: int, progress):
         before = x.copy()
         result = solve(x)
         shares = _misfit_shares(problem, x) if coefficients_too and problem.fit else [0.0]
-        misfits = {i for i, share in enumerate(shares) if share > STAGE_MISFIT_SHARE}
+        misfits = {i for i, share in enumerate(shares) if share > STAGE_MISFIT_SHARE} - problem.given_up
         if misfits and len(misfits) < len(problem.tracks):
             # A shot the longer window put on other contacts than its data's may pull the
             # coefficients after it: the stage runs again from where it began without that shot,
@@ -637,7 +640,10 @@ def _stages(problem: _Problem, x, stages, max_evaluations: int, progress):
             if trial.cost < result.cost:
                 x, result = other, trial
             else:
+                # Not rescued: each later stage would spend two runs and the shot's refits on it
+                # again (seen: a 20-shot fit taking 5 minutes over one such shot, to no effect).
                 problem.set_window(window, x)
+                problem.given_up |= misfits
         if os.environ.get("CUE_SIM_CALIBRATE_DEBUG"):
             print(f"stage {stage}: nfev {result.nfev} njev {result.njev} cost {result.cost:.1f} {result.message} "
                   f"{x[:len(problem.fit)]}", flush=True)
