@@ -89,3 +89,21 @@ def test_models_are_compared_each_with_the_models_asked_for():
     assert sorted(r.models["cushion"] for r in results) == ["han2005", "simple"]
     assert all(r.models["ball_ball"] == "frictionless" for r in results)
     assert results[0].cost <= results[1].cost
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_a_fast_shot_seen_twice_before_the_next_ball_moves_starts_from_its_speed(seed):
+    """At 30 Hz a cue ball at 5.7 m/s into a ball 0.34 m away is seen twice before that ball moves:
+    the fit's first guess of its speed and of the strike's time come from those two sightings,
+    wherever in the frame the strike fell (from where it stood over a frame's time, the speed was
+    short by the share of the frame before the strike: 0.09 of it for one of these seeds)."""
+    from cue_sim.api import State, simulate
+    from cue_sim.calibrate.fit import _Problem
+    engine = Engine("7ft")
+    strike = {"speed": 4.0, "phi": -math.pi / 2, "b": 0.2}
+    track = observe(engine, [0, 1], [[0.5, 0.2], [0.5, -0.2]], strike, rate=30.0, noise=0.0005, seed=seed)
+    problem = _Problem([track], "7ft", engine.models, engine.params, [], 0.0005, 1)
+    guess = dict(zip(problem.shot_names[0], problem.x0))
+    struck = simulate(engine, State.from_balls([0], [[0.5, 0.0]]), 0, until=1e-9, **strike).final.velocities[0]
+    assert math.hypot(guess["vx"], guess["vy"]) == pytest.approx(np.linalg.norm(struck), rel=0.1)
+    assert guess["t0"] == pytest.approx(track.truth["t0"], abs=0.003)
