@@ -23,6 +23,7 @@ On a real table the robot plays the shots; this script stands in for it on the s
 """
 import sys
 import threading
+import time
 
 import numpy as np
 import rospy
@@ -81,7 +82,6 @@ class TrackerWatch:
     def wait_until(self, stamp, deadline):
         """True once detections stamped at or after `stamp` came, within `deadline` wall seconds (the
         tracker lags in wall time, whatever the table's clock does)."""
-        import time
         end = time.monotonic() + deadline
         with self.condition:
             while not rospy.is_shutdown() and self.latest < stamp:

@@ -208,16 +208,16 @@ class _ShotLayout:
         arrays.positions, arrays.velocities, arrays.spins = positions, velocities, spins
         return arrays
 
-    def faster(self, x, factor: float, t0_bounds: Tuple[float, float]):
+    def faster(self, x, factor: float, first_moving: float):
         """x with the struck ball's speed (or the strike's, when fitted) times `factor` and the
-        strike moved so that the ball still reaches where it was first seen moving (t0's upper
-        bound): the start of a shot struck at another moment of the frame before that sighting."""
+        strike moved so that the ball still reaches where it was seen first moving at
+        `first_moving` (t0's upper bound): the start of a shot struck at another moment of the
+        frame before that sighting. Not clipped to the bounds."""
         y = x.copy()
         columns = self.motion[:2] if self.motion is not None else [i for (i, _), name in zip(self.fields, CUE_FIELDS)
                                                                    if name == "speed" and i >= 0]
         y[columns] *= factor
-        low, high = t0_bounds
-        y[self.t0] = min(max(high - (high - x[self.t0]) / factor, low), high)
+        y[self.t0] = first_moving - (first_moving - x[self.t0]) / factor
         return y
 
     def strike(self, x):
@@ -395,10 +395,9 @@ class _Problem:
         and slower by FASTER_STARTS (the strike earlier or later in the frame before it was first
         seen moving: with one sighting before the next ball moves the guess cannot tell)."""
         layout = self.layouts[0]
-        t0_bounds = (self.low[layout.t0], self.high[layout.t0])
         yield self.x0.copy()
         for factor in FASTER_STARTS:
-            yield np.clip(layout.faster(self.x0, factor, t0_bounds), self.low, self.high)
+            yield np.clip(layout.faster(self.x0, factor, self.high[layout.t0]), self.low, self.high)
 
     def coefficients(self, x) -> Dict[str, float]:
         return dict(self.params, **{name: float(x[i]) for i, name in enumerate(self.fit)})
