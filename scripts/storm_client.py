@@ -8,6 +8,16 @@
 #   storm_client.py SECONDS [THREADS] [MAX_BATCH]
 # Prints progress every 10 s to stderr and a summary line to stdout; exits 1 if a call failed
 # outright (the node did not answer).
+#
+# A connection that roscpp closes before the request reaches the node is tried again, up to
+# ATTEMPTS times, and counted as "dropped". Debian's roscpp (ros_comm 1.15) polls for POLLRDHUP
+# (ros_comm#1704) but its guard against events of a socket just closed covers only
+# ERR|HUP|NVAL: when a connection closes and the next one accepted takes its file descriptor in
+# the same poll round, the old one's half-close closes the new one (seen in the node's roscpp
+# debug log: "Socket 13 closed with (ERR|HUP|NVAL) events 8196" 70 us after set_state's
+# connection on socket 13 was accepted; ros_comm#1976 reports calls lost to the same POLLRDHUP
+# handling). About 1 call in 1500 under this storm; a call dropped ATTEMPTS times in a row is a
+# failure.
 import math
 import random
 import sys
@@ -25,6 +35,8 @@ from cue_sim.srv import (CallShot, PlaceBall, PlaceCueBall, Predict, PredictBatc
                          StartGame, Step, Strike, StrikeCue)
 
 NAN = float("nan")
+ATTEMPTS = 3
+DROPPED = "unable to receive data from sender"
 
 
 def shot(rng, bad=False):
@@ -57,7 +69,7 @@ class Storm:
         self.until = time.time() + seconds
         self.max_batch = max_batch
         self.lock = threading.Lock()
-        self.calls = self.refused = self.failed = 0
+        self.calls = self.refused = self.failed = self.dropped = 0
         ns = "/table/"
         self.services = {
             "strike": rospy.ServiceProxy(ns + "strike", Strike),
@@ -143,16 +155,25 @@ class Storm:
         rng = random.Random(seed)
         while time.time() < self.until and not rospy.is_shutdown():
             kind = rng.choice(self.KINDS)
-            try:
-                ok = self.request(rng, kind)
-                with self.lock:
-                    self.calls += 1
-                    self.refused += not ok
-            except (rospy.ServiceException, rospy.ROSException) as e:
-                with self.lock:
-                    self.calls += 1
-                    self.failed += 1
-                print("storm: a %s request failed: %s" % (kind, e), file=sys.stderr)
+            state = rng.getstate()
+            for attempt in range(1, ATTEMPTS + 1):
+                rng.setstate(state)  # the same request again
+                try:
+                    ok = self.request(rng, kind)
+                    with self.lock:
+                        self.calls += 1
+                        self.refused += not ok
+                    break
+                except (rospy.ServiceException, rospy.ROSException) as e:
+                    dropped = DROPPED in str(e) and attempt < ATTEMPTS
+                    with self.lock:
+                        self.dropped += dropped
+                        self.calls += not dropped
+                        self.failed += not dropped
+                    print("storm: a %s request %s: %s" % (kind, "dropped, sent again" if dropped else "failed", e),
+                          file=sys.stderr)
+                    if not dropped:
+                        break
 
 
 def vars_of(s):
@@ -176,9 +197,10 @@ def main():
         if time.time() - last >= 10.0:  # progress every 10 s, also while the last calls finish
             last = time.time()
             with storm.lock:
-                print("storm: %4.0f s of %.0f, %d calls, %d refused, %d failed" %
-                      (last - start, seconds, storm.calls, storm.refused, storm.failed), file=sys.stderr)
-    print("%d calls, %d refused, %d failed" % (storm.calls, storm.refused, storm.failed))
+                print("storm: %4.0f s of %.0f, %d calls, %d refused, %d failed, %d dropped by roscpp and sent again" %
+                      (last - start, seconds, storm.calls, storm.refused, storm.failed, storm.dropped), file=sys.stderr)
+    print("%d calls, %d refused, %d failed, %d dropped by roscpp and sent again" %
+          (storm.calls, storm.refused, storm.failed, storm.dropped))
     sys.exit(1 if storm.failed else 0)
 
 
