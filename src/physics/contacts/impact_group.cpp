@@ -10,6 +10,63 @@ namespace cue_sim
 {
 namespace physics
 {
+namespace
+{
+/// A cushion or jaw that a member of an impact group touches.
+template <typename S>
+struct GroupWall
+{
+  int member;
+  Vec3<S> normal;  // into play
+};
+
+/// Takes out what is left of two balls' closing along their line of centres, as a perfectly
+/// inelastic, frictionless impulse would (equal masses: each loses half); spins are untouched.
+template <typename S>
+bool stopClosing(Ball<S>& a, Ball<S>& b)
+{
+  const Vec2<S> n = (b.r - a.r).template head<2>().normalized();
+  const S closing = (a.v - b.v).template head<2>().dot(n);
+  if (!(closing > zeroSpeed<S>()))
+    return false;
+  a.v.template head<2>() -= S(0.5) * closing * n;
+  b.v.template head<2>() += S(0.5) * closing * n;
+  return true;
+}
+
+/// Takes out a ball's motion into a wall, as a perfectly inelastic, frictionless wall would.
+template <typename S>
+bool stopClosing(Ball<S>& ball, const Vec3<S>& normal)
+{
+  const S into = ball.v.dot(normal);
+  if (!(into < -zeroSpeed<S>()))
+    return false;
+  ball.v -= into * normal;
+  return true;
+}
+
+/// What the models' sweeps leave closing in a group, taken out by perfectly inelastic,
+/// frictionless impulses swept until nothing closes (or kInelasticSweeps). Each is the
+/// projection of the velocities, in the kinetic-energy metric, onto those that do not close
+/// that contact, a half-space holding rest: it cannot add energy, and the sweeps converge
+/// (alternating projections onto convex sets that meet). A ball-ball step keeps momentum.
+template <typename S>
+void stopGroupClosing(std::vector<Ball<S>>& balls, const std::vector<std::pair<int, int>>& contacts,
+                      const std::vector<GroupWall<S>>& walls)
+{
+  for (int sweep = 0; sweep < kInelasticSweeps; ++sweep)
+  {
+    bool any = false;
+    for (const std::pair<int, int>& c : contacts)
+      any = stopClosing(balls[c.first], balls[c.second]) || any;
+    for (const GroupWall<S>& wall : walls)
+      any = stopClosing(balls[wall.member], wall.normal) || any;
+    if (!any)
+      return;
+  }
+}
+}  // namespace
+
 template <typename S>
 std::vector<int> EventResolver<S>::touchingGroup(S time, int first, int second)
 {
@@ -47,25 +104,15 @@ bool EventResolver<S>::resolveLonePair(int first, int second)
   Ball<S>& a = state_.balls[first];
   Ball<S>& b = state_.balls[second];
   const Vec3<S> a_before = a.v, b_before = b.v;
-  for (int sweep = 0; sweep < 100000 && closingSpeed(a, b) > zeroSpeed<S>(); ++sweep)
+  for (int sweep = 0; sweep < kImpactSweeps && closingSpeed(a, b) > zeroSpeed<S>(); ++sweep)
     engine_.ballBallModel().resolve(a, b, params_);
+  stopClosing(a, b);
   settleMotion(a, params_.ball_radius);
   settleMotion(b, params_.ball_radius);
   changed(first);
   changed(second);
   return a.v != a_before || b.v != b_before;
 }
-
-namespace
-{
-/// A cushion or jaw that a member of an impact group touches.
-template <typename S>
-struct GroupWall
-{
-  int member;
-  Vec3<S> normal;  // into play
-};
-}  // namespace
 
 template <typename S>
 bool EventResolver<S>::resolveImpactGroup(S time, int first, int second)
@@ -103,8 +150,13 @@ bool EventResolver<S>::resolveImpactGroup(S time, int first, int second)
   const auto sweepToRest = [&](std::vector<std::size_t> order) {
     order.insert(order.end(), resting.begin(), resting.end());
     std::vector<Ball<S>> balls = members;
-    for (int sweep = 0; sweep < 100000; ++sweep)
+    for (int sweep = 0; sweep <= kImpactSweeps; ++sweep)
     {
+      if (sweep == kImpactSweeps)
+      {
+        stopGroupClosing(balls, contacts, walls);
+        break;
+      }
       bool any = false;
       for (std::size_t c : order)
         if (closing(balls, contacts[c]) > zeroSpeed<S>())
