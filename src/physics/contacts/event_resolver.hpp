@@ -45,7 +45,7 @@ constexpr int kMaxWallImpulses = 64;
 /// circling in rounding. Soak seed 1 shot 305 has one: a ball driven into a corner by another
 /// (e_ball 0.04, Mathavan 2014 and Stronge's cushion), whose friction at ball and cushion turns
 /// spin into closing speeds of 4e-13 m/s that the next sweep turns back, in a cycle of 30 000
-/// sweeps; each of its events took 3 s at the former cap of 100 000 sweeps, 256 of them at one
+/// sweeps; each of its events took 3 s at the former cap of 100 000 sweeps, 257 of them at one
 /// instant until EngineLimits::collapse_events joined the pair.
 constexpr int kImpactSweeps = 2000;
 /// Sweeps of the frictionless, perfectly inelastic impulses that end such a group: a few
