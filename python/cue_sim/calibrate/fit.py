@@ -724,12 +724,11 @@ class _SparseDifferences:
         structure.sort_indices()
         self.shape, self._indptr = structure.shape, structure.indptr
         self._rows = structure.indices
-        entry_columns = np.repeat(np.arange(structure.shape[1]), np.diff(structure.indptr))
-        self._groups = group_columns(structure)
+        self._entry_columns = np.repeat(np.arange(structure.shape[1]), np.diff(structure.indptr))
+        groups = group_columns(structure)
         #: per group: its columns, and the pattern's entries in them (their places in the CSC data)
-        self._members = [(np.flatnonzero(self._groups == g), np.flatnonzero(self._groups[entry_columns] == g))
-                         for g in range(int(self._groups.max()) + 1 if len(self._groups) else 0)]
-        self._entry_columns = entry_columns
+        self._members = [(np.flatnonzero(groups == g), np.flatnonzero(groups[self._entry_columns] == g))
+                         for g in range(int(groups.max()) + 1 if len(groups) else 0)]
         self._last = None  # (x, residuals there): the solver asks for the Jacobian where it just evaluated
 
     def residuals(self, free):

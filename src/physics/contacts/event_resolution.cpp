@@ -113,8 +113,7 @@ void EventResolver<S>::wallImpact(Ball<S>& ball, const Vec3<S>& normal) const
   // few), and what a bounded number of them leaves, the wall stops.
   for (int impulse = 0; impulse == 0 || (impulse < kMaxWallImpulses && ball.v.dot(normal) < -zeroSpeed<S>()); ++impulse)
     engine_.cushionModel().resolve(ball, normal, params_);
-  if (ball.v.dot(normal) < -zeroSpeed<S>())
-    ball.v -= ball.v.dot(normal) * normal;
+  stopClosing(ball, normal);
 }
 
 template <typename S>

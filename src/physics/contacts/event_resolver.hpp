@@ -29,6 +29,31 @@ S closingSpeed(const Ball<S>& a, const Ball<S>& b)
   return (a.v - b.v).template head<2>().dot(n);
 }
 
+/// Takes out what is left of two balls' closing along their line of centres, as a perfectly
+/// inelastic, frictionless impulse would (equal masses: each loses half); spins are untouched.
+template <typename S>
+bool stopClosing(Ball<S>& a, Ball<S>& b)
+{
+  const Vec2<S> n = (b.r - a.r).template head<2>().normalized();
+  const S closing = (a.v - b.v).template head<2>().dot(n);
+  if (!(closing > zeroSpeed<S>()))
+    return false;
+  a.v.template head<2>() -= S(0.5) * closing * n;
+  b.v.template head<2>() += S(0.5) * closing * n;
+  return true;
+}
+
+/// Takes out a ball's motion into a wall, as a perfectly inelastic, frictionless wall would.
+template <typename S>
+bool stopClosing(Ball<S>& ball, const Vec3<S>& normal)
+{
+  const S into = ball.v.dot(normal);
+  if (!(into < -zeroSpeed<S>()))
+    return false;
+  ball.v -= into * normal;
+  return true;
+}
+
 /// Two balls (or a ball and a wall) whose centres are this much further apart than touching
 /// [m] still touch: a contact resolved at an event leaves them at the contact distance within
 /// rounding.

@@ -20,31 +20,6 @@ struct GroupWall
   Vec3<S> normal;  // into play
 };
 
-/// Takes out what is left of two balls' closing along their line of centres, as a perfectly
-/// inelastic, frictionless impulse would (equal masses: each loses half); spins are untouched.
-template <typename S>
-bool stopClosing(Ball<S>& a, Ball<S>& b)
-{
-  const Vec2<S> n = (b.r - a.r).template head<2>().normalized();
-  const S closing = (a.v - b.v).template head<2>().dot(n);
-  if (!(closing > zeroSpeed<S>()))
-    return false;
-  a.v.template head<2>() -= S(0.5) * closing * n;
-  b.v.template head<2>() += S(0.5) * closing * n;
-  return true;
-}
-
-/// Takes out a ball's motion into a wall, as a perfectly inelastic, frictionless wall would.
-template <typename S>
-bool stopClosing(Ball<S>& ball, const Vec3<S>& normal)
-{
-  const S into = ball.v.dot(normal);
-  if (!(into < -zeroSpeed<S>()))
-    return false;
-  ball.v -= into * normal;
-  return true;
-}
-
 /// What the models' sweeps leave closing in a group, taken out by perfectly inelastic,
 /// frictionless impulses swept until nothing closes (or kInelasticSweeps). Each is the
 /// projection of the velocities, in the kinetic-energy metric, onto those that do not close
@@ -150,13 +125,8 @@ bool EventResolver<S>::resolveImpactGroup(S time, int first, int second)
   const auto sweepToRest = [&](std::vector<std::size_t> order) {
     order.insert(order.end(), resting.begin(), resting.end());
     std::vector<Ball<S>> balls = members;
-    for (int sweep = 0; sweep <= kImpactSweeps; ++sweep)
+    for (int sweep = 0; sweep < kImpactSweeps; ++sweep)
     {
-      if (sweep == kImpactSweeps)
-      {
-        stopGroupClosing(balls, contacts, walls);
-        break;
-      }
       bool any = false;
       for (std::size_t c : order)
         if (closing(balls, contacts[c]) > zeroSpeed<S>())
@@ -171,8 +141,9 @@ bool EventResolver<S>::resolveImpactGroup(S time, int first, int second)
           any = true;
         }
       if (!any)
-        break;
+        return balls;
     }
+    stopGroupClosing(balls, contacts, walls);
     return balls;
   };
   // Contacts closing at the same instant have no first: every order is resolved and the
