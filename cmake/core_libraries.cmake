@@ -38,6 +38,7 @@ add_library(cue_sim_physics
   ${CUE_SIM_ROOT}/src/physics/contacts/sustained_contact.cpp
   # shots: aiming a cue, execution noise, batches on a thread pool
   ${CUE_SIM_ROOT}/src/physics/shots/cue_aim.cpp
+  ${CUE_SIM_ROOT}/src/physics/shots/cue_sweep.cpp
   ${CUE_SIM_ROOT}/src/physics/shots/execution_noise.cpp
   ${CUE_SIM_ROOT}/src/physics/shots/batch.cpp
   ${CUE_SIM_ROOT}/src/physics/shots/thread_pool.cpp
@@ -87,6 +88,7 @@ add_library(cue_sim_session
   ${CUE_SIM_ROOT}/src/session/ball_input.cpp
   ${CUE_SIM_ROOT}/src/session/shot_prediction.cpp
   ${CUE_SIM_ROOT}/src/session/shot_preview.cpp
+  ${CUE_SIM_ROOT}/src/session/cue_follower.cpp
 )
 target_link_libraries(cue_sim_session PUBLIC cue_sim_physics cue_sim_game)
 

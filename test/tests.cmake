@@ -17,6 +17,7 @@ catkin_add_gtest(physics_tests
   test/physics/test_batch.cpp
   test/physics/test_execution_noise.cpp
   test/physics/test_cue_aim.cpp
+  test/physics/test_cue_sweep.cpp
   test/physics/test_event_search.cpp
   test/physics/test_simulation.cpp
   test/physics/test_physics_params.cpp
@@ -54,7 +55,7 @@ target_compile_definitions(scene_tests PRIVATE
 add_dependencies(scene_tests simulate self_play)
 
 catkin_add_gtest(session_tests test/session/test_live_table.cpp test/session/test_live_game.cpp test/session/test_live_parts.cpp test/session/test_shot_preview.cpp
-  test/session/test_ball_orientations.cpp)
+  test/session/test_ball_orientations.cpp test/session/test_cue_follower.cpp)
 target_link_libraries(session_tests cue_sim_session cue_sim_table_description gtest_main)
 
 catkin_add_gtest(camera_tests test/camera/test_table_camera.cpp)

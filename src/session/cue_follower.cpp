@@ -1,0 +1,135 @@
+#include "cue_sim/session/cue_follower.hpp"
+
+#include <Eigen/QR>
+#include <cmath>
+#include <sstream>
+
+namespace cue_sim
+{
+namespace session
+{
+namespace
+{
+using physics::Vec3;
+
+/// [m] how far short of the ball the strike's cue is drawn back along its axis: at the touch of a
+/// stroke through the centre the tip's end lies on the ball to rounding, and aimCue refuses a tip
+/// inside a ball. A nanometre changes no strike's parameters (they depend on the axis's line).
+constexpr double kTouchBackoff = 1e-9;
+/// Samples kept at most, whatever their rate: the velocity's fit needs a window's worth.
+constexpr std::size_t kMaxSamples = 256;
+
+bool isPose(const physics::CuePose& pose)
+{
+  return std::isfinite(pose.stamp) && physics::isFinite(pose.cue.tip) && physics::isFinite(pose.cue.axis) &&
+         pose.cue.axis.norm() > 0;
+}
+}  // namespace
+
+CueFollower::CueFollower(const CueFollowerSettings& settings) : settings_(settings) {}
+
+void CueFollower::reset()
+{
+  samples_.clear();
+}
+
+void CueFollower::forgetBefore(double stamp)
+{
+  while (samples_.size() > kMaxSamples || (samples_.size() > 2 && samples_[1].stamp < stamp))
+    samples_.pop_front();
+}
+
+Vec3<double> CueFollower::tipVelocity(double stamp) const
+{
+  // The samples from the window before `stamp` on, their times from `stamp`: a line through two
+  // or three, a parabola (constant acceleration) through more.
+  std::vector<const physics::CuePose*> used;
+  for (const auto& s : samples_)
+    if (s.stamp >= stamp - settings_.velocity_window)
+      used.push_back(&s);
+  if (used.size() < 2)
+    used = {&samples_[samples_.size() - 2], &samples_.back()};
+  const int terms = used.size() >= 4 ? 3 : 2;
+  Eigen::MatrixXd design(used.size(), terms);
+  Eigen::MatrixXd tips(used.size(), 3);
+  for (std::size_t i = 0; i < used.size(); ++i)
+  {
+    const double tau = used[i]->stamp - stamp;
+    design(i, 0) = 1;
+    design(i, 1) = tau;
+    if (terms == 3)
+      design(i, 2) = 0.5 * tau * tau;
+    tips.row(i) = used[i]->cue.tip.transpose();
+  }
+  const Eigen::MatrixXd fit = design.colPivHouseholderQr().solve(tips);
+  return fit.row(1).transpose();
+}
+
+CueStep CueFollower::observe(const physics::CuePose& pose, const std::vector<physics::Ball<double>>& balls,
+                             const physics::PhysicsParams<double>& params)
+{
+  CueStep step;
+  std::ostringstream note;
+  if (!isPose(pose))
+  {
+    step.note = "a sample that is not a pose (a stamp, tip and axis finite, the axis not zero): dropped";
+    return step;
+  }
+  if (!samples_.empty() && !(pose.stamp > samples_.back().stamp))
+  {
+    note << "a sample at " << pose.stamp << " s, not after the last (" << samples_.back().stamp << " s): dropped";
+    step.note = note.str();
+    return step;
+  }
+  if (samples_.empty())
+  {
+    samples_.push_back(pose);
+    return step;
+  }
+  const physics::CuePose previous = samples_.back();
+  const double gap = pose.stamp - previous.stamp;
+  const double moved = (pose.cue.tip - previous.cue.tip).norm();
+  if (gap > settings_.max_gap || moved > settings_.max_tip_speed * gap)
+  {
+    if (gap > settings_.max_gap)
+      note << "no sample for " << gap << " s (more than " << settings_.max_gap << " s)";
+    else
+      note << "the tip jumped " << moved << " m in " << gap << " s (faster than " << settings_.max_tip_speed << " m/s)";
+    note << ": not swept, the cue followed afresh from " << pose.stamp << " s";
+    step.note = note.str();
+    samples_.clear();
+    samples_.push_back(pose);
+    return step;
+  }
+  samples_.push_back(pose);
+  const auto touch = physics::firstTouch(previous, pose, balls, params);
+  if (touch)
+  {
+    CueContact contact;
+    contact.ball_id = touch->ball_id;
+    contact.stamp = touch->stamp;
+    const Vec3<double> centre = physics::tipCentre(touch->cue, params);
+    for (const auto& b : balls)
+      if (b.id == touch->ball_id)
+        contact.point = b.r + (centre - b.r).normalized() * params.ball_radius;
+    contact.velocity = tipVelocity(touch->stamp);
+    const Vec3<double> axis = touch->cue.axis.normalized();
+    contact.speed = contact.velocity.dot(axis);
+    contact.cue = touch->cue;
+    contact.cue.tip -= axis * kTouchBackoff;
+    if (!(contact.speed >= settings_.min_speed))
+    {
+      std::ostringstream why;
+      why << "the tip touched ball " << contact.ball_id << " at " << contact.speed
+          << " m/s along the cue's axis, under the " << settings_.min_speed
+          << " m/s a strike needs (a push, or a tracker's jitter)";
+      contact.refusal = why.str();
+    }
+    step.contact = contact;
+  }
+  forgetBefore(pose.stamp - settings_.velocity_window);
+  return step;
+}
+
+}  // namespace session
+}  // namespace cue_sim
