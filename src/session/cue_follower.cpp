@@ -1,6 +1,7 @@
 #include "cue_sim/session/cue_follower.hpp"
 
-#include <Eigen/QR>
+#include <Eigen/Cholesky>
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -19,6 +20,14 @@ constexpr double kTouchBackoff = 1e-9;
 /// Samples kept at most, whatever their rate: the velocity's fit needs a window's worth.
 constexpr std::size_t kMaxSamples = 256;
 
+const physics::Ball<double>* findBall(const std::vector<physics::Ball<double>>& balls, int id)
+{
+  for (const auto& b : balls)
+    if (b.id == id)
+      return &b;
+  return nullptr;
+}
+
 bool isPose(const physics::CuePose& pose)
 {
   return std::isfinite(pose.stamp) && physics::isFinite(pose.cue.tip) && physics::isFinite(pose.cue.axis) &&
@@ -31,6 +40,7 @@ CueFollower::CueFollower(const CueFollowerSettings& settings) : settings_(settin
 void CueFollower::reset()
 {
   samples_.clear();
+  touched_.clear();
 }
 
 void CueFollower::forgetBefore(double stamp)
@@ -39,10 +49,26 @@ void CueFollower::forgetBefore(double stamp)
     samples_.pop_front();
 }
 
+void CueFollower::rearm(const physics::CuePose& pose, const std::vector<physics::Ball<double>>& balls,
+                        const physics::PhysicsParams<double>& params)
+{
+  const Vec3<double> centre = physics::tipCentre(pose.cue, params);
+  const double clear = params.ball_radius + params.cue_tip_radius + settings_.rearm_distance;
+  std::vector<int> still;
+  for (const int id : touched_)
+  {
+    const physics::Ball<double>* ball = findBall(balls, id);
+    if (ball && (ball->r - centre).norm() <= clear)
+      still.push_back(id);
+  }
+  touched_ = still;
+}
+
 Vec3<double> CueFollower::tipVelocity(double stamp) const
 {
-  // The samples from the window before `stamp` on, their times from `stamp`: a line through two
-  // or three, a parabola (constant acceleration) through more.
+  // The samples from the window before `stamp` on, their times from `stamp` in units of the
+  // window (the normal equations' columns then of one size): a line through two or three, a
+  // parabola (constant acceleration) through more.
   std::vector<const physics::CuePose*> used;
   for (const auto& s : samples_)
     if (s.stamp >= stamp - settings_.velocity_window)
@@ -50,19 +76,53 @@ Vec3<double> CueFollower::tipVelocity(double stamp) const
   if (used.size() < 2)
     used = {&samples_[samples_.size() - 2], &samples_.back()};
   const int terms = used.size() >= 4 ? 3 : 2;
-  Eigen::MatrixXd design(used.size(), terms);
-  Eigen::MatrixXd tips(used.size(), 3);
-  for (std::size_t i = 0; i < used.size(); ++i)
+  const double unit = settings_.velocity_window;
+  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d moments = Eigen::Matrix3d::Zero();  // row: term, column: axis
+  for (const physics::CuePose* s : used)
   {
-    const double tau = used[i]->stamp - stamp;
-    design(i, 0) = 1;
-    design(i, 1) = tau;
-    if (terms == 3)
-      design(i, 2) = 0.5 * tau * tau;
-    tips.row(i) = used[i]->cue.tip.transpose();
+    const double tau = (s->stamp - stamp) / unit;
+    const Eigen::Vector3d basis(1, tau, terms == 3 ? 0.5 * tau * tau : 0.0);
+    normal += basis * basis.transpose();
+    moments += basis * s->cue.tip.transpose();
   }
-  const Eigen::MatrixXd fit = design.colPivHouseholderQr().solve(tips);
-  return fit.row(1).transpose();
+  if (terms == 2)
+    normal(2, 2) = 1;  // the parabola's term held at zero
+  const Eigen::Matrix3d fit = normal.ldlt().solve(moments);
+  return fit.row(1).transpose() / unit;
+}
+
+CueContact CueFollower::contactOf(const physics::CueTouch& touch, const std::vector<physics::Ball<double>>& balls,
+                                  const physics::PhysicsParams<double>& params) const
+{
+  CueContact contact;
+  contact.ball_id = touch.ball_id;
+  contact.stamp = touch.stamp;
+  const Vec3<double> centre = physics::tipCentre(touch.cue, params);
+  const physics::Ball<double>& ball = *findBall(balls, touch.ball_id);
+  contact.point = ball.r + (centre - ball.r).normalized() * params.ball_radius;
+  contact.velocity = tipVelocity(touch.stamp);
+  const Vec3<double> axis = touch.cue.axis.normalized();
+  contact.speed = contact.velocity.dot(axis);
+  contact.cue = touch.cue;
+  contact.cue.tip -= axis * kTouchBackoff;
+  const double followed = touch.stamp - samples_.front().stamp;
+  if (followed < settings_.velocity_window)
+  {
+    std::ostringstream why;
+    why << "the cue was followed for " << followed << " s before it touched ball " << contact.ball_id
+        << ": its velocity there needs " << settings_.velocity_window << " s of its motion";
+    contact.refusal = why.str();
+  }
+  else if (!(contact.speed >= settings_.min_speed))
+  {
+    std::ostringstream why;
+    why << "the tip touched ball " << contact.ball_id << " at " << contact.speed
+        << " m/s along the cue's axis, under the " << settings_.min_speed
+        << " m/s a strike needs (a push, or a tracker's jitter)";
+    contact.refusal = why.str();
+  }
+  return contact;
 }
 
 CueStep CueFollower::observe(const physics::CuePose& pose, const std::vector<physics::Ball<double>>& balls,
@@ -99,34 +159,21 @@ CueStep CueFollower::observe(const physics::CuePose& pose, const std::vector<phy
     step.note = note.str();
     samples_.clear();
     samples_.push_back(pose);
+    rearm(pose, balls, params);
     return step;
   }
   samples_.push_back(pose);
-  const auto touch = physics::firstTouch(previous, pose, balls, params);
+  std::vector<physics::Ball<double>> untouched;
+  for (const auto& b : balls)
+    if (std::find(touched_.begin(), touched_.end(), b.id) == touched_.end())
+      untouched.push_back(b);  // a ball touched and not drawn clear of is not touched again
+  const auto touch = physics::firstTouch(previous, pose, untouched, params);
   if (touch)
   {
-    CueContact contact;
-    contact.ball_id = touch->ball_id;
-    contact.stamp = touch->stamp;
-    const Vec3<double> centre = physics::tipCentre(touch->cue, params);
-    for (const auto& b : balls)
-      if (b.id == touch->ball_id)
-        contact.point = b.r + (centre - b.r).normalized() * params.ball_radius;
-    contact.velocity = tipVelocity(touch->stamp);
-    const Vec3<double> axis = touch->cue.axis.normalized();
-    contact.speed = contact.velocity.dot(axis);
-    contact.cue = touch->cue;
-    contact.cue.tip -= axis * kTouchBackoff;
-    if (!(contact.speed >= settings_.min_speed))
-    {
-      std::ostringstream why;
-      why << "the tip touched ball " << contact.ball_id << " at " << contact.speed
-          << " m/s along the cue's axis, under the " << settings_.min_speed
-          << " m/s a strike needs (a push, or a tracker's jitter)";
-      contact.refusal = why.str();
-    }
-    step.contact = contact;
+    step.contact = contactOf(*touch, balls, params);
+    touched_.push_back(touch->ball_id);
   }
+  rearm(pose, balls, params);
   forgetBefore(pose.stamp - settings_.velocity_window);
   return step;
 }

@@ -19,11 +19,19 @@ namespace session
 struct CueFollowerSettings
 {
   /// [m/s] along the cue's axis at the touch: slower is a push or a tracker's jitter, not a strike
-  /// (0.05 m/s sends a ball about 2 cm; a cue resting against a ball with 0.1 mm of jitter at
-  /// 1 kHz reads about 0.01 m/s over the velocity's fit).
+  /// (0.05 m/s sends a ball about 2 cm; with 0.1 mm of a tracker's jitter the velocity's fit has a
+  /// standard deviation of 0.007 m/s at 1 kHz and 0.009 m/s at 100 Hz, so a cue resting against a
+  /// ball reads seven of them short of it).
   double min_speed = 0.05;
+  /// [m] a ball touched is not touched again until the tip's sphere has drawn this far clear of it:
+  /// a cue resting against a ball with a tracker's jitter touches it once, not at every sample,
+  /// and a tip that stays on a ball it struck does not strike it twice. Beyond a tracker's jitter
+  /// (tenths of a millimetre), short of any draw back for another stroke (centimetres).
+  double rearm_distance = 0.002;
   /// [s] the tip's velocity at a touch is fitted over the samples this long before it, and the one
-  /// after it: a line through 2 or 3, a parabola through more (a stroke still accelerating).
+  /// after it: a line through 2 or 3, a parabola through more (a stroke still accelerating). A
+  /// cue followed for less than this before it touches a ball strikes nothing (its speed from two
+  /// samples a millisecond apart, with 0.1 mm of jitter, is 0.14 m/s either way).
   double velocity_window = 0.03;
   /// [s] two samples further apart are not swept: the cue's path between them is not known.
   double max_gap = 0.1;
@@ -61,7 +69,7 @@ public:
   CueStep observe(const physics::CuePose& pose, const std::vector<physics::Ball<double>>& balls,
                   const physics::PhysicsParams<double>& params);
 
-  /// Forgets the samples: the next is swept from nothing.
+  /// Forgets the samples and the balls touched: the next sample is swept from nothing.
   void reset();
 
   const CueFollowerSettings& settings() const { return settings_; }
@@ -69,12 +77,20 @@ public:
   const std::deque<physics::CuePose>& samples() const { return samples_; }
 
 private:
+  /// The touch made into a contact: where, how fast, the strike's cue, or why no strike.
+  CueContact contactOf(const physics::CueTouch& touch, const std::vector<physics::Ball<double>>& balls,
+                       const physics::PhysicsParams<double>& params) const;
   /// The tip's velocity at `stamp`, fitted over the samples kept.
   physics::Vec3<double> tipVelocity(double stamp) const;
   void forgetBefore(double stamp);
+  /// Forgets the balls touched that the tip at `pose` is clear of.
+  void rearm(const physics::CuePose& pose, const std::vector<physics::Ball<double>>& balls,
+             const physics::PhysicsParams<double>& params);
 
   CueFollowerSettings settings_;
   std::deque<physics::CuePose> samples_;
+  /// The balls touched that the tip has not drawn clear of since (rearm_distance).
+  std::vector<int> touched_;
 };
 
 }  // namespace session
