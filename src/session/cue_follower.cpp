@@ -17,8 +17,9 @@ using physics::Vec3;
 /// stroke through the centre the tip's end lies on the ball to rounding, and aimCue refuses a tip
 /// inside a ball. A nanometre changes no strike's parameters (they depend on the axis's line).
 constexpr double kTouchBackoff = 1e-9;
-/// Samples kept at most, whatever their rate: the velocity's fit needs a window's worth.
-constexpr std::size_t kMaxSamples = 256;
+/// Samples kept at most, whatever their rate: the velocity's fit needs a window's worth (300 at
+/// 10 kHz); beyond it the fit's cost is bounded and its window shorter.
+constexpr std::size_t kMaxSamples = 1024;
 
 const physics::Ball<double>* findBall(const std::vector<physics::Ball<double>>& balls, int id)
 {
@@ -41,6 +42,13 @@ void CueFollower::reset()
 {
   samples_.clear();
   touched_.clear();
+}
+
+void CueFollower::restart(const physics::CuePose& pose)
+{
+  samples_.clear();
+  samples_.push_back(pose);
+  following_since_ = pose.stamp;
 }
 
 void CueFollower::forgetBefore(double stamp)
@@ -106,7 +114,7 @@ CueContact CueFollower::contactOf(const physics::CueTouch& touch, const std::vec
   contact.speed = contact.velocity.dot(axis);
   contact.cue = touch.cue;
   contact.cue.tip -= axis * kTouchBackoff;
-  const double followed = touch.stamp - samples_.front().stamp;
+  const double followed = touch.stamp - following_since_;
   if (followed < settings_.velocity_window)
   {
     std::ostringstream why;
@@ -143,7 +151,7 @@ CueStep CueFollower::observe(const physics::CuePose& pose, const std::vector<phy
   }
   if (samples_.empty())
   {
-    samples_.push_back(pose);
+    restart(pose);
     return step;
   }
   const physics::CuePose previous = samples_.back();
@@ -157,8 +165,7 @@ CueStep CueFollower::observe(const physics::CuePose& pose, const std::vector<phy
       note << "the tip jumped " << moved << " m in " << gap << " s (faster than " << settings_.max_tip_speed << " m/s)";
     note << ": not swept, the cue followed afresh from " << pose.stamp << " s";
     step.note = note.str();
-    samples_.clear();
-    samples_.push_back(pose);
+    restart(pose);
     rearm(pose, balls, params);
     return step;
   }

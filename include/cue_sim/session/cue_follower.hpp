@@ -83,6 +83,8 @@ private:
   /// The tip's velocity at `stamp`, fitted over the samples kept.
   physics::Vec3<double> tipVelocity(double stamp) const;
   void forgetBefore(double stamp);
+  /// Follows the cue afresh from `pose`.
+  void restart(const physics::CuePose& pose);
   /// Forgets the balls touched that the tip at `pose` is clear of.
   void rearm(const physics::CuePose& pose, const std::vector<physics::Ball<double>>& balls,
              const physics::PhysicsParams<double>& params);
@@ -91,6 +93,8 @@ private:
   std::deque<physics::CuePose> samples_;
   /// The balls touched that the tip has not drawn clear of since (rearm_distance).
   std::vector<int> touched_;
+  /// [s] the stamp from which the cue has been followed without a gap or a jump.
+  double following_since_ = 0;
 };
 
 }  // namespace session
