@@ -20,8 +20,8 @@ struct CueFollowerSettings
 {
   /// [m/s] along the cue's axis at the touch: slower is a push or a tracker's jitter, not a strike
   /// (0.05 m/s sends a ball about 2 cm; with 0.1 mm of a tracker's jitter the velocity's fit has a
-  /// standard deviation of 0.007 m/s at 1 kHz and 0.009 m/s at 100 Hz, so a cue resting against a
-  /// ball reads seven of them short of it).
+  /// standard deviation of 0.007 m/s at 1 kHz and 0.009 m/s at 100 Hz, so that a cue resting
+  /// against a ball reads five to seven of them under this).
   double min_speed = 0.05;
   /// [m] a ball touched is not touched again until the tip's sphere has drawn this far clear of it:
   /// a cue resting against a ball with a tracker's jitter touches it once, not at every sample,
@@ -31,7 +31,7 @@ struct CueFollowerSettings
   /// [s] the tip's velocity at a touch is fitted over the samples this long before it, and the one
   /// after it: a line through 2 or 3, a parabola through more (a stroke still accelerating). A
   /// cue followed for less than this before it touches a ball strikes nothing (its speed from two
-  /// samples a millisecond apart, with 0.1 mm of jitter, is 0.14 m/s either way).
+  /// samples a millisecond apart, with 0.1 mm of jitter, has a standard deviation of 0.14 m/s).
   double velocity_window = 0.03;
   /// [s] two samples further apart are not swept: the cue's path between them is not known.
   double max_gap = 0.1;
