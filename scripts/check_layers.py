@@ -27,6 +27,7 @@ PHYSICS_PUBLIC = {
     "polynomial.hpp": "search",
     "batch.hpp": "shots",
     "cue_aim.hpp": "shots",
+    "cue_sweep.hpp": "shots",
     "execution_noise.hpp": "shots",
     "thread_pool.hpp": "shots",
 }
