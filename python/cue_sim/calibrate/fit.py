@@ -674,7 +674,7 @@ def _stages(problem: _Problem, x, stages, max_evaluations: int, progress):
             fitted = _refit_misfits(problem, other, max_evaluations, window, STAGE_MISFIT_SHARE, only=misfits)
             # The stage runs again with every shot in only if fitting alone put one of them back on
             # its data's contacts: in 8 20-shot draws every rescue that lowered the cost had such a
-            # shot and each that did not had none (seed 4's fourth: 22 s of its 98 on two of those).
+            # shot and each that did not had none (seed 4's fourth draw: 16 s of 106 in two such runs).
             trial = solve(other) if fitted else None
             if os.environ.get("CUE_SIM_CALIBRATE_DEBUG"):
                 print(f"stage {stage}: shots {sorted(misfits)} left out and fitted again ({sorted(fitted)} fit alone): "
