@@ -31,8 +31,7 @@ const physics::Ball<double>* findBall(const std::vector<physics::Ball<double>>& 
 
 bool isPose(const physics::CuePose& pose)
 {
-  return std::isfinite(pose.stamp) && physics::isFinite(pose.cue.tip) && physics::isFinite(pose.cue.axis) &&
-         pose.cue.axis.norm() > 0;
+  return std::isfinite(pose.stamp) && physics::isCue(pose.cue);
 }
 }  // namespace
 

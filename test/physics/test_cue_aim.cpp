@@ -6,6 +6,7 @@
 #include <random>
 
 #include "cue_sim/physics/cue_aim.hpp"
+#include "resting_ball.hpp"
 
 using namespace cue_sim::physics;
 
@@ -13,14 +14,6 @@ namespace
 {
 const PhysicsParams<double> kParams;
 const double R = kParams.ball_radius;
-
-Ball<double> ballAt(int id, double x, double y)
-{
-  Ball<double> b;
-  b.id = id;
-  b.r = Vec3<double>(x, y, R);
-  return b;
-}
 
 CueStrike<double> strikeOf(double phi, double theta, double a, double b)
 {
@@ -36,7 +29,7 @@ CueStrike<double> strikeOf(double phi, double theta, double a, double b)
 
 TEST(CueAim, ALevelCueThroughTheCentreIsACentreHitAlongItsAxis)
 {
-  const std::vector<Ball<double>> balls = {ballAt(0, 0.1, 0.2)};
+  const std::vector<Ball<double>> balls = {restingBall(0, 0.1, 0.2)};
   CueStick cue;
   cue.tip = Vec3<double>(0.1 - R - 0.05, 0.2, R);
   cue.axis = Vec3<double>(3, 0, 0);
@@ -54,7 +47,7 @@ TEST(CueAim, ALevelCueThroughTheCentreIsACentreHitAlongItsAxis)
 TEST(CueAim, AnAxisRightOfCentreIsRightEnglishAndAboveIsFollow)
 {
   // Shooting along +x, the shooter's right is -y.
-  const std::vector<Ball<double>> balls = {ballAt(0, 0, 0)};
+  const std::vector<Ball<double>> balls = {restingBall(0, 0, 0)};
   CueStick cue;
   cue.axis = Vec3<double>(1, 0, 0);
   cue.tip = Vec3<double>(-0.1, -0.01, R);
@@ -75,7 +68,7 @@ TEST(CueAim, RecoversEveryStrikeFromTheCueThatMakesIt)
 {
   std::mt19937 random(5);
   std::uniform_real_distribution<double> unit(0, 1);
-  const Ball<double> ball = ballAt(4, 0.3, -0.1);
+  const Ball<double> ball = restingBall(4, 0.3, -0.1);
   for (int i = 0; i < 500; ++i)
   {
     const double radius = 0.49 * std::sqrt(unit(random)), angle = 2 * M_PI * unit(random);
@@ -94,7 +87,7 @@ TEST(CueAim, RecoversEveryStrikeFromTheCueThatMakesIt)
 
 TEST(CueAim, TheFirstBallAlongTheStrokeIsTheOneStruck)
 {
-  const std::vector<Ball<double>> balls = {ballAt(0, 0.3, 0), ballAt(1, 0.0, 0)};
+  const std::vector<Ball<double>> balls = {restingBall(0, 0.3, 0), restingBall(1, 0.0, 0)};
   CueStick cue;
   cue.tip = Vec3<double>(-0.2, 0, R);
   cue.axis = Vec3<double>(1, 0, 0);
@@ -106,9 +99,9 @@ TEST(CueAim, TheFirstBallAlongTheStrokeIsTheOneStruck)
 
 TEST(CueAim, RefusalsSayWhatIsWrong)
 {
-  Ball<double> pocketed = ballAt(9, 0, 0);
+  Ball<double> pocketed = restingBall(9, 0, 0);
   pocketed.motion = Motion::Pocketed;
-  const std::vector<Ball<double>> balls = {ballAt(0, 0, 0), ballAt(2, -0.3, 0.0), pocketed};
+  const std::vector<Ball<double>> balls = {restingBall(0, 0, 0), restingBall(2, -0.3, 0.0), pocketed};
   CueAim aim;
   const auto refusal = [&](Vec3<double> tip, Vec3<double> axis) {
     CueStick cue;
@@ -154,7 +147,7 @@ TEST(CueAim, AnElevatedCueSpinsTheBallAboutThePointItMeets)
     o -= o.dot(u) * u;  // perpendicular to the axis
     if (k % 10 == 0)
       o.setZero();
-    const Ball<double> ball = ballAt(0, 0, 0);
+    const Ball<double> ball = restingBall(0, 0, 0);
     CueStick cue;
     cue.axis = u;
     cue.tip = ball.r + o - u * (2 * R);

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "cue_sim/physics/cue_sweep.hpp"
+#include "resting_ball.hpp"
 
 using namespace cue_sim::physics;
 
@@ -16,14 +17,6 @@ namespace
 const PhysicsParams<double> kParams;
 const double R = kParams.ball_radius;
 const double r_tip = kParams.cue_tip_radius;
-
-Ball<double> ballAt(int id, double x, double y)
-{
-  Ball<double> b;
-  b.id = id;
-  b.r = Vec3<double>(x, y, R);
-  return b;
-}
 
 /// A level cue along +x whose tip's end is at (x, y, R) at `stamp`.
 CuePose levelCue(double stamp, double x, double y)
@@ -46,7 +39,7 @@ CueStick backedOff(CueStick cue, double distance)
 TEST(CueSweep, AHeadOnStrokeTouchesWhenTheTipsEndReachesTheBall)
 {
   // 5 m/s over 10 ms, the tip's end 20 mm short of the ball at the first sample.
-  const std::vector<Ball<double>> balls = {ballAt(3, 0, 0)};
+  const std::vector<Ball<double>> balls = {restingBall(3, 0, 0)};
   const auto touch = firstTouch(levelCue(1.0, -R - 0.02, 0), levelCue(1.01, -R + 0.03, 0), balls, kParams);
   ASSERT_TRUE(touch);
   EXPECT_EQ(touch->ball_id, 3);
@@ -61,7 +54,7 @@ TEST(CueSweep, AnOffCentreStrokeTouchesWhereTheTipsSphereMeetsTheBall)
   // The axis passes d to the shooter's right (-y for a stroke along +x): the spheres touch when
   // their centres are R + r_tip apart, sqrt((R + r_tip)^2 - d^2) back along the axis.
   const double d = 0.3 * (R + r_tip);
-  const std::vector<Ball<double>> balls = {ballAt(0, 0, 0)};
+  const std::vector<Ball<double>> balls = {restingBall(0, 0, 0)};
   const auto touch = firstTouch(levelCue(0, -0.1, -d), levelCue(0.05, 0.0, -d), balls, kParams);
   ASSERT_TRUE(touch);
   const double centre_x = -std::sqrt((R + r_tip) * (R + r_tip) - d * d);
@@ -77,7 +70,7 @@ TEST(CueSweep, AnOffCentreStrokeTouchesWhereTheTipsSphereMeetsTheBall)
 
 TEST(CueSweep, NoTouchShortOfTheBallBesideItBehindItOrMovingAway)
 {
-  const std::vector<Ball<double>> balls = {ballAt(0, 0, 0)};
+  const std::vector<Ball<double>> balls = {restingBall(0, 0, 0)};
   // Short: the tip's end stops 1 um before the ball.
   EXPECT_FALSE(firstTouch(levelCue(0, -0.1, 0), levelCue(0.01, -R - 1e-6, 0), balls, kParams));
   // Beside: the sphere passes a nanometre clear.
@@ -96,7 +89,7 @@ TEST(CueSweep, NoTouchShortOfTheBallBesideItBehindItOrMovingAway)
 
 TEST(CueSweep, ATipAlreadyAgainstOrInABallDoesNotTouchItAgain)
 {
-  const std::vector<Ball<double>> balls = {ballAt(0, 0, 0), ballAt(1, 0.2, 0)};
+  const std::vector<Ball<double>> balls = {restingBall(0, 0, 0), restingBall(1, 0.2, 0)};
   // Resting against ball 0 and pushed on: no touch of ball 0 (the follower reports the push).
   EXPECT_FALSE(firstTouch(levelCue(0, -R, 0), levelCue(0.01, -R + 0.001, 0), balls, kParams));
   // In ball 0 and stroked on to ball 1: ball 1 is touched.
@@ -107,7 +100,7 @@ TEST(CueSweep, ATipAlreadyAgainstOrInABallDoesNotTouchItAgain)
 
 TEST(CueSweep, TheNearerOfTwoBallsInLineIsTouchedFirstAndAPocketedOneNot)
 {
-  std::vector<Ball<double>> balls = {ballAt(0, 0.3, 0), ballAt(1, 0.1, 0)};
+  std::vector<Ball<double>> balls = {restingBall(0, 0.3, 0), restingBall(1, 0.1, 0)};
   auto touch = firstTouch(levelCue(0, -0.1, 0), levelCue(0.2, 0.5, 0), balls, kParams);
   ASSERT_TRUE(touch);
   EXPECT_EQ(touch->ball_id, 1);
@@ -120,7 +113,7 @@ TEST(CueSweep, TheNearerOfTwoBallsInLineIsTouchedFirstAndAPocketedOneNot)
 TEST(CueSweep, ACreepingTipIsFoundAsExactlyAsAFastOne)
 {
   // 1 mm/s sampled at 1 kHz: a micrometre a sample, the touch 0.4 of the way.
-  const std::vector<Ball<double>> balls = {ballAt(0, 0.7, 0.4)};
+  const std::vector<Ball<double>> balls = {restingBall(0, 0.7, 0.4)};
   const double start = 0.7 - R - 0.4e-6;
   const auto touch = firstTouch(levelCue(2.0, start, 0.4), levelCue(2.001, start + 1e-6, 0.4), balls, kParams);
   ASSERT_TRUE(touch);
@@ -142,7 +135,7 @@ TEST(CueSweep, TheCueBetweenTwoPosesIsEachPoseAtItsEnd)
 
 TEST(CueSweep, APoseThatIsNotOneTouchesNothing)
 {
-  const std::vector<Ball<double>> balls = {ballAt(0, 0, 0)};
+  const std::vector<Ball<double>> balls = {restingBall(0, 0, 0)};
   CuePose bad = levelCue(0, -0.1, 0);
   bad.cue.axis = Vec3<double>::Zero();
   EXPECT_FALSE(firstTouch(bad, levelCue(0.01, 0.1, 0), balls, kParams));
@@ -157,7 +150,7 @@ TEST(CueSweep, TheStrikeAtTheTouchIsTheOneTheCuesLineMakes)
   // ball between two samples, touches it, and aimCue at the touch gives the strike back.
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> unit(0, 1);
-  const Ball<double> ball = ballAt(5, 0.3, -0.2);
+  const Ball<double> ball = restingBall(5, 0.3, -0.2);
   for (int i = 0; i < 500; ++i)
   {
     CueStrike<double> strike;

@@ -7,6 +7,7 @@
 #include "cue_sim/physics/engine.hpp"
 #include "cue_sim/physics/motion.hpp"
 #include "cue_sim/physics/scan.hpp"
+#include "resting_ball.hpp"
 
 using namespace cue_sim::physics;
 
@@ -20,14 +21,6 @@ std::shared_ptr<const TableModel> sevenFoot()
   return table;
 }
 
-Ball<double> ballAt(int id, double x, double y, const PhysicsParams<double>& p)
-{
-  Ball<double> b;
-  b.id = id;
-  b.r = Vec3<double>(x, y, p.ball_radius);
-  return b;
-}
-
 double headingOf(const Vec3<double>& v)
 {
   return std::atan2(v.y(), v.x());
@@ -39,8 +32,8 @@ TableState<double> afterCut(const Engine<double>& engine, double cut, double spe
 {
   const PhysicsParams<double>& p = engine.params();
   TableState<double> s;
-  s.balls.push_back(ballAt(0, -0.5, 0.0, p));
-  s.balls.push_back(ballAt(1, -0.2, 2 * p.ball_radius * std::sin(cut), p));
+  s.balls.push_back(restingBall(0, -0.5, 0.0, p));
+  s.balls.push_back(restingBall(1, -0.2, 2 * p.ball_radius * std::sin(cut), p));
   s.balls[0].v = Vec3<double>(speed, 0, 0);
   if (rolling)
     s.balls[0].w = Vec3<double>(0, speed / p.ball_radius, 0);
@@ -73,8 +66,8 @@ double headingWhenRollingAgain(const Engine<double>& engine, TableState<double>&
 /// line of centres), for a stun cue ball (no spin at contact).
 double throwAngle(const BallBallModel<double>& model, const PhysicsParams<double>& p, double cut, double speed)
 {
-  Ball<double> cue = ballAt(0, 0, 0, p),
-               object = ballAt(1, 2 * p.ball_radius * std::cos(cut), 2 * p.ball_radius * std::sin(cut), p);
+  Ball<double> cue = restingBall(0, 0, 0, p),
+               object = restingBall(1, 2 * p.ball_radius * std::cos(cut), 2 * p.ball_radius * std::sin(cut), p);
   cue.v = Vec3<double>(speed, 0, 0);
   model.resolve(cue, object, p);
   return cut - headingOf(object.v);
@@ -165,8 +158,8 @@ TEST(ShotPhysics, DrawComesBackAndFollowRollsOn)
   for (double b : {-0.4, 0.4})
   {
     TableState<double> s;
-    s.balls.push_back(ballAt(0, -0.5, 0.0, p));
-    s.balls.push_back(ballAt(1, 0.0, 0.0, p));
+    s.balls.push_back(restingBall(0, -0.5, 0.0, p));
+    s.balls.push_back(restingBall(1, 0.0, 0.0, p));
     CueStrike<double> cue;
     cue.speed = 2.0;
     cue.b = b;
@@ -210,7 +203,7 @@ TEST(ShotPhysics, SideSpinChangesTheRebound)
   };
   const auto rebound = [&](double heading, double a) {
     TableState<double> s;
-    s.balls.push_back(ballAt(0, -0.7, hy - 0.3, p));
+    s.balls.push_back(restingBall(0, -0.7, hy - 0.3, p));
     CueStrike<double> cue;
     cue.speed = 1.5;
     cue.phi = heading;
@@ -251,7 +244,7 @@ TEST(ShotPhysics, MasseCurvesWhileSliding)
   const Engine<double> engine(sevenFoot(), p);
   const auto turn = [&](double theta) {
     TableState<double> s;
-    s.balls.push_back(ballAt(0, -0.5, 0.0, p));
+    s.balls.push_back(restingBall(0, -0.5, 0.0, p));
     CueStrike<double> cue;
     cue.speed = 2.0;
     cue.theta = theta;
@@ -275,7 +268,7 @@ TEST(ShotPhysics, AMasseSlideFollowsTheClosedFormParabola)
   for (double theta : {0.6, 1.2})
   {
     TableState<double> s;
-    s.balls.push_back(ballAt(0, -0.5, 0.0, p));
+    s.balls.push_back(restingBall(0, -0.5, 0.0, p));
     CueStrike<double> cue;
     cue.speed = 1.5;
     cue.phi = 0.2;
@@ -320,7 +313,7 @@ TEST(ShotPhysics, AMasseEndsHeadingFromTheRestingPointToTheAimPoint)
                        Case{70, 2.0, 0.0, 0.5}, Case{45, 0.3, 0.4, -0.3}})
   {
     TableState<double> s;
-    s.balls.push_back(ballAt(0, -0.3, 0.1, p));
+    s.balls.push_back(restingBall(0, -0.3, 0.1, p));
     const Vec3<double> rest(-0.3, 0.1, 0), centre = rest + p.ball_radius * Vec3<double>::UnitZ();
     CueStrike<double> cue;
     cue.speed = 2.0;
@@ -370,7 +363,7 @@ TEST(ShotPhysics, SideSpinThrowsTheObjectBallAndGearsItsSpin)
   const BallBallModel<double>& model = *frictional;
   for (const double spin : {40.0, -40.0})
   {
-    Ball<double> cue = ballAt(0, 0, 0, p), object = ballAt(1, 2 * p.ball_radius, 0, p);
+    Ball<double> cue = restingBall(0, 0, 0, p), object = restingBall(1, 2 * p.ball_radius, 0, p);
     cue.v = Vec3<double>(1.0, 0, 0);
     cue.w = Vec3<double>(0, 1.0 / p.ball_radius, spin);  // rolling, with side spin
     model.resolve(cue, object, p);
@@ -399,7 +392,7 @@ TEST(ShotPhysics, BallsRattleInTheJawsOrDropCleanly)
     const Vec2<double> along(std::cos(30 * kDeg), std::sin(30 * kDeg)), across(-along.y(), along.x());
     const Vec2<double> start = mouth_middle - 0.6 * along + offset * across;
     TableState<double> s;
-    s.balls.push_back(ballAt(0, start.x(), start.y(), p));
+    s.balls.push_back(restingBall(0, start.x(), start.y(), p));
     s.balls[0].v = Vec3<double>(along.x(), along.y(), 0) * 1.2;
     s.balls[0].w = Vec3<double>(-s.balls[0].v.y(), s.balls[0].v.x(), 0) / p.ball_radius;
     settleMotion(s.balls[0], p.ball_radius);

@@ -20,6 +20,9 @@ struct CueStick
   double length = 1.47;          ///< [m] tip to butt (58 in)
 };
 
+/// Whether the cue is one: its tip and axis finite, the axis not zero.
+bool isCue(const CueStick& cue);
+
 struct CueAim
 {
   int ball_id = -1;

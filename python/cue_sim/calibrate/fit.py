@@ -274,7 +274,7 @@ class _Compared:
     prediction, flattened)."""
 
     def __init__(self, track: Track, layout: _ShotLayout, k: np.ndarray, j: np.ndarray):
-        self.k = k
+        self.k, self.j = k, j
         self.observed = track.positions[k, j]
         #: where each observation lies in the flattened (instants, balls) of a prediction made
         #: from the first instant on: `flat - first * balls`
@@ -306,7 +306,7 @@ class _Problem:
         self.given_up = set()
         self._engine_key, self._engine, self._base = None, None, None
         self.shot_names: List[List[str]] = []
-        self.rows: List[Tuple[np.ndarray, np.ndarray]] = []  # per shot: observed (k, j) pairs
+        self._compared: List[_Compared] = []  # per shot: its observations compared in the window
         x0, low, high = [], [], []
         for name in self.fit:
             bounds = _coefficient_bounds(name, self.params)
@@ -331,13 +331,17 @@ class _Problem:
         has it): a fit that starts from the first moments of each shot and takes in the rest as it
         goes does not lock onto a wrong sequence of contacts. The shots `left_out` (indices) are
         not compared at all."""
-        self.rows, self._compared = [], []
+        self._compared = []
         for i, (track, unknowns, layout) in enumerate(zip(self.tracks, self.shot_unknowns(x), self.layouts)):
             k, j = np.nonzero(track.seen())
             inside = (track.times[k] <= unknowns["t0"] + window) & (i not in left_out)
-            self.rows.append((k[inside], j[inside]))
-            self._compared.append(_Compared(track, layout, *self.rows[-1]))
-        self.size = sum(len(r[0]) for r in self.rows) * 2
+            self._compared.append(_Compared(track, layout, k[inside], j[inside]))
+        self.size = sum(len(c.k) for c in self._compared) * 2
+
+    @property
+    def rows(self) -> List[Tuple[np.ndarray, np.ndarray]]:
+        """Per shot: the (instant, ball) pairs compared in the window."""
+        return [(c.k, c.j) for c in self._compared]
 
     # -- a shot's unknowns and where it starts ------------------------------------------------
     def _first_motion(self, track: Track, j: int, rest: np.ndarray) -> Optional[int]:

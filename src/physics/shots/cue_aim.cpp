@@ -8,12 +8,17 @@ namespace cue_sim
 {
 namespace physics
 {
+bool isCue(const CueStick& cue)
+{
+  return isFinite(cue.tip) && isFinite(cue.axis) && cue.axis.norm() > 0;
+}
+
 std::string aimCue(const std::vector<Ball<double>>& balls, const PhysicsParams<double>& params, const CueStick& cue,
                    double speed, CueAim& out)
 {
   out = CueAim();
   std::ostringstream why;
-  if (!isFinite(cue.tip) || !isFinite(cue.axis) || !(cue.axis.norm() > 0))
+  if (!isCue(cue))
     return "the cue's tip and axis must be finite, with a non-zero axis";
   const Vec3<double> u = cue.axis.normalized();
   if (u.z() > 1e-12)

@@ -46,8 +46,7 @@ CueStick cueBetween(const CuePose& from, const CuePose& to, double fraction, con
 std::optional<CueTouch> firstTouch(const CuePose& from, const CuePose& to, const std::vector<Ball<double>>& balls,
                                    const PhysicsParams<double>& params)
 {
-  if (!isFinite(from.cue.tip) || !isFinite(to.cue.tip) || !isFinite(from.cue.axis) || !isFinite(to.cue.axis) ||
-      !(from.cue.axis.norm() > 0) || !(to.cue.axis.norm() > 0))
+  if (!isCue(from.cue) || !isCue(to.cue))
     return std::nullopt;  // no pose to sweep: the follower refuses such a sample before it gets here
   const Vec3<double> start = tipCentre(from.cue, params);
   const Vec3<double> way = tipCentre(to.cue, params) - start;
