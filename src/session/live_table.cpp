@@ -75,19 +75,25 @@ void LiveTable::advanceTo(Stamp now, std::vector<StampedEvent>* events)
   {
     std::vector<physics::Event<double>> happened;
     balls_.advance(time, &happened);
-    if (events)
-      for (const auto& e : happened)
-        events->push_back({e, clock_.stampOf(e.time, now)});
+    for (const auto& e : happened)
+    {
+      const Stamp stamp = clock_.stampOf(e.time, now);
+      changed(stamp);
+      if (events)
+        events->push_back({e, stamp});
+    }
     if (game_.shotPending() && balls_.atRest())
     {
       // The game shot's balls rest: the game takes its turn, and the table goes on from the game's.
       const physics::TableState<double> next = physics::atTimeZero(game_.finishShot(balls_.state()));
       clock_.restart(now);
       balls_.startFrom(next);
+      changed(now);
     }
   }
   if (balls_.applyPendingPhysics())
   {
+    changed(now);
     edits_.onCloth(engine().params().ball_radius);
     game_.setEngine(engine());
   }
@@ -98,6 +104,7 @@ void LiveTable::startFrom(physics::TableState<double> state, Stamp now)
 {
   clock_.restart(now);
   balls_.startFrom(std::move(state));
+  changed(now);
   advanceTo(now);
 }
 
@@ -105,6 +112,7 @@ void LiveTable::restartAtRest(Stamp now)
 {
   clock_.restart(now);
   balls_.restartAtRest();
+  changed(now);
 }
 
 Outcome LiveTable::pause(bool paused, Stamp now)
@@ -165,7 +173,9 @@ StrikeOutcome LiveTable::strike(const Shot& shot, Stamp now)
   StrikeOutcome outcome;
   outcome.executed = shot;
   advanceTo(now);
-  std::string why = game_.on() ? game_.whyNotShot(shot, balls_.atRest()) : "";
+  std::string why = whyNotStrikeAt(now);
+  if (why.empty() && game_.on())
+    why = game_.whyNotShot(shot, balls_.atRest());
   if (why.empty())
     why = engine().whyNotStrikable(balls_.state(), shot.ball_id, shot.strike);
   if (why.empty() && !balls_.atRest() && !options_.allow_strike_while_moving)
@@ -194,6 +204,7 @@ StrikeOutcome LiveTable::strike(const Shot& shot, Stamp now)
       engine().ballAt(balls_.state(), balls_.state().indexOf(shot.ball_id), balls_.time());
   outcome.cue = physics::cueStickFor(before, outcome.executed.strike, engine().params(), kCueDrawGap);
   balls_.strike(shot.ball_id, outcome.executed.strike);
+  changed(now);
   const physics::Ball<double>& ball = balls_.state().balls[balls_.state().indexOf(shot.ball_id)];
   outcome.ball_velocity = ball.v;
   outcome.ball_angular_velocity = ball.w;
@@ -212,11 +223,26 @@ StrikeOutcome LiveTable::strike(const Shot& shot, Stamp now)
   return outcome;
 }
 
+std::string LiveTable::whyNotStrikeAt(Stamp now) const
+{
+  if (now >= clock_.lastStamp())
+    return "";
+  if (now < last_change_)
+    return "the strike's stamp " + seconds(now) + " is before the table's last change at " + seconds(last_change_) +
+           " (a ball placed, struck or come to rest since): the balls were not where they are";
+  if (!balls_.atRest())
+    return "the strike's stamp " + seconds(now) + " is before the table's latest " + seconds(clock_.lastStamp()) +
+           " and balls are moving: it cannot be placed in their motion";
+  return "";
+}
+
 StrikeOutcome LiveTable::strikeWithCue(const physics::CueStick& cue, double speed, Stamp now, Shot& aimed)
 {
   advanceTo(now);
+  std::string why = whyNotStrikeAt(now);
   physics::CueAim aim;
-  const std::string why = physics::aimCue(balls_.balls(), engine().params(), cue, speed, aim);
+  if (why.empty())
+    why = physics::aimCue(balls_.balls(), engine().params(), cue, speed, aim);
   if (!why.empty())
   {
     StrikeOutcome outcome;

@@ -59,6 +59,7 @@ Outcome LiveTable::placeBall(const BallInput& input, Stamp now)
   if (balls_.atRest())
     restartAtRest(now);
   balls_.place(ball);
+  changed(now);
   advanceTo(now);
   return Outcome::done(std::string(moved ? "moved" : "placed") + " ball " + std::to_string(ball.id));
 }
@@ -71,6 +72,7 @@ Outcome LiveTable::removeBall(int id, Stamp now)
   if (const std::string why = TableEdits::whyNotRemovable(id, balls_.state()); !why.empty())
     return Outcome::refused(why);
   balls_.remove(id);
+  changed(now);
   advanceTo(now);
   return Outcome::done("removed ball " + std::to_string(id));
 }

@@ -72,6 +72,60 @@ TEST_F(LiveTableTest, AStrikeFromRestIsItsPredictionBitForBit)
   expectSameBalls(table_.motion().balls(), predicted.final_balls);
 }
 
+TEST_F(LiveTableTest, AStrikeStampedBeforeTheLatestStartsThenIfTheBallsRestedAndRefusedIfNot)
+{
+  // A robot's cue touched the ball 4 ms before the table heard of it: the shot starts at the
+  // touch, physics time 0 there, exactly as if it had come then.
+  const Stamp now = kStart + 3 * kSecond;
+  table_.advanceTo(now);
+  const Stamp touched = now - 4000000;
+  const Shot gentle = shot(0, 1.0, 0.3);
+  LiveTable told_at_once(engineOn("7ft"), LiveTableOptions(), "eight", kStart);
+  const StrikeOutcome at_once = told_at_once.strike(gentle, touched);
+  ASSERT_TRUE(at_once.success) << at_once.message;
+  const StrikeOutcome late = table_.strike(gentle, touched);
+  ASSERT_TRUE(late.success) << late.message;
+  EXPECT_EQ(late.stamp, touched);
+  EXPECT_EQ(table_.lastChange(), touched);
+  const Stamp later = now + kSecond / 10;
+  table_.advanceTo(later);
+  told_at_once.advanceTo(later);
+  expectSameBalls(table_.motion().balls(), told_at_once.motion().balls());
+
+  // While the balls move, a strike stamped before the table's latest cannot be placed in their
+  // motion; once they rest, one stamped before the last ball stopped is refused too, naming both
+  // stamps, and the table is unchanged.
+  LiveTableOptions moving_allowed;
+  moving_allowed.allow_strike_while_moving = true;
+  LiveTable moving(engineOn("7ft"), moving_allowed, "eight", kStart);
+  ASSERT_TRUE(moving.strike(shot(0, 2.0, 0.0), kStart + kSecond).success);
+  moving.advanceTo(kStart + 2 * kSecond);
+  ASSERT_FALSE(moving.motion().atRest());
+  const StrikeOutcome into_motion = moving.strike(shot(0, 1.0, 0.0), kStart + 2 * kSecond - 1000000);
+  EXPECT_FALSE(into_motion.success);
+  EXPECT_NE(into_motion.message.find("moving"), std::string::npos) << into_motion.message;
+
+  table_.advanceTo(now + 60 * kSecond);
+  ASSERT_TRUE(table_.motion().atRest());
+  const Stamp rested = table_.lastChange();
+  EXPECT_GT(rested, touched);
+  EXPECT_LT(rested, now + 60 * kSecond);
+  const std::vector<Ball<double>> before = table_.motion().balls();
+  int in_play = -1;
+  for (const auto& b : before)
+    if (b.inPlay() && in_play < 0)
+      in_play = b.id;
+  ASSERT_GE(in_play, 0);
+  const Shot nudge = shot(in_play, 0.2, 0.0);
+  const StrikeOutcome stale = table_.strike(nudge, rested - 1);
+  EXPECT_FALSE(stale.success);
+  EXPECT_NE(stale.message.find("last change"), std::string::npos) << stale.message;
+  table_.advanceTo(now + 61 * kSecond);
+  expectSameBalls(table_.motion().balls(), before);
+  const StrikeOutcome fresh = table_.strike(nudge, rested + 1);
+  EXPECT_TRUE(fresh.success) << fresh.message;
+}
+
 TEST_F(LiveTableTest, RefusedRequestsNameTheFieldAndChangeNothing)
 {
   const std::vector<Ball<double>> before = table_.motion().balls();

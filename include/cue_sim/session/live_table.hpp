@@ -8,6 +8,7 @@
 // predictShot).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -103,6 +104,10 @@ public:
   /// Brings the table up to `now`, appending what happened to `events`. A stamp before the last
   /// one changes nothing.
   void advanceTo(Stamp now, std::vector<StampedEvent>* events = nullptr);
+  /// The stamp of the table's last change, as of the last advanceTo: a ball placed, removed or
+  /// struck, a rack, a game's turn, new physics taking effect, or a ball's last event (the last
+  /// ball coming to rest). A strike stamped before it is refused: the balls were not as they are.
+  Stamp lastChange() const { return last_change_; }
   Outcome pause(bool paused, Stamp now);
   /// Moves a paused table's physics `duration` [s] on at `now`.
   Outcome step(double duration, Stamp now);
@@ -112,8 +117,12 @@ public:
   Outcome setPhysics(const physics::PhysicsParams<double>& params, const physics::ModelChoice& models, Stamp now);
 
   // Shots.
+  /// A strike at `now`. `now` may be before the table's latest stamp (a robot's cue touched the
+  /// ball a tf sample ago): if the balls rest and have not changed since `now` (lastChange()), the
+  /// shot starts at `now`, physics time 0 there, as it would have had it come then; else refused.
   StrikeOutcome strike(const Shot& shot, Stamp now);
-  /// Strikes the ball a cue in the table frame meets, as it meets it; `aimed` is the shot.
+  /// Strikes the ball a cue in the table frame meets, as it meets it; `aimed` is the shot. `now` as
+  /// for strike().
   StrikeOutcome strikeWithCue(const physics::CueStick& cue, double speed, Stamp now, Shot& aimed);
   /// The table a prediction starts from: `balls`, or if empty the live table, which must rest.
   /// Every ball is referred to time 0, as the live table is at a strike from rest.
@@ -146,6 +155,10 @@ private:
   void startFrom(physics::TableState<double> state, Stamp now);
   /// A table at rest restarts at physics time 0 at `now`.
   void restartAtRest(Stamp now);
+  /// Notes a change of the balls at `stamp` (lastChange()).
+  void changed(Stamp stamp) { last_change_ = std::max(last_change_, stamp); }
+  /// Empty if a strike may be stamped `now`, else why not (a stamp before the latest).
+  std::string whyNotStrikeAt(Stamp now) const;
 
   LiveTableOptions options_;
   TableClock clock_;
@@ -153,6 +166,7 @@ private:
   TableEdits edits_;
   LiveGame game_;
   physics::NoisyCue cue_;
+  Stamp last_change_ = 0;
 };
 
 }  // namespace session
