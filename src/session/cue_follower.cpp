@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 namespace cue_sim
 {
@@ -35,7 +36,47 @@ bool isPose(const physics::CuePose& pose)
 }
 }  // namespace
 
-CueFollower::CueFollower(const CueFollowerSettings& settings) : settings_(settings) {}
+const std::vector<CueFollowerField>& cueFollowerFields()
+{
+  // The ranges keep each setting to what it is for: a stroke is metres a second, a tracker's
+  // jitter tenths of a millimetre, a tf rate between 10 Hz and 10 kHz.
+  static const std::vector<CueFollowerField> fields{
+      {"min_speed", &CueFollowerSettings::min_speed, "m/s", 0.0, 1.0,
+       "slowest strike along the cue's axis; slower touches are reported, not struck"},
+      {"rearm_distance", &CueFollowerSettings::rearm_distance, "m", 0.0, 0.05,
+       "how far the tip must draw clear of a ball it touched before it may touch it again"},
+      {"velocity_window", &CueFollowerSettings::velocity_window, "s", 0.001, 0.2,
+       "the tip's velocity at a touch is fitted over this long before it; a cue followed for less "
+       "strikes nothing"},
+      {"max_gap", &CueFollowerSettings::max_gap, "s", 0.001, 1.0,
+       "samples further apart are not swept (the cue's path between them is unknown)"},
+      {"max_tip_speed", &CueFollowerSettings::max_tip_speed, "m/s", 1.0, 100.0,
+       "a tip moving faster between two samples jumped (a tracker's glitch): not swept"},
+  };
+  return fields;
+}
+
+std::string CueFollowerSettings::whyInvalid() const
+{
+  for (const CueFollowerField& field : cueFollowerFields())
+  {
+    const double value = this->*field.member;
+    if (!(value >= field.min && value <= field.max))
+    {
+      std::ostringstream why;
+      why << field.name << " must be in [" << field.min << ", " << field.max << "] " << field.unit << ", got " << value;
+      return why.str();
+    }
+  }
+  return "";
+}
+
+CueFollower::CueFollower(const CueFollowerSettings& settings) : settings_(settings)
+{
+  const std::string why = settings_.whyInvalid();
+  if (!why.empty())
+    throw std::invalid_argument("cue follower: " + why);
+}
 
 void CueFollower::reset()
 {
@@ -73,16 +114,22 @@ void CueFollower::rearm(const physics::CuePose& pose, const std::vector<physics:
 
 Vec3<double> CueFollower::tipVelocity(double stamp) const
 {
-  // The samples from the window before `stamp` on, their times from `stamp` in units of the
-  // window (the normal equations' columns then of one size): a line through two or three, a
-  // parabola (constant acceleration) through more.
-  std::vector<const physics::CuePose*> used;
+  // The samples up to `stamp` (the touch), from the window before it on, and at least three: what
+  // the tip did after the touch is not its stroke into the ball (a real cue is slowed by the
+  // ball; a robot's follow-through starts there). Their times from `stamp` in units of the window
+  // (the normal equations' columns then of one size): a parabola (constant acceleration) through
+  // three or more, extrapolated to the touch less than a sample on; a line through two.
+  std::vector<const physics::CuePose*> before;
   for (const auto& s : samples_)
-    if (s.stamp >= stamp - settings_.velocity_window)
-      used.push_back(&s);
-  if (used.size() < 2)
+    if (s.stamp <= stamp)
+      before.push_back(&s);
+  std::size_t first = before.size();
+  while (first > 0 && (before[first - 1]->stamp >= stamp - settings_.velocity_window || before.size() - first < 3))
+    --first;
+  std::vector<const physics::CuePose*> used(before.begin() + static_cast<std::ptrdiff_t>(first), before.end());
+  if (used.size() < 2)  // followed from the sample before the touch only (a refusal): the segment's
     used = {&samples_[samples_.size() - 2], &samples_.back()};
-  const int terms = used.size() >= 4 ? 3 : 2;
+  const int terms = used.size() >= 3 ? 3 : 2;
   const double unit = settings_.velocity_window;
   Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
   Eigen::Matrix3d moments = Eigen::Matrix3d::Zero();  // row: term, column: axis

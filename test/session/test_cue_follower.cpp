@@ -1,6 +1,7 @@
 // Following a cue through samples of its pose: the touch found between samples at 100 Hz and
 // 1 kHz, the speed there from the cue's motion (steady, accelerating, jittering), and what is not a
-// strike (a cue resting against a ball, creeping into it, a gap, a jump, a sample out of order).
+// strike (a cue resting against a ball, creeping into it, a gap, a jump, a sample out of order), and
+// settings out of their declared ranges.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -99,6 +100,31 @@ TEST(CueFollower, AnAcceleratingStrokesSpeedIsItsSpeedAtTheTouch)
   }
 }
 
+TEST(CueFollower, ACueThatSlowsAtTheTouchIsReadAtItsSpeedIntoTheBall)
+{
+  // Accelerating at 20 m/s^2 to 2 m/s at the touch, then slowing at 40 m/s^2 (a robot's
+  // follow-through, or a real cue slowed by the ball): the speed into the ball, from the samples
+  // before the touch only, at 100 Hz as at 1 kHz (the samples after it would pull it down). The
+  // touch itself is found on the straight segment between two samples, which the kink bends: its
+  // stamp is off by under 2 % of a sample period, and the speed read there by 20 m/s^2 times that.
+  for (const double period : {0.01, 0.001})
+  {
+    for (const double offset : {0.0, 0.3, 0.7})
+    {
+      CueFollower follower;
+      const double touch = 0.1 + offset * period;
+      const auto x = [&](double t) {
+        const double u = t - touch;
+        return u < 0 ? kTouchX + 2 * u + 10 * u * u : kTouchX + 2 * u - 20 * u * u;
+      };
+      const auto contacts = contactsOf(follow(follower, x, period, 0.15));
+      ASSERT_EQ(contacts.size(), 1u) << period;
+      EXPECT_NEAR(contacts[0].stamp, touch, 0.02 * period) << period;
+      EXPECT_NEAR(contacts[0].speed, 2.0, 20 * 0.02 * period + 1e-9) << period << " " << offset;
+    }
+  }
+}
+
 TEST(CueFollower, ATipJitteringByATenthOfAMillimetreStillReadsItsSpeed)
 {
   std::mt19937 rng(11);
@@ -115,8 +141,8 @@ TEST(CueFollower, ATipJitteringByATenthOfAMillimetreStillReadsItsSpeed)
   const auto contacts = contactsOf(steps);
   ASSERT_EQ(contacts.size(), 1u);
   EXPECT_EQ(contacts[0].refusal, "");
-  EXPECT_NEAR(contacts[0].stamp, 0.1, 2e-4);  // a tenth of a millimetre at 1.5 m/s
-  EXPECT_NEAR(contacts[0].speed, 1.5, 0.03);  // four of the fit's standard deviations
+  EXPECT_NEAR(contacts[0].stamp, 0.1, 2e-4);   // a tenth of a millimetre at 1.5 m/s
+  EXPECT_NEAR(contacts[0].speed, 1.5, 0.034);  // four of the fit's standard deviations (0.0085 m/s)
 }
 
 TEST(CueFollower, ACueRestingAgainstABallOrCreepingIntoItStrikesNothing)
@@ -225,4 +251,24 @@ TEST(CueFollower, ACueFollowedTooBrieflyBeforeItsTouchStrikesNothing)
       follower, [](double t) { return kTouchX - 0.01 + 2 * t; }, 0.001, 0.02));
   ASSERT_EQ(contacts.size(), 1u);
   EXPECT_NE(contacts[0].refusal.find("followed for 0.005"), std::string::npos) << contacts[0].refusal;
+}
+
+TEST(CueFollower, EverySettingOutOfItsDeclaredRangeIsRefusedByName)
+{
+  EXPECT_EQ(session::CueFollowerSettings().whyInvalid(), "");
+  ASSERT_EQ(session::cueFollowerFields().size(), 5u);
+  for (const auto& field : session::cueFollowerFields())
+  {
+    session::CueFollowerSettings defaults;
+    EXPECT_GE(defaults.*field.member, field.min) << field.name;
+    EXPECT_LE(defaults.*field.member, field.max) << field.name;
+    for (const double bad : {field.min - 1e-3, field.max * 2 + 1, std::numeric_limits<double>::quiet_NaN()})
+    {
+      session::CueFollowerSettings settings;
+      settings.*field.member = bad;
+      const std::string why = settings.whyInvalid();
+      EXPECT_NE(why.find(field.name), std::string::npos) << field.name << " = " << bad << ": " << why;
+      EXPECT_THROW(CueFollower{settings}, std::invalid_argument) << field.name;
+    }
+  }
 }

@@ -19,26 +19,46 @@ namespace session
 struct CueFollowerSettings
 {
   /// [m/s] along the cue's axis at the touch: slower is a push or a tracker's jitter, not a strike
-  /// (0.05 m/s sends a ball about 2 cm; with 0.1 mm of a tracker's jitter the velocity's fit has a
-  /// standard deviation of 0.007 m/s at 1 kHz and 0.009 m/s at 100 Hz, so that a cue resting
-  /// against a ball reads five to seven of them under this).
+  /// (0.05 m/s sends a ball about 2 cm). With 0.1 mm of a tracker's jitter the velocity's fit has
+  /// a standard deviation of 0.0085 m/s at 1 kHz (a cue resting against a ball reads six of them
+  /// under this) and 0.038 m/s at 100 Hz, where a noisy tracker wants a longer velocity_window
+  /// (0.05 s: 0.014 m/s) or a higher minimum. A robot's own tf (its joints' encoders) has
+  /// micrometres, not tenths of a millimetre.
   double min_speed = 0.05;
   /// [m] a ball touched is not touched again until the tip's sphere has drawn this far clear of it:
   /// a cue resting against a ball with a tracker's jitter touches it once, not at every sample,
   /// and a tip that stays on a ball it struck does not strike it twice. Beyond a tracker's jitter
   /// (tenths of a millimetre), short of any draw back for another stroke (centimetres).
   double rearm_distance = 0.002;
-  /// [s] the tip's velocity at a touch is fitted over the samples this long before it, and the one
-  /// after it: a line through 2 or 3, a parabola through more (a stroke still accelerating). A
-  /// cue followed for less than this before it touches a ball strikes nothing (its speed from two
-  /// samples a millisecond apart, with 0.1 mm of jitter, has a standard deviation of 0.14 m/s).
+  /// [s] the tip's velocity at a touch is fitted over the samples this long before it (at least
+  /// three), a parabola (a stroke still accelerating) extrapolated to the touch, less than a
+  /// sample on. Samples after the touch are not used: a real cue is slowed by the ball, and a
+  /// robot's follow-through starts there. A cue followed for less than this before it touches a
+  /// ball strikes nothing (its speed from two samples a millisecond apart, with 0.1 mm of jitter,
+  /// has a standard deviation of 0.14 m/s).
   double velocity_window = 0.03;
   /// [s] two samples further apart are not swept: the cue's path between them is not known.
   double max_gap = 0.1;
   /// [m/s] a tip that moved faster between two samples jumped (a tracker's glitch, a frame
   /// re-parented): not swept. Above the fastest break (12 m/s, CueLimits::max_speed).
   double max_tip_speed = 20.0;
+
+  /// Empty if every setting is within its range (cueFollowerFields), else which is not and why.
+  std::string whyInvalid() const;
 };
+
+/// One setting as the node's parameters (~cue/<name>) and the docs name it: its unit and range.
+struct CueFollowerField
+{
+  const char* name;
+  double CueFollowerSettings::*member;
+  const char* unit;
+  double min, max;  ///< accepted, bounds included
+  const char* description;
+};
+
+/// Every setting of CueFollowerSettings, declared once: the node reads and checks them from this.
+const std::vector<CueFollowerField>& cueFollowerFields();
 
 /// A touch of a ball by the cue's tip.
 struct CueContact
