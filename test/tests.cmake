@@ -72,6 +72,11 @@ target_include_directories(research_tests PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(research_tests cue_sim_physics ${catkin_LIBRARIES})
 add_dependencies(research_tests table_node ${PROJECT_NAME}_generate_messages_cpp)
 
+add_rostest_gtest(followed_cue_tests test/node/followed_cue.test test/node/test_followed_cue.cpp test/node/rostest_main.cpp)
+target_include_directories(followed_cue_tests PRIVATE ${catkin_INCLUDE_DIRS})
+target_link_libraries(followed_cue_tests cue_sim_physics ${catkin_LIBRARIES})
+add_dependencies(followed_cue_tests table_node ${PROJECT_NAME}_generate_messages_cpp)
+
 add_rostest_gtest(sim_control_tests test/node/sim_control.test test/node/test_sim_control.cpp test/node/rostest_main.cpp)
 target_include_directories(sim_control_tests PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(sim_control_tests cue_sim_table_description ${catkin_LIBRARIES})

@@ -164,6 +164,25 @@ void readCamera(ParameterReader& reader, CameraParameters& camera)
     throw std::runtime_error("~camera/frame must be non-empty and without a leading '/', got '" + camera.frame + "'");
 }
 
+void readCue(ParameterReader& reader, CueParameters& cue)
+{
+  reader.read("cue/frame", cue.frame);
+  if (!cue.frame.empty() && cue.frame.front() == '/')
+    throw std::runtime_error("~cue/frame must be without a leading '/', got '" + cue.frame + "'");
+  for (const session::CueFollowerField& field : session::cueFollowerFields())
+  {
+    const std::string name = std::string("cue/") + field.name;
+    double& value = cue.follower.*field.member;
+    reader.read(name, value);
+    if (!(value >= field.min && value <= field.max))
+    {
+      std::ostringstream range;
+      range << "[" << field.min << ", " << field.max << "] " << field.unit;
+      refuse(name, value, range.str());
+    }
+  }
+}
+
 void readNoise(ParameterReader& reader, session::LiveTableOptions& options)
 {
   // Off by default; the deviations default to those of the computational pool tournaments.
@@ -221,6 +240,7 @@ NodeParameters readNodeParameters(ros::NodeHandle& node, ros::NodeHandle& privat
   options.limits.max_reply_bytes = reader.count("max_reply_mb", options.limits.max_reply_bytes >> 20) << 20;
   readNoise(reader, options);
   readCamera(reader, p.camera);
+  readCue(reader, p.cue);
 
   if (!(p.publish_rate > 0 && p.publish_rate <= 10000))
     refuse("publish_rate", p.publish_rate, "(0, 10000] Hz");

@@ -13,6 +13,7 @@
 #include "cue_sim/physics/collision_models.hpp"
 #include "cue_sim/physics/physics_params.hpp"
 #include "cue_sim/physics/table_model.hpp"
+#include "cue_sim/session/cue_follower.hpp"
 #include "cue_sim/session/live_table.hpp"
 
 namespace cue_sim
@@ -37,6 +38,16 @@ struct CameraParameters
   std::array<double, 6> pose{0, 0, camera::kOverheadHeight, M_PI, 0, 0};
 };
 
+/// A robot's cue followed in tf (node/followed_cue.hpp), ~cue/...
+struct CueParameters
+{
+  /// The cue's frame: its origin the end of the tip on the cue's axis, x along the stroke (butt to
+  /// tip), as ~strike_cue takes a pose. Empty: no cue is followed.
+  std::string frame;
+  /// The rest, ~cue/<name> each, declared with their ranges in session::cueFollowerFields().
+  session::CueFollowerSettings follower;
+};
+
 struct NodeParameters
 {
   double publish_rate = 100.0;  ///< [Hz] tf, ~state, /clock
@@ -53,6 +64,7 @@ struct NodeParameters
   std::shared_ptr<const physics::TableModel> table_model;
   std::string urdf_xml;  ///< the table description, for its static frames
   CameraParameters camera;
+  CueParameters cue;
 };
 
 /// Longest accepted ~tf_timeout [s]: a lookup holds one service thread at most this long.

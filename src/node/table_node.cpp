@@ -84,6 +84,8 @@ TableNode::TableNode(const ros::NodeHandle& node, const ros::NodeHandle& private
   startAimMarker();
   if (p.camera.enabled)
     camera_ = std::make_unique<CameraPublisher>(private_node_, p.camera, p.table_frame);
+  if (!p.cue.frame.empty())
+    followed_cue_ = std::make_unique<FollowedCue>(private_node_, shared_, parameters_, *services_);
   ROS_INFO("cue_sim: table '%s' (%zu cushions, %zu pockets), rack '%s', models %s/%s, tf at %.0f Hz",
            p.table_model->name().c_str(), p.table_model->segments().size(), p.table_model->pockets().size(),
            p.rack.c_str(), p.models.ball_ball.c_str(), p.models.cushion.c_str(), p.publish_rate);
@@ -91,6 +93,7 @@ TableNode::TableNode(const ros::NodeHandle& node, const ros::NodeHandle& private
 
 TableNode::~TableNode()
 {
+  followed_cue_.reset();  // it strikes through services_: gone before them
   if (spinner_)
     spinner_->stop();
 }

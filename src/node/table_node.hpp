@@ -19,6 +19,7 @@
 
 #include "node/aim_marker.hpp"
 #include "node/camera_publisher.hpp"
+#include "node/followed_cue.hpp"
 #include "node/game_services.hpp"
 #include "node/node_parameters.hpp"
 #include "node/prediction_services.hpp"
@@ -81,6 +82,7 @@ private:
   std::unique_ptr<AimMarker> aim_marker_;
   std::unique_ptr<CameraPublisher> camera_;     ///< null with ~camera/enabled false
   std::unique_ptr<ros::AsyncSpinner> spinner_;  ///< the light services' threads
+  std::unique_ptr<FollowedCue> followed_cue_;   ///< null without ~cue/frame; strikes through services_
 };
 
 }  // namespace cue_sim

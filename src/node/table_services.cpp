@@ -86,18 +86,29 @@ bool TableServices::onStrike(Strike::Request& request, Strike::Response& respons
   return true;
 }
 
+session::StrikeOutcome TableServices::strikeWithCue(const physics::CueStick& cue, double speed,
+                                                    std::optional<ros::Time> stamp, const char* source,
+                                                    const geometry_msgs::PoseStamped& pose, session::Shot& aimed)
+{
+  session::StrikeOutcome outcome;
+  {
+    std::lock_guard<std::mutex> lock(shared_.mutex);
+    outcome = shared_.live->strikeWithCue(cue, speed, toStamp(stamp ? *stamp : shared_.now()), aimed);
+  }
+  if (outcome.success)
+    publishStrike(aimed, outcome, source, pose);
+  return outcome;
+}
+
 bool TableServices::onStrikeCue(StrikeCue::Request& request, StrikeCue::Response& response)
 {
   physics::CueStick cue;
   response.message = cue_frames_.toTableFrame(request.cue, cue);  // outside the lock: it may wait for tf
   if (!response.message.empty())
     return true;
-  session::StrikeOutcome outcome;
   session::Shot aimed;
-  {
-    std::lock_guard<std::mutex> lock(shared_.mutex);
-    outcome = shared_.live->strikeWithCue(cue, request.speed, toStamp(shared_.now()), aimed);
-  }
+  const session::StrikeOutcome outcome =
+      strikeWithCue(cue, request.speed, std::nullopt, "strike_cue", request.cue, aimed);
   answer(outcome, response);
   response.shot = toShotMsg(aimed);
   response.ruling = toRulingMsg(outcome.ruling, outcome.refereed);
@@ -107,7 +118,6 @@ bool TableServices::onStrikeCue(StrikeCue::Request& request, StrikeCue::Response
   response.stamp = toRosTime(outcome.stamp);
   response.time_to_rest = outcome.time_to_rest;
   response.num_events = static_cast<uint32_t>(outcome.num_events);
-  publishStrike(aimed, outcome, "strike_cue", request.cue);
   return true;
 }
 

@@ -14,7 +14,9 @@
 #include <ros/ros.h>
 #include <std_srvs/SetBool.h>
 #include <std_srvs/Trigger.h>
+#include <visualization_msgs/Marker.h>
 
+#include <optional>
 #include <vector>
 
 #include "node/cue_frames.hpp"
@@ -31,6 +33,14 @@ public:
   /// Strikes the live table, and shows the cue and the shot on ~cue and ~shots. `source` names
   /// who asked on ~shots.
   session::StrikeOutcome strike(const session::Shot& shot, const char* source);
+  /// Strikes the ball a cue in the table frame meets at `speed`, at `stamp` (none: now; a followed
+  /// cue's touch may be a tf sample ago: session::LiveTable::strike says when that is refused), and
+  /// shows it as strike() does with `pose` as given; `aimed` is the shot worked out from the cue.
+  session::StrikeOutcome strikeWithCue(const physics::CueStick& cue, double speed, std::optional<ros::Time> stamp,
+                                       const char* source, const geometry_msgs::PoseStamped& pose,
+                                       session::Shot& aimed);
+  /// Shows a marker on ~cue (a cue followed in tf).
+  void showCue(const visualization_msgs::Marker& marker) { cue_publisher_.publish(marker); }
 
 private:
   bool onStrike(Strike::Request& request, Strike::Response& response);

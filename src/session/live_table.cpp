@@ -100,6 +100,16 @@ void LiveTable::advanceTo(Stamp now, std::vector<StampedEvent>* events)
   balls_.look();
 }
 
+std::vector<physics::Ball<double>> LiveTable::ballsAt(Stamp stamp) const
+{
+  if (balls_.atRest())
+    return balls_.balls();
+  LiveBalls then = balls_;
+  then.advance(std::max(clock_.at(stamp), then.time()));
+  then.look();
+  return then.balls();
+}
+
 void LiveTable::startFrom(physics::TableState<double> state, Stamp now)
 {
   clock_.restart(now);

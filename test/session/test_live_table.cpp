@@ -88,7 +88,9 @@ TEST_F(LiveTableTest, AStrikeStampedBeforeTheLatestStartsThenIfTheBallsRestedAnd
   EXPECT_EQ(late.stamp, touched);
   EXPECT_EQ(table_.lastChange(), touched);
   const Stamp later = now + kSecond / 10;
+  const std::vector<Ball<double>> seen_ahead = table_.ballsAt(later);
   table_.advanceTo(later);
+  expectSameBalls(seen_ahead, table_.motion().balls());  // ballsAt looks ahead without moving the table
   told_at_once.advanceTo(later);
   expectSameBalls(table_.motion().balls(), told_at_once.motion().balls());
 

@@ -108,6 +108,9 @@ public:
   /// struck, a rack, a game's turn, new physics taking effect, or a ball's last event (the last
   /// ball coming to rest). A strike stamped before it is refused: the balls were not as they are.
   Stamp lastChange() const { return last_change_; }
+  /// The balls as they stand at `stamp` (at the last advance, if it is before), found on a copy:
+  /// the table is unchanged. A cue sampled between two advances meets the balls where they are then.
+  std::vector<physics::Ball<double>> ballsAt(Stamp stamp) const;
   Outcome pause(bool paused, Stamp now);
   /// Moves a paused table's physics `duration` [s] on at `now`.
   Outcome step(double duration, Stamp now);
