@@ -43,11 +43,13 @@ cue_sim_stop_all() {
 
 # A screenshot of rviz: the table launched with rviz under Xvfb (its master on port $1, more
 # launch arguments in $2), once its services and rviz are up the commands $3 run in that
-# display's shell, then the screen goes to $4.
+# display's shell, then the screen goes to $4. $CUE_SIM_SCREENSHOT_LAUNCH names another launch
+# file that starts the table with rviz (robot.launch).
 cue_sim_rviz_screenshot() {
   local port="$1" launch_args="$2" commands="$3" out="$4"
+  local launch_file="${CUE_SIM_SCREENSHOT_LAUNCH:-table.launch}"
   ROS_MASTER_URI="http://localhost:$port" xvfb-run -a -s "-screen 0 1280x900x24" bash -c "
-    roslaunch cue_sim table.launch rviz:=true $launch_args > '$CUE_SIM_BUILD/screenshot_$port.log' 2>&1 &
+    roslaunch cue_sim $launch_file rviz:=true $launch_args > '$CUE_SIM_BUILD/screenshot_$port.log' 2>&1 &
     launch=\$!
     trap 'kill \$launch 2>/dev/null; wait \$launch 2>/dev/null' EXIT
     for i in \$(seq 60); do rosservice list 2>/dev/null | grep -q /table/predict_batch && break; sleep 0.5; done

@@ -28,6 +28,8 @@ PACKAGES=(
   # without it pluginlib knows no image_proc/rectify)
   libnodelet-dev libnodeletlib-dev libnodeletlib-tools python3-nodelet pluginlib-dev ros-image-proc libimage-proc0d
   libimage-proc-dev
+  # the example cue robot (urdf/gantry_cue.urdf): its links in tf from its joint states
+  ros-robot-state-publisher
   # rviz, and rviz without a screen (screenshots)
   rviz xvfb xauth imagemagick
   # plots of the work-precision report

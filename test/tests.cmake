@@ -77,6 +77,13 @@ target_include_directories(followed_cue_tests PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(followed_cue_tests cue_sim_physics ${catkin_LIBRARIES})
 add_dependencies(followed_cue_tests table_node ${PROJECT_NAME}_generate_messages_cpp)
 
+# The example cue robot strikes through its tf as ~strike_cue would, at 100 Hz and 1 kHz of joint
+# states (a 1 kHz Python controller and robot_state_publisher: alone, so as not to load the rest).
+foreach(rate 100hz 1khz)
+  add_rostest(test/node/robot_agreement_${rate}.test DEPENDENCIES table_node ${PROJECT_NAME}_generate_messages_py)
+  set_tests_properties(_ctest_cue_sim_rostest_test_node_robot_agreement_${rate}.test PROPERTIES RUN_SERIAL TRUE)
+endforeach()
+
 add_rostest_gtest(sim_control_tests test/node/sim_control.test test/node/test_sim_control.cpp test/node/rostest_main.cpp)
 target_include_directories(sim_control_tests PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(sim_control_tests cue_sim_table_description ${catkin_LIBRARIES})

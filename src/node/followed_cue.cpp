@@ -163,6 +163,7 @@ void FollowedCue::drawCue(const physics::CueStick& cue, const ros::Time& stamp)
   drawn_ = now;
   visualization_msgs::Marker marker = cueStickMarker(cue, parameters_.table_frame, stamp, kDrawnLifetime);
   marker.ns = "cue_frame";
+  marker.color.a = 0.6f;  // see-through: a robot's own model of its cue shows through it
   services_.showCue(marker);
 }
 
