@@ -7,6 +7,7 @@
 #include <cue_sim/ExecutedShot.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
+#include <tf2_msgs/TFMessage.h>
 #include <tf2_ros/transform_broadcaster.h>
 
 #include <cmath>
@@ -31,6 +32,8 @@ const double R = kParams.ball_radius;
 /// Where the cue ball waits for each stroke, alone on the 7 ft table [m].
 constexpr double kBallX = 0.3, kBallY = 0.1;
 
+/// The node's tf rate (config/table_node.yaml).
+constexpr double kPublishRate = 100.0;
 /// The tolerances the issue sets for a strike from the followed cue against ~strike_cue's.
 constexpr double kSpeedShare = 0.01;
 constexpr double kAngle = 1e-3;   ///< [rad]
@@ -111,6 +114,14 @@ class FollowedCueTest : public ::testing::Test
 protected:
   FollowedCueTest()
   {
+    tf_sub_ = nh_.subscribe<tf2_msgs::TFMessage>("/tf", 10000, [this](const tf2_msgs::TFMessageConstPtr& m) {
+      for (const auto& t : m->transforms)
+        if (t.child_frame_id == "ball_0")
+        {
+          std::lock_guard<std::mutex> lock(mutex_);
+          ticks_.push_back(t.header.stamp);
+        }
+    });
     contacts_sub_ =
         nh_.subscribe<cue_sim::CueContact>("/table/cue_contacts", 100, [this](const cue_sim::CueContactConstPtr& m) {
           std::lock_guard<std::mutex> lock(mutex_);
@@ -255,7 +266,24 @@ protected:
   ros::NodeHandle nh_;
   TableClient table_;
   tf2_ros::TransformBroadcaster broadcaster_;
-  ros::Subscriber contacts_sub_, shots_sub_;
+  /// The node's tf ticks stamped in [from, to), and the longest time between two of them.
+  std::pair<std::size_t, double> ticksBetween(const ros::Time& from, const ros::Time& to)
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::size_t n = 0;
+    double gap = 0;
+    for (std::size_t i = 0; i < ticks_.size(); ++i)
+      if (ticks_[i] >= from && ticks_[i] < to)
+      {
+        ++n;
+        if (i > 0 && ticks_[i - 1] >= from)
+          gap = std::max(gap, (ticks_[i] - ticks_[i - 1]).toSec());
+      }
+    return {n, gap};
+  }
+
+  ros::Subscriber contacts_sub_, shots_sub_, tf_sub_;
+  std::vector<ros::Time> ticks_;
   std::mutex mutex_;
   std::vector<cue_sim::CueContact> contacts_;
   std::vector<cue_sim::ExecutedShot> shots_;
@@ -275,8 +303,17 @@ TEST_F(FollowedCueTest, StrokesAt100HzStrikeAsStrikeCueDoesForTheCueAtTheTouch)
 
 TEST_F(FollowedCueTest, StrokesAt1kHzStrikeAsStrikeCueDoesForTheCueAtTheTouch)
 {
+  const ros::Time from = ros::Time::now();
   for (const auto& s : kStrikes)
     expectStrike(strokeFor(s), s, 1000.0);
+  // Following 1 kHz of the cue's tf, the node's own tf keeps its rate (the node-load test's bounds).
+  const ros::Time to = ros::Time::now() - ros::Duration(0.1);
+  ASSERT_TRUE(waitFor([&] { return ticksBetween(to, to + ros::Duration(1)).first > 0; }));
+  const auto [ticks, gap] = ticksBetween(from, to);
+  const double rate = ticks / (to - from).toSec();
+  EXPECT_GT(rate, 0.9 * kPublishRate) << "tf ticks per second while following";
+  EXPECT_LT(rate, 1.1 * kPublishRate);
+  EXPECT_LT(gap, 5.0 / kPublishRate) << "the longest pause of tf while following [s]";
 }
 
 TEST_F(FollowedCueTest, HandMadePosesWithJitterAndGapsStillStrikeAsDesigned)
