@@ -44,7 +44,23 @@ def close_recording(bag):
     wait_for(lambda: os.path.exists(bag) and not os.path.exists(bag + ".active"), 60, f"{bag} closed")
 
 
+def keeping_the_bag_on_failure(test):
+    """The test, which keeps the session's bag (its path in the failure) if it fails: the bag is
+    the data the failure came from, which no rerun records again."""
+    def run(self):
+        try:
+            test(self)
+        except AssertionError as failure:
+            type(self).keep_bag = True
+            raise AssertionError(f"{failure}\n(the session's bag is kept: {self.bag})") from failure
+    run.__name__ = test.__name__
+    run.__doc__ = test.__doc__
+    return run
+
+
 class CalibrationSession(unittest.TestCase):
+    keep_bag = False
+
     @classmethod
     def setUpClass(cls):
         rospy.init_node("calibration_session_test")
@@ -87,9 +103,10 @@ class CalibrationSession(unittest.TestCase):
 
     @classmethod
     def tearDownClass(cls):
-        if os.path.exists(cls.bag) and not os.environ.get("CUE_SIM_KEEP_BAG"):
+        if os.path.exists(cls.bag) and not cls.keep_bag and not os.environ.get("CUE_SIM_KEEP_BAG"):
             os.remove(cls.bag)
 
+    @keeping_the_bag_on_failure
     def test_1_each_source_gives_each_shot(self):
         for tracks in (self.truth, self.detected, self.tf):
             self.assertEqual(len(tracks), SHOTS)
@@ -107,6 +124,7 @@ class CalibrationSession(unittest.TestCase):
         counts = [(len(d.times), len(t.times)) for d, t in zip(self.detected, self.truth)]
         self.assertTrue(all(d == t for d, t in counts[:-1]), counts)
 
+    @keeping_the_bag_on_failure
     def test_2_detections_follow_the_true_balls(self):
         errors = []
         for truth, detected in zip(self.truth, self.detected):
@@ -129,6 +147,7 @@ class CalibrationSession(unittest.TestCase):
         self.assertLess(np.mean(errors < 0.01), 1.0 + 1e-9)
         self.assertGreater(np.mean(errors < 0.01), 0.98)
 
+    @keeping_the_bag_on_failure
     def test_3_the_nodes_coefficients_come_back_and_load_into_it(self):
         from cue_sim.calibrate import calibrate
         table = {name: rospy.get_param("/table/" + name) for name in ("mu_slide", "mu_roll")}
