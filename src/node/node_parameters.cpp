@@ -170,17 +170,9 @@ void readCue(ParameterReader& reader, CueParameters& cue)
   if (!cue.frame.empty() && cue.frame.front() == '/')
     throw std::runtime_error("~cue/frame must be without a leading '/', got '" + cue.frame + "'");
   for (const session::CueFollowerField& field : session::cueFollowerFields())
-  {
-    const std::string name = std::string("cue/") + field.name;
-    double& value = cue.follower.*field.member;
-    reader.read(name, value);
-    if (!(value >= field.min && value <= field.max))
-    {
-      std::ostringstream range;
-      range << "[" << field.min << ", " << field.max << "] " << field.unit;
-      refuse(name, value, range.str());
-    }
-  }
+    reader.read(std::string("cue/") + field.name, cue.follower.*field.member);
+  if (const std::string why = cue.follower.whyInvalid(); !why.empty())
+    throw std::runtime_error("~cue/" + why);  // names the setting, its value and its range
 }
 
 void readNoise(ParameterReader& reader, session::LiveTableOptions& options)

@@ -75,13 +75,11 @@ void LiveTable::advanceTo(Stamp now, std::vector<StampedEvent>* events)
   {
     std::vector<physics::Event<double>> happened;
     balls_.advance(time, &happened);
-    for (const auto& e : happened)
-    {
-      const Stamp stamp = clock_.stampOf(e.time, now);
-      changed(stamp);
-      if (events)
-        events->push_back({e, stamp});
-    }
+    if (events)
+      for (const auto& e : happened)
+        events->push_back({e, clock_.stampOf(e.time, now)});
+    if (!happened.empty())
+      changed(clock_.stampOf(happened.back().time, now));  // events come in time order
     if (game_.shotPending() && balls_.atRest())
     {
       // The game shot's balls rest: the game takes its turn, and the table goes on from the game's.
