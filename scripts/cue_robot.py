@@ -39,6 +39,8 @@ LIFT, TRAVEL, LOWER, HOLD = 0.6, 1.2, 0.8, 0.4
 # The stroke: accelerating over at most ACCELERATE s, following through over at most FOLLOW s,
 # shorter for hard shots so that the stroke axis's travel holds them.
 ACCELERATE, FOLLOW = 0.15, 0.10
+# How long a shot waits for the table's ~state stamped after it was asked for [s].
+STATE_PATIENCE = 5.0
 
 
 def cue_line(ball, shot, R, r_tip):
@@ -194,9 +196,16 @@ class CueRobot:
         if not self.busy.acquire(blocking=False):
             return StrikeResponse(success=False, message="the robot is playing a shot")
         try:
+            # The balls as they are now, not as a ~state from before the request had them (a table
+            # racked or set just before the shot is asked for).
+            asked = rospy.Time.now()
+            deadline = rospy.get_time() + STATE_PATIENCE
+            while (self.state is None or self.state.header.stamp <= asked) and rospy.get_time() < deadline:
+                rospy.sleep(0.005)
             state = self.state
-            if state is None:
-                return StrikeResponse(success=False, message="no %s/state yet" % self.table)
+            if state is None or state.header.stamp <= asked:
+                return StrikeResponse(success=False, message="no %s/state after the request in %g s"
+                                      % (self.table, STATE_PATIENCE))
             if state.moving:
                 return StrikeResponse(success=False, message="balls are still moving")
             balls = {b.id: b for b in state.balls if b.motion != BallState.POCKETED}

@@ -36,10 +36,12 @@ class RobotAgreement(unittest.TestCase):
         self.rack = rospy.ServiceProxy("/table/rack", Rack)
         self.play = rospy.ServiceProxy("/cue_robot/play", Strike)
         self.contacts, self.shots = [], []
-        rospy.Subscriber("/table/cue_contacts", CueContact, self.contacts.append)
-        rospy.Subscriber("/table/shots", ExecutedShot, self.shots.append)
         self.state = None
-        rospy.Subscriber("/table/state", TableState, lambda m: setattr(self, "state", m))
+        subscribers = [rospy.Subscriber("/table/cue_contacts", CueContact, self.contacts.append),
+                       rospy.Subscriber("/table/shots", ExecutedShot, self.shots.append),
+                       rospy.Subscriber("/table/state", TableState, lambda m: setattr(self, "state", m))]
+        # Connected before the first shot: a touch published before then would be missed.
+        self.assertTrue(self.wait_for(lambda: all(s.get_num_connections() > 0 for s in subscribers)))
 
     def wait_for(self, condition, timeout=60.0):
         deadline = rospy.get_time() + timeout
@@ -52,32 +54,31 @@ class RobotAgreement(unittest.TestCase):
     def test_each_strike_is_the_shot_the_robot_aimed(self):
         rate = rospy.get_param("~rate")
         for speed, phi, theta, a, b in SHOTS:
-            with self.subTest(rate=rate, speed=speed, theta=theta, a=a, b=b):
-                racked = self.rack(layout="custom", ids=[0], positions=[Point(x=BALL[0], y=BALL[1], z=0.0)])
-                self.assertTrue(racked.success, racked.message)
-                self.assertTrue(self.wait_for(lambda: self.state is not None and self.state.header.stamp > racked.stamp
-                                              and not self.state.moving))
-                before = len(self.shots)
-                answer = self.play(ball_id=0, speed=speed, phi=phi, theta=theta, a=a, b=b)
-                self.assertTrue(answer.success, answer.message)
-                touches = [c for c in self.contacts if c.header.stamp > racked.stamp]
-                self.assertTrue(touches, "a touch reported")
-                contact = touches[0]
-                self.assertTrue(contact.struck, contact.message)
-                shot = contact.shot
-                self.assertEqual(shot.ball_id, 0)
-                self.assertLess(abs(shot.speed - speed), SPEED_SHARE * speed, "speed %g" % shot.speed)
-                self.assertLess(abs(math.remainder(shot.phi - phi, 2 * math.pi)), ANGLE, "phi %g" % shot.phi)
-                self.assertLess(abs(shot.theta - theta), ANGLE, "theta %g" % shot.theta)
-                self.assertLess(abs(shot.a - a), OFFSET, "a %g" % shot.a)
-                self.assertLess(abs(shot.b - b), OFFSET, "b %g" % shot.b)
-                self.assertTrue(self.wait_for(lambda: any(s.source == "cue_frame" for s in self.shots[before:])),
-                                "the strike on ~shots from cue_frame")
-                rospy.loginfo("robot at %g Hz: asked %.2f m/s theta %.3f a %.2f b %.2f; struck %.4f m/s phi %+.1e "
-                              "theta %+.1e a %+.1e b %+.1e off", rate, speed, theta, a, b, shot.speed,
-                              math.remainder(shot.phi - phi, 2 * math.pi), shot.theta - theta, shot.a - a,
-                              shot.b - b)
-
+            # Each message says which shot (rosunit's report drops a subTest's).
+            which = "at %g Hz, %g m/s, phi %g, theta %g, a %g, b %g: " % (rate, speed, phi, theta, a, b)
+            racked = self.rack(layout="custom", ids=[0], positions=[Point(x=BALL[0], y=BALL[1], z=0.0)])
+            self.assertTrue(racked.success, which + racked.message)
+            self.assertTrue(self.wait_for(lambda: self.state is not None and self.state.header.stamp > racked.stamp
+                                          and not self.state.moving), which + "the racked ball at rest")
+            before = len(self.shots)
+            answer = self.play(ball_id=0, speed=speed, phi=phi, theta=theta, a=a, b=b)
+            self.assertTrue(answer.success, which + answer.message)
+            touches = [c for c in self.contacts if c.header.stamp > racked.stamp]
+            self.assertTrue(touches, which + "a touch reported")
+            contact = touches[0]
+            self.assertTrue(contact.struck, which + contact.message)
+            shot = contact.shot
+            self.assertEqual(shot.ball_id, 0, which)
+            self.assertLess(abs(shot.speed - speed), SPEED_SHARE * speed, which + "speed %g" % shot.speed)
+            self.assertLess(abs(math.remainder(shot.phi - phi, 2 * math.pi)), ANGLE, which + "phi %g" % shot.phi)
+            self.assertLess(abs(shot.theta - theta), ANGLE, which + "theta %g" % shot.theta)
+            self.assertLess(abs(shot.a - a), OFFSET, which + "a %g" % shot.a)
+            self.assertLess(abs(shot.b - b), OFFSET, which + "b %g" % shot.b)
+            self.assertTrue(self.wait_for(lambda: any(s.source == "cue_frame" for s in self.shots[before:])),
+                            which + "the strike on ~shots from cue_frame")
+            rospy.loginfo("robot at %g Hz: asked %.2f m/s theta %.3f a %.2f b %.2f; struck %.4f m/s phi %+.1e "
+                          "theta %+.1e a %+.1e b %+.1e off", rate, speed, theta, a, b, shot.speed,
+                          math.remainder(shot.phi - phi, 2 * math.pi), shot.theta - theta, shot.a - a, shot.b - b)
 
 if __name__ == "__main__":
     rospy.init_node("robot_agreement")
