@@ -129,3 +129,10 @@ add_library(cue_sim_calibration ${CUE_SIM_ROOT}/src/calibration/track_prediction
   ${CUE_SIM_ROOT}/src/calibration/shot_film.cpp)
 target_include_directories(cue_sim_calibration PUBLIC ${CUE_SIM_ROOT}/include PRIVATE ${CUE_SIM_ROOT}/src)
 target_link_libraries(cue_sim_calibration PUBLIC cue_sim_physics cue_sim_camera)
+# The fit's solver: robust least squares shaped like an arrow (the coefficients shared by every shot,
+# each shot's unknowns its own), by Ceres with each shot's unknowns eliminated by its Schur
+# complement. Its own library: only the Python module's fit needs Ceres.
+find_package(Ceres REQUIRED)
+add_library(cue_sim_least_squares ${CUE_SIM_ROOT}/src/calibration/arrow_least_squares.cpp)
+target_include_directories(cue_sim_least_squares PUBLIC ${CUE_SIM_ROOT}/include)
+target_link_libraries(cue_sim_least_squares PRIVATE Ceres::ceres)

@@ -15,8 +15,9 @@ PACKAGES=(
   libinteractive-markers-dev
   # the Python module (pybind11, NumPy) and its tests
   pybind11-dev python3-dev python3-numpy python3-pytest python3-dask python3-distributed python3-matplotlib
-  # the calibration's solver (scipy.optimize.least_squares)
-  python3-scipy
+  # the calibration: its solver (Ceres, each shot's unknowns eliminated by their Schur complement) and
+  # the rest of its numerics (scipy: sparse Jacobians, the robust loss's scaling)
+  libceres-dev python3-scipy
   # `pip install .` into a virtual environment (CI checks it; python3-venv brings pip's wheel)
   python3-venv python3-pip
   # the camera: rendering with OpenCV, images and calibrations through image_transport and

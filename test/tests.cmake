@@ -159,6 +159,7 @@ catkin_add_gtest(learning_tests test/learning/test_environment.cpp)
 target_link_libraries(learning_tests cue_sim_learning cue_sim_table_description gtest_main)
 target_include_directories(learning_tests PRIVATE src)
 
-catkin_add_gtest(calibration_tests test/calibration/test_track_prediction.cpp test/calibration/test_shot_film.cpp)
-target_link_libraries(calibration_tests cue_sim_calibration cue_sim_table_description gtest_main)
+catkin_add_gtest(calibration_tests test/calibration/test_track_prediction.cpp test/calibration/test_shot_film.cpp
+  test/calibration/test_arrow_least_squares.cpp)
+target_link_libraries(calibration_tests cue_sim_calibration cue_sim_least_squares cue_sim_table_description gtest_main)
 target_include_directories(calibration_tests PRIVATE src)

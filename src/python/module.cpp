@@ -28,6 +28,7 @@
 #include "python/calibration_bindings.hpp"
 #include "python/game_bindings.hpp"
 #include "python/learning_bindings.hpp"
+#include "python/least_squares_bindings.hpp"
 #include "python/state_arrays.hpp"
 
 namespace py = pybind11;
@@ -349,4 +350,5 @@ PYBIND11_MODULE(_core, m)
   bindGames(m);
   bindLearning(m);
   bindCalibration(m);
+  bindLeastSquares(m);
 }

@@ -1,5 +1,6 @@
 """The simulator fitted to observed shots: chosen coefficients of the registry, each shot's
-unknowns with them, by robust nonlinear least squares (scipy.optimize.least_squares).
+unknowns with them, by robust nonlinear least squares (Ceres, each shot's unknowns eliminated by
+their Schur complement: cue_sim.calibrate.solver).
 
 Every observed position is compared with the engine's exact prediction at that instant
 (cue_sim._core.predict_tracks: the events between two frames are where they happen, not at a
@@ -24,7 +25,7 @@ from typing import Dict, List, Optional, Sequence, Tuple
 import numpy as np
 
 from cue_sim._interpreter import core
-from cue_sim.calibrate import uncertainty
+from cue_sim.calibrate import solver, uncertainty
 from cue_sim.calibrate.tracks import CUE_FIELDS, Track
 
 _core = core()
@@ -522,12 +523,6 @@ STAGES = ((0.3, False, 10.0), (0.3, False, 10.0), (0.6, False, 10.0), (1.0, True
 SLIDE_STARTS = (0.15, 0.2, 0.25, 0.3, 0.35)
 #: How many of them go on past the first moments of the shots.
 RANKED_STARTS = 2
-#: How closely each step's linear subproblem is solved (lsmr's atol and btol): less closely in the
-#: intermediate stages, which are starts for the next (solving them to 1e-10 took half a fit's time
-#: in lsmr's products; at 1e-6 the strikes' fields of an execution-noise fit, scaled far apart, went
-#: astray), tightly in the last, whose steps end the fit.
-STAGE_SUBPROBLEM_TOLERANCE = 1e-8
-LAST_SUBPROBLEM_TOLERANCE = 1e-10
 #: An intermediate stage stops at this relative change of the cost (it is a start for the next);
 #: the last at a hundredth of that: 20 shots' coefficients are then where a stop at 1e-8 puts them
 #: to six digits (a tenth of a standard error), for a fifth less time.
@@ -641,7 +636,7 @@ def _refit_misfits(problem: _Problem, x, max_evaluations: int, window: float = m
 
 
 def _stages(problem: _Problem, x, stages, max_evaluations: int, progress):
-    """Runs the given STAGES from x: (x after them, the last stage's least_squares result)."""
+    """Runs the given STAGES from x: (x after them, the last stage's solver.Solution)."""
     x = x.copy()
     result = None
     for stage in stages:
@@ -652,13 +647,12 @@ def _stages(problem: _Problem, x, stages, max_evaluations: int, progress):
         last = stage == len(STAGES) - 1
 
         def solve(start, stage=stage, scale=scale, active=active, last=last):
-            """The stage's least_squares from `start`, which takes its result."""
+            """The stage's solve from `start`, which takes its result."""
             report = (lambda n, c: progress(stage, n, c)) if progress else (lambda n, c: None)
             if last and problem.fit:
                 return _settle(problem, start, active, max_evaluations, scale, report)
             run = _solve(problem, start, active, max_evaluations if last else max_evaluations // 5,
-                         LAST_TOLERANCE if last else STAGE_TOLERANCE, scale, report,
-                         LAST_SUBPROBLEM_TOLERANCE if last else STAGE_SUBPROBLEM_TOLERANCE)
+                         LAST_TOLERANCE if last else STAGE_TOLERANCE, scale, report)
             start[active] = run.x
             return run
 
@@ -697,18 +691,17 @@ def _stages(problem: _Problem, x, stages, max_evaluations: int, progress):
 
 
 def _settle(problem: _Problem, x, active, max_evaluations: int, scale: float, progress):
-    """The last stage of a fit with coefficients: least_squares in rounds of SETTLE_ROUND
+    """The last stage of a fit with coefficients: solves in rounds of SETTLE_ROUND
     evaluations, each from where the last stopped, until a round converges by LAST_TOLERANCE, moves
     no coefficient by more than SETTLED_SHARE of its standard error, or max_evaluations are spent.
-    x takes the result. With the loss narrowed to the noise the solver's steps converge only
-    linearly (the robust loss's curvature is left out of its Gauss-Newton model): seen, 300
-    evaluations in which the shots' unknowns crept by micrometres and the cost by 1e-5 of itself a
-    step, never within its tolerance, while the coefficients moved by a millionth of themselves."""
+    x takes the result. With the loss narrowed to the noise a solver's steps may converge only
+    linearly: seen with scipy's least_squares, 300 evaluations in which the shots' unknowns crept by
+    micrometres and the cost by 1e-5 of itself a step, never within its tolerance, while the
+    coefficients moved by a millionth of themselves."""
     spent, n = 0, len(problem.fit)
     while True:
         before = x[:n].copy()
-        run = _solve(problem, x, active, min(SETTLE_ROUND, max_evaluations - spent), LAST_TOLERANCE, scale, progress,
-                     LAST_SUBPROBLEM_TOLERANCE)
+        run = _solve(problem, x, active, min(SETTLE_ROUND, max_evaluations - spent), LAST_TOLERANCE, scale, progress)
         x[active] = run.x
         spent += run.nfev
         if run.status != 0 or spent >= max_evaluations:  # converged by its own tolerances, or out of budget
@@ -725,7 +718,7 @@ def _settle(problem: _Problem, x, active, max_evaluations: int, scale: float, pr
 
 
 def _profile(problem: _Problem, result) -> uncertainty.Profiled:
-    """The coefficients' information from least_squares' result on the problem, its shots'
+    """The coefficients' information from a solve's result on the problem, its shots'
     unknowns profiled out (uncertainty.profile)."""
     rows = [2 * len(k) for k, _ in problem.rows]
     columns, start = [], len(problem.fit)
@@ -735,10 +728,9 @@ def _profile(problem: _Problem, result) -> uncertainty.Profiled:
     return uncertainty.profile(result.jac, result.fun, STAGES[-1][2], rows, columns, len(problem.fit))
 
 
-def _solve(problem: _Problem, x, active, max_evaluations: int, tolerance: float, scale: float, progress,
-           subproblem_tolerance: float):
-    """least_squares over the active components of x, the others held."""
-    from scipy.optimize import least_squares
+def _solve(problem: _Problem, x, active, max_evaluations: int, tolerance: float, scale: float, progress):
+    """The robust least squares over the active components of x (every shot's unknowns, and the
+    coefficients or none of them), the others held (solver.solve: Ceres)."""
     full = x.copy()
 
     def residuals(free):
@@ -747,59 +739,15 @@ def _solve(problem: _Problem, x, active, max_evaluations: int, tolerance: float,
         progress(problem.evaluations, float(np.sum(np.sqrt(1 + r ** 2) - 1)))  # soft_l1's cost
         return r
 
-    jacobian = _SparseDifferences(residuals, problem.sparsity().tocsc()[:, np.flatnonzero(active)],
-                                  (problem.low[active], problem.high[active]))
-    return least_squares(jacobian.residuals, x[active], jac=jacobian, bounds=jacobian.bounds, loss="soft_l1", f_scale=scale,
-                         x_scale="jac", max_nfev=max_evaluations, method="trf", tr_solver="lsmr",
-                         tr_options={"atol": subproblem_tolerance, "btol": subproblem_tolerance}, ftol=tolerance,
-                         xtol=1e-8)
-
-
-class _SparseDifferences:
-    """The residuals' Jacobian by forward differences over the sparsity's column groups, with
-    least_squares' own steps and grouping (scipy's approx_derivative with `sparsity`), but where
-    each group's entries lie worked out once for a solve, not at every Jacobian: scipy's finding
-    and sorting of them was a fifth of a 20-shot fit. The entries that come out zero, more than half
-    of the pattern (a ball's rows before it moves depend only on where it stood), are dropped, so
-    that lsmr's products skip them (least_squares spent half of a 20-shot fit in lsmr on the full
-    pattern)."""
-
-    def __init__(self, residuals, sparsity, bounds):
-        from scipy.optimize._numdiff import group_columns  # least_squares' own column grouping
-        self._residuals, self.bounds = residuals, bounds
-        structure = sparsity.tocsc()
-        structure.sort_indices()
-        self.shape, self._indptr = structure.shape, structure.indptr
-        self._rows = structure.indices
-        self._entry_columns = np.repeat(np.arange(structure.shape[1]), np.diff(structure.indptr))
-        groups = group_columns(structure)
-        #: per group: its columns, and the pattern's entries in them (their places in the CSC data)
-        self._members = [(np.flatnonzero(groups == g), np.flatnonzero(groups[self._entry_columns] == g))
-                         for g in range(int(groups.max()) + 1 if len(groups) else 0)]
-        self._last = None  # (x, residuals there): the solver asks for the Jacobian where it just evaluated
-
-    def residuals(self, free):
-        """The residuals at free, kept for the Jacobian there."""
-        r = self._residuals(free)
-        self._last = (free.copy(), r)
-        return r
-
-    def __call__(self, free):
-        from scipy.optimize._numdiff import _adjust_scheme_to_bounds, _compute_absolute_step
-        from scipy.sparse import csc_matrix
-        f0 = self._last[1] if self._last is not None and np.array_equal(self._last[0], free) else self.residuals(free)
-        h = _compute_absolute_step(None, free, f0, "2-point")
-        h, _ = _adjust_scheme_to_bounds(free, h, 1, "1-sided", self.bounds[0], self.bounds[1])
-        data = np.empty(len(self._rows))
-        for columns, entries in self._members:
-            x = free.copy()
-            x[columns] += h[columns]
-            dx = x - free
-            df = self._residuals(x) - f0
-            data[entries] = df[self._rows[entries]] / dx[self._entry_columns[entries]]
-        jac = csc_matrix((data, self._rows.copy(), self._indptr.copy()), shape=self.shape)
-        jac.eliminate_zeros()
-        return jac
+    shared = len(problem.fit) if active[:len(problem.fit)].all() else 0
+    groups, column, row = [], shared, 0
+    for names, (k, _) in zip(problem.shot_names, problem.rows):
+        groups.append((column, len(names), row, 2 * len(k)))
+        column += len(names)
+        row += 2 * len(k)
+    sparsity = problem.sparsity().tocsc()[:, np.flatnonzero(active)]
+    bounds = (problem.low[active], problem.high[active])
+    return solver.solve(residuals, x[active], bounds, sparsity, shared, groups, scale, max_evaluations, tolerance)
 
 
 def _report(problem: _Problem, x, result, seconds: float) -> Calibration:

@@ -5,8 +5,9 @@ shot's own unknowns only. Each shot's own unknowns are profiled out of its block
 columns and residuals projected off its own columns), which leaves what the shot says of the
 coefficients whatever its own unknowns are; the coefficients' information is the sum of those over
 the shots (the Schur complement of J^T J: the coefficient block of its inverse, without forming
-it). Three estimates, from the Jacobian that scipy's least_squares returns (scaled for the robust
-loss, so that J^T J is the Gauss-Newton Hessian of the robust cost and J^T f its gradient):
+it). Three estimates, from the Jacobian at the solution scaled for the robust loss as scipy's
+least_squares scales it (robust_jacobian), so that J^T J is the Gauss-Newton Hessian of the robust
+cost and J^T f its gradient:
 
 - `gauss_newton`: s^2 H^+, right when every position's error is independent;
 - `shot_sandwich`: H^+ (sum over shots of g_s g_s^T) H^+ G/(G-1), the cluster-robust covariance
@@ -32,13 +33,29 @@ RANK_SHARE = 1e-8
 UNSEEN_SHARE = 1e-3
 
 
-def robust_residuals(residuals: np.ndarray, scale: float) -> np.ndarray:
-    """The residuals as least_squares scales them for the soft_l1 loss of f_scale `scale`, so that
-    with its returned Jacobian J^T f is the robust cost's gradient."""
+def _robust_weight(residuals: np.ndarray, scale: float):
+    """soft_l1's first derivative and sqrt of its Gauss-Newton weight (the loss's curvature in),
+    as scipy's least_squares scales residuals and Jacobian rows for it."""
     z = (residuals / scale) ** 2
     first, second = (1 + z) ** -0.5, -0.5 * (1 + z) ** -1.5 / scale ** 2
-    weight = np.maximum(first + 2 * second * residuals ** 2, np.finfo(float).eps)
-    return residuals * first / np.sqrt(weight)
+    return first, np.sqrt(np.maximum(first + 2 * second * residuals ** 2, np.finfo(float).eps))
+
+
+def robust_residuals(residuals: np.ndarray, scale: float) -> np.ndarray:
+    """The residuals as least_squares scales them for the soft_l1 loss of f_scale `scale`, so that
+    with the Jacobian robust_jacobian gives J^T f is the robust cost's gradient."""
+    first, root = _robust_weight(residuals, scale)
+    return residuals * first / root
+
+
+def robust_jacobian(jacobian, residuals: np.ndarray, scale: float):
+    """The raw residuals' Jacobian (sparse or dense) with each row scaled as least_squares scales
+    it for the soft_l1 loss, so that J^T J is the Gauss-Newton Hessian of the robust cost."""
+    _, root = _robust_weight(residuals, scale)
+    if hasattr(jacobian, "multiply"):
+        from scipy.sparse import diags
+        return (diags(root) @ jacobian).tocsc()
+    return np.asarray(jacobian) * root[:, None]
 
 
 @dataclass
@@ -73,8 +90,8 @@ def _inverse(h: np.ndarray):
 def profile(jacobian, residuals: np.ndarray, loss_scale: float, shot_rows: Sequence[int],
             shot_columns: Sequence[Sequence[int]], coefficients: int) -> Profiled:
     """The profiled information of the first `coefficients` components of x: `jacobian` and the raw
-    `residuals` are least_squares', `loss_scale` its f_scale; `shot_rows` each shot's number of
-    residuals in order, `shot_columns` its own unknowns' columns."""
+    `residuals` are a solve's (its jac and fun), `loss_scale` its f_scale; `shot_rows` each shot's
+    number of residuals in order, `shot_columns` its own unknowns' columns."""
     j = jacobian.tocsr() if hasattr(jacobian, "tocsr") else np.asarray(jacobian, dtype=float)
     f = robust_residuals(residuals, loss_scale)
     blocks = []
