@@ -16,6 +16,7 @@ unknowns marginalised; doc/calibration.md says what the method assumes and where
 """
 from __future__ import annotations
 
+import copy
 import math
 import os
 import time
@@ -293,12 +294,25 @@ class _Compared:
         np.subtract(out, self.observed, out=out)
 
 
+def _from_origin(track: Track, origin: float) -> Track:
+    """The track with its times counted from `origin` (a shallow copy: the rest is shared)."""
+    moved = copy.copy(track)
+    moved.times = track.times - origin
+    return moved
+
+
 class _Problem:
     """The least-squares problem: x is the fitted coefficients, then each shot's unknowns."""
 
     def __init__(self, tracks: Sequence[Track], table: str, models: Dict[str, str], params: Dict[str, float],
                  fit: Sequence[str], noise: float, threads: int, unknowns: str = "motion"):
-        self.tracks, self.table, self.models = list(tracks), table, models
+        #: Each shot's clock starts at its first instant: a lab's stamps may be seconds since 1970,
+        #: where the Jacobian's difference step in t0 (relative to it) would be seconds and the
+        #: solver's step tolerance (relative to x) a minute. `origins` puts the fitted strikes back
+        #: on the observer's clock.
+        self.origins = [float(track.times[0]) for track in tracks]
+        self.tracks = [_from_origin(track, origin) for track, origin in zip(tracks, self.origins)]
+        self.table, self.models = table, models
         self.unknowns = unknowns  # "motion": the struck ball's; "strike": the strike's fields not known
         self.params, self.fit, self.noise, self.threads = dict(params), list(fit), noise, threads
         self.evaluations = 0
@@ -771,7 +785,8 @@ def _report(problem: _Problem, x, result, seconds: float) -> Calibration:
     values = problem.coefficients(x)
     shots, contacts = [], {"ball_ball": 0, "cushion": 0}
     predicted = problem.predict(x)
-    for track, unknowns, shot, (k, j) in zip(problem.tracks, problem.shot_unknowns(x), predicted, problem.rows):
+    for track, unknowns, shot, (k, j), origin in zip(problem.tracks, problem.shot_unknowns(x), predicted, problem.rows,
+                                                     problem.origins):
         miss = np.linalg.norm(shot.at(k, j) - track.positions[k, j], axis=1)
         ok, p = shot.ok, shot.result
         inlier = miss <= 5 * problem.noise
@@ -783,6 +798,7 @@ def _report(problem: _Problem, x, result, seconds: float) -> Calibration:
         counts = {"ball_ball": p["ball_ball"], "cushion": p["cushion"], "pocketed": p["pocketed"]} if ok else {}
         for kind in contacts:
             contacts[kind] += counts.get(kind, 0)
+        unknowns = dict(unknowns, t0=unknowns["t0"] + origin)  # on the observer's clock
         shots.append(ShotReport(track.name, unknowns, float(np.sqrt(np.mean(miss[inlier] ** 2))) if inlier.any()
                                 else float("nan"), per_ball, int((~inlier).sum()), len(k), counts))
     warnings = _warnings(problem, values, errors, contacts, shots, result)
