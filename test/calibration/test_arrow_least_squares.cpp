@@ -94,12 +94,19 @@ ArrowEvaluation evaluationOf(const Decays& d)
 
 const std::vector<std::pair<double, double>> kGroups = {{1.0, 0.2}, {2.5, -0.4}, {0.7, 1.1}, {1.8, 0.0}};
 
-TEST(ArrowLeastSquares, ExactDataFittedBack)
+/// A start far from kGroups' decays: the rate 0.5, each group's amplitude 1 and offset 0.
+std::vector<double> sharedStart()
 {
-  const Decays d = makeDecays(1.3, kGroups, 0.0, 1);
   std::vector<double> x = {0.5};
   for (std::size_t g = 0; g < kGroups.size(); ++g)
     x.insert(x.end(), {1.0, 0.0});
+  return x;
+}
+
+TEST(ArrowLeastSquares, ExactDataFittedBack)
+{
+  const Decays d = makeDecays(1.3, kGroups, 0.0, 1);
+  std::vector<double> x = sharedStart();
   ArrowOptions options;
   options.function_tolerance = 1e-14;
   options.parameter_tolerance = 1e-14;
@@ -136,13 +143,7 @@ TEST(ArrowLeastSquares, RobustLossHoldsOutliers)
   for (auto& group : d.observed)
     for (std::size_t i = 3; i < group.size(); i += 10)
       group[i] += 0.5;
-  auto start = [] {
-    std::vector<double> x = {0.5};
-    for (std::size_t g = 0; g < kGroups.size(); ++g)
-      x.insert(x.end(), {1.0, 0.0});
-    return x;
-  };
-  std::vector<double> robust = start(), plain = start();
+  std::vector<double> robust = sharedStart(), plain = sharedStart();
   ArrowOptions options;
   options.function_tolerance = 1e-12;
   options.loss_scale = noise;
@@ -207,9 +208,7 @@ TEST(ArrowLeastSquares, AGroupWithoutResidualsKeepsItsUnknowns)
   Decays d = makeDecays(1.3, kGroups, 0.0, 1);
   d.times[1].clear();
   d.observed[1].clear();
-  std::vector<double> x = {0.5};
-  for (std::size_t g = 0; g < kGroups.size(); ++g)
-    x.insert(x.end(), {1.0, 0.0});
+  std::vector<double> x = sharedStart();
   solveArrowLeastSquares(d.shape(), x, evaluationOf(d), ArrowOptions());
   EXPECT_EQ(x[3], 1.0);
   EXPECT_EQ(x[4], 0.0);
@@ -234,9 +233,7 @@ TEST(ArrowLeastSquares, TheBudgetIsKept)
 TEST(ArrowLeastSquares, AnEvaluationThatThrowsEndsTheSolve)
 {
   const Decays d = makeDecays(1.3, kGroups, 0.0, 1);
-  std::vector<double> x = {0.5};
-  for (std::size_t g = 0; g < kGroups.size(); ++g)
-    x.insert(x.end(), {1.0, 0.0});
+  std::vector<double> x = sharedStart();
   int calls = 0;
   const ArrowEvaluation throwing = [&](const std::vector<double>& at, bool jacobian, std::vector<double>& r,
                                        std::vector<double>& j) {
