@@ -14,6 +14,7 @@ uncertainty take.
 """
 from __future__ import annotations
 
+from functools import cached_property
 from typing import Callable, Sequence, Tuple
 
 import numpy as np
@@ -113,7 +114,8 @@ class Solution:
     fun (the raw residuals at x), jac (the Jacobian at x scaled for the robust loss, so that J^T J
     is the Gauss-Newton Hessian of the robust cost: uncertainty.robust_jacobian), nfev and njev
     (the solver's evaluations of the residuals and of the Jacobian), status (0: out of evaluations;
-    2: converged; -1: failed), success and message. fun and jac are worked out when first read."""
+    2: converged; -1: failed), success and message. fun and jac are worked out once, when first read
+    (the execution-noise fit reads jac once a shot)."""
 
     def __init__(self, summary: dict, differences: SparseDifferences, scale: float):
         self.x = np.asarray(summary["x"], dtype=float)
@@ -124,11 +126,11 @@ class Solution:
         self.message = summary["message"]
         self._differences, self._scale = differences, scale
 
-    @property
+    @cached_property
     def fun(self) -> np.ndarray:
         return self._differences.residuals(self.x)
 
-    @property
+    @cached_property
     def jac(self):
         return uncertainty.robust_jacobian(self._differences.matrix(self.x), self.fun, self._scale)
 
