@@ -6,8 +6,8 @@ cue must pass to make it (the axis through the ball's centre offset by a and b, 
 node's ~strike_cue reads a pose), and drives the gantry there: it lifts the cue, travels over the
 table, lowers it behind the ball, and strokes: a uniform acceleration to the speed at the touch,
 then a follow-through that slows to a stop. It publishes joint_states at ~rate all the while
-(robot_state_publisher turns them into tf, the table node follows the frame cue_tip), and answers
-with what the table reported of the touch (~cue_contacts). ~joint_noise adds Gaussian noise of
+(robot_state_publisher turns them into tf, the table node follows the frame cue_tip), and, once
+the cue is lifted clear again, answers with what the table reported of the touch (~cue_contacts). ~joint_noise adds Gaussian noise of
 that standard deviation [m or rad] to every joint position published, as an encoder's would be;
 ~settle [s] is how long the cue rests behind the ball before it strokes.
 
@@ -253,6 +253,11 @@ class CueRobot:
                         break
                 if rospy.Time.now() > deadline:
                     break
+                rospy.sleep(0.01)
+            # Answer once the cue is lifted clear: a caller that racks or places balls as soon as
+            # the shot is answered must not put one under the follow-through or the retreating tip.
+            done = start + rospy.Duration(motion.duration())
+            while not rospy.is_shutdown() and rospy.Time.now() < done:
                 rospy.sleep(0.01)
             if contact is None:
                 return StrikeResponse(success=False, message="the table reported no touch of the cue")

@@ -51,6 +51,9 @@ class RobotAgreement(unittest.TestCase):
             rospy.sleep(0.01)
         return True
 
+    def touches_since(self, stamp):
+        return [c for c in self.contacts if c.header.stamp > stamp]
+
     def test_each_strike_is_the_shot_the_robot_aimed(self):
         rate = rospy.get_param("~rate")
         for speed, phi, theta, a, b in SHOTS:
@@ -63,8 +66,9 @@ class RobotAgreement(unittest.TestCase):
             before = len(self.shots)
             answer = self.play(ball_id=0, speed=speed, phi=phi, theta=theta, a=a, b=b)
             self.assertTrue(answer.success, which + answer.message)
-            touches = [c for c in self.contacts if c.header.stamp > racked.stamp]
-            self.assertTrue(touches, which + "a touch reported")
+            # The robot answers from its own subscription to ~cue_contacts: this one's copy may come later.
+            self.assertTrue(self.wait_for(lambda: self.touches_since(racked.stamp)), which + "a touch reported")
+            touches = self.touches_since(racked.stamp)
             contact = touches[0]
             self.assertTrue(contact.struck, which + contact.message)
             shot = contact.shot
