@@ -5,13 +5,15 @@
 # calibrations are looked for at run time.
 
 # The physics core: no ROS. Each contact model is one file in models/ball_ball or models/cushion,
-# named as include/cue_sim/physics/contact_models.def declares it.
+# named as include/cue_sim/physics/contact_models.def declares it; the ball on the slate is in
+# models/ball_table.
 file(GLOB CUE_SIM_CONTACT_MODELS CONFIGURE_DEPENDS ${CUE_SIM_ROOT}/src/physics/models/ball_ball/*.cpp
-  ${CUE_SIM_ROOT}/src/physics/models/cushion/*.cpp)
+  ${CUE_SIM_ROOT}/src/physics/models/cushion/*.cpp ${CUE_SIM_ROOT}/src/physics/models/ball_table/*.cpp)
 add_library(cue_sim_physics
   # motion and collision models
   ${CUE_SIM_ROOT}/src/physics/models/event.cpp
   ${CUE_SIM_ROOT}/src/physics/models/motion.cpp
+  ${CUE_SIM_ROOT}/src/physics/models/flight.cpp
   ${CUE_SIM_ROOT}/src/physics/models/orientation.cpp
   ${CUE_SIM_ROOT}/src/physics/models/physics_params.cpp
   ${CUE_SIM_ROOT}/src/physics/models/cue_strike.cpp
