@@ -52,10 +52,14 @@ def test_a_labs_clock_in_seconds_since_1970():
         error = clock.standard_errors[name]
         assert error < 0.05 * value, (name, error)  # on its own clock: 0.16 on 0.24
         assert abs(clock.values[name] - value) < 2 * error, (name, clock.values[name], error)
-        # The stamps' rounding (2.4e-7 s) is enough to take the fit along another way to a
-        # neighbouring minimum of the shots' unknowns (seen: 0.4 errors apart, the errors 14 %):
-        # within one error of the fit on the shots' own clocks.
-        assert abs(clock.values[name] - local.values[name]) < error, name
+        # As precise as the fit on the shots' own clocks. Not the same values: the stamps' rounding
+        # (2.4e-7 s) is enough to take the fit along another way to a neighbouring minimum of the
+        # shots' unknowns, and which one depends on the machine's rounding too (seen: 0.4 errors
+        # apart on one machine, 1.0 on another, the errors up to 14 % apart): both are estimates
+        # of the truth, checked above.
+        assert 0.8 < error / local.standard_errors[name] < 1.25, (name, error, local.standard_errors[name])
+    # A fit as close: no minimum worse than the one found on the shots' own clocks.
+    assert clock.cost < 1.05 * local.cost, (clock.cost, local.cost)
     for shot, track in zip(clock.shots, tracks):
         assert abs(shot.unknowns["t0"] - 1.7e9 - track.truth["t0"]) < 2e-3
 
