@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "cue_sim/physics/motion.hpp"
 #include "physics/models/ball_table/slate_bounce.hpp"
 #include "physics/models/flight.hpp"
 
@@ -13,68 +14,59 @@ using namespace cue_sim::physics;
 
 namespace
 {
-constexpr double kR = 0.028575, kMass = 0.170097, kG = 9.81;
-
-Vec3<double> zCross(const Vec3<double>& a)
-{
-  return Vec3<double>(-a.y(), a.x(), 0.0);
-}
+const PhysicsParams<double> p;
+const double kR = p.ball_radius, kG = p.gravity;
 
 /// Angular momentum about the contact point under the ball, per unit mass: I w / m + (R z) x v.
-Vec3<double> momentAboutContact(const BallMotion<double>& m)
+Vec3<double> momentAboutContact(const Ball<double>& b)
 {
-  return 0.4 * kR * kR * m.w + kR * zCross(m.v);
+  return 0.4 * kR * kR * b.w + kR * Vec3<double>::UnitZ().cross(b.v);
 }
 
-double energy(const BallMotion<double>& m)
+double slip(const Ball<double>& b)
 {
-  return 0.5 * kMass * m.v.squaredNorm() + 0.5 * 0.4 * kMass * kR * kR * m.w.squaredNorm();
-}
-
-double slip(const BallMotion<double>& m)
-{
-  return Vec3<double>(m.v.x() - kR * m.w.y(), m.v.y() + kR * m.w.x(), 0).norm();
+  return slipVelocity(b.v, b.w, kR).norm();
 }
 
 /// The bounces one at a time: impact, flight up and down again, until the rebound is nothing.
 struct Followed
 {
-  double time = 0;
-  Vec3<double> way = Vec3<double>::Zero();
-  BallMotion<double> end;
+  Ball<double> end;
   int impacts = 0;
   int slip_stopped_at = -1;
 };
 
-Followed followBounces(BallMotion<double> m, const SlateContact<double>& contact)
+Followed followBounces(Ball<double> b, const SlateContact<double>& contact)
 {
   Followed f;
-  for (; f.impacts < 5000 && m.v.z() < 0; ++f.impacts)
+  for (; f.impacts < 5000 && b.v.z() < 0; ++f.impacts)
   {
-    const bool slipping = slip(m) > 0;
-    m = slateImpact(m, contact, kR);
-    if (slipping && f.slip_stopped_at < 0 && slip(m) < 1e-12 * (1 + m.v.norm()))
+    const bool slipping = slip(b) > 0;
+    b = slateImpact(b, contact, kR);
+    if (slipping && f.slip_stopped_at < 0 && slip(b) < 1e-12 * (1 + b.v.norm()))
       f.slip_stopped_at = f.impacts;
     // Up and back down to the slate: the flight's own root, from the slate's height.
-    const double flight = timeToHeight(kR, m.v.z(), kR, kG);
-    const Vec3<double> r = flightPosition(Vec3<double>(0, 0, kR), m.v, flight, kG);
-    f.way += Vec3<double>(r.x(), r.y(), 0);
-    f.time += flight;
-    m.v = flightVelocity(m.v, flight, kG);
-    if (!(m.v.z() < -1e-300))
+    const double flight = timeToHeight(b.r.z(), b.v.z(), kR, kG);
+    b.r = flightPosition(b.r, b.v, flight, kG);
+    b.r.z() = kR;
+    b.time += flight;
+    b.v = flightVelocity(b.v, flight, kG);
+    if (!(b.v.z() < -1e-300))
       break;
   }
-  m.v.z() = 0;
-  f.end = m;
+  b.v.z() = 0;
+  f.end = b;
   return f;
 }
 
-BallMotion<double> landing(const Vec3<double>& v, const Vec3<double>& w)
+/// A ball reaching the slate with velocity v and spin w.
+Ball<double> landing(const Vec3<double>& v, const Vec3<double>& w)
 {
-  BallMotion<double> m;
-  m.v = v;
-  m.w = w;
-  return m;
+  Ball<double> b;
+  b.r = Vec3<double>(0.1, -0.2, kR);
+  b.v = v;
+  b.w = w;
+  return b;
 }
 }  // namespace
 
@@ -121,11 +113,11 @@ TEST(SlateBounce, DroppedBallBouncesAsTheGeometricSeries)
   for (const double e : {0.0, 0.3, 0.5, 0.8})
   {
     const SlateContact<double> contact{e, 0.2};
-    BallMotion<double> m = landing(Vec3<double>(0, 0, -kG * t1), Vec3<double>::Zero());
+    Ball<double> m = landing(Vec3<double>(0, 0, -kG * t1), Vec3<double>::Zero());
     const BounceSeries<double> series = bounceSeries(m, contact, kR, kG);
-    EXPECT_NEAR(series.duration, 2 * e * t1 / (1 - e), 1e-15) << e;
+    EXPECT_NEAR(series.end.time - m.time, 2 * e * t1 / (1 - e), 1e-15) << e;
     EXPECT_NEAR(series.first_rebound, e * e * H, 1e-15) << e;
-    EXPECT_EQ(series.way.norm(), 0.0);
+    EXPECT_EQ((series.end.r - m.r).norm(), 0.0);
     EXPECT_EQ(series.end.v.norm(), 0.0);
     // Each rebound's height is e^2 of the last.
     double height = H;
@@ -146,10 +138,10 @@ TEST(SlateBounce, OneImpactKeepsMomentAboutTheContactAndGainsNoEnergy)
   std::uniform_real_distribution<double> speed(-4, 4), spin(-200, 200), e(0, 0.95), mu(0, 0.6);
   for (int i = 0; i < 2000; ++i)
   {
-    const BallMotion<double> in = landing(Vec3<double>(speed(random), speed(random), -std::fabs(speed(random)) - 1e-3),
-                                          Vec3<double>(spin(random), spin(random), spin(random)));
+    const Ball<double> in = landing(Vec3<double>(speed(random), speed(random), -std::fabs(speed(random)) - 1e-3),
+                                    Vec3<double>(spin(random), spin(random), spin(random)));
     const SlateContact<double> contact{e(random), mu(random)};
-    const BallMotion<double> out = slateImpact(in, contact, kR);
+    const Ball<double> out = slateImpact(in, contact, kR);
     // Normal restitution, and the normal part's energy down by e^2 exactly.
     EXPECT_NEAR(out.v.z(), -contact.restitution * in.v.z(), 1e-15);
     // Both impulses act at the contact point: the horizontal moment about it is kept.
@@ -157,7 +149,7 @@ TEST(SlateBounce, OneImpactKeepsMomentAboutTheContactAndGainsNoEnergy)
     EXPECT_NEAR(after.x(), before.x(), 1e-13);
     EXPECT_NEAR(after.y(), before.y(), 1e-13);
     EXPECT_EQ(out.w.z(), in.w.z());
-    EXPECT_LE(energy(out), energy(in) * (1 + 1e-14));
+    EXPECT_LE(kineticEnergy(out, p), kineticEnergy(in, p) * (1 + 1e-14));
     // Friction never reverses the slip: it keeps its direction, shrunk, or stops.
     EXPECT_LE(slip(out), slip(in) * (1 + 1e-14) + 1e-14);
     // No more friction than Coulomb's bound on what the normal impulse allows.
@@ -169,8 +161,8 @@ TEST(SlateBounce, OneImpactKeepsMomentAboutTheContactAndGainsNoEnergy)
 TEST(SlateBounce, FrictionThatCanStopTheSlipLeavesTheBallRolling)
 {
   // A draw shot landing: forward at 3 m/s, backspin, coming down at 2 m/s onto a grippy slate.
-  const BallMotion<double> in = landing(Vec3<double>(3, 0, -2), Vec3<double>(0, -80, 0));
-  const BallMotion<double> out = slateImpact(in, SlateContact<double>{0.5, 0.9}, kR);
+  const Ball<double> in = landing(Vec3<double>(3, 0, -2), Vec3<double>(0, -80, 0));
+  const Ball<double> out = slateImpact(in, SlateContact<double>{0.5, 0.9}, kR);
   EXPECT_NEAR(slip(out), 0.0, 1e-13);
   // Rolling, with the moment about the contact it came with: (7/5) R v_x = (2/5) R^2 w_y + R v_x0.
   EXPECT_NEAR(out.v.x(), (5 * 3.0 + 2 * kR * -80.0) / 7, 1e-14);
@@ -182,7 +174,7 @@ TEST(SlateBounce, TheSeriesIsTheBouncesFollowedOneByOne)
   struct Case
   {
     const char* what;
-    BallMotion<double> in;
+    Ball<double> in;
     SlateContact<double> contact;
     // The impact that stops the slip, by hand from (7/2) mu (1 + e) U_0 (1 - e^(k+1)) / (1 - e) >= |u|;
     // -1: still slipping at the end; -2: not checked.
@@ -201,8 +193,8 @@ TEST(SlateBounce, TheSeriesIsTheBouncesFollowedOneByOne)
     const BounceSeries<double> series = bounceSeries(c.in, c.contact, kR, kG);
     const Followed followed = followBounces(c.in, c.contact);
     const double scale = c.in.v.norm();
-    EXPECT_NEAR(series.duration, followed.time, 1e-13 * (1 + followed.time)) << c.what;
-    EXPECT_NEAR((series.way - followed.way).norm(), 0.0, 1e-13 * (1 + followed.way.norm())) << c.what;
+    EXPECT_NEAR(series.end.time, followed.end.time, 1e-13 * (1 + followed.end.time)) << c.what;
+    EXPECT_NEAR((series.end.r - followed.end.r).norm(), 0.0, 1e-13 * (1 + (followed.end.r - c.in.r).norm())) << c.what;
     EXPECT_NEAR((series.end.v - followed.end.v).norm(), 0.0, 1e-13 * scale) << c.what;
     EXPECT_NEAR(kR * (series.end.w - followed.end.w).norm(), 0.0, 1e-13 * scale) << c.what;
     EXPECT_EQ(series.end.v.z(), 0.0);
@@ -214,19 +206,20 @@ TEST(SlateBounce, TheSeriesIsTheBouncesFollowedOneByOne)
     {
       EXPECT_EQ(series.slip_stopped_at, c.stopped_at) << c.what;
     }
-    EXPECT_LE(energy(series.end), energy(c.in)) << c.what;
+    EXPECT_LE(kineticEnergy(series.end, p), kineticEnergy(c.in, p)) << c.what;
   }
 }
 
 TEST(SlateBounce, LongDoubleAgrees)
 {
-  BallMotion<long double> in;
+  Ball<long double> in;
+  in.r = Vec3<long double>(0.1L, -0.2L, static_cast<long double>(kR));
   in.v = Vec3<long double>(2, 1, -1.5);
   in.w = Vec3<long double>(60, -150, 30);
   const BounceSeries<long double> wide =
       bounceSeries(in, SlateContact<long double>{0.6L, 0.4L}, (long double)kR, (long double)kG);
   const BounceSeries<double> narrow = bounceSeries(landing({2, 1, -1.5}, {60, -150, 30}), {0.6, 0.4}, kR, kG);
   EXPECT_EQ(wide.slip_stopped_at, narrow.slip_stopped_at);
-  EXPECT_NEAR(static_cast<double>(wide.way.x()), narrow.way.x(), 1e-15);
+  EXPECT_NEAR(static_cast<double>(wide.end.r.x()), narrow.end.r.x(), 1e-15);
   EXPECT_NEAR(static_cast<double>(wide.end.v.y()), narrow.end.v.y(), 1e-15);
 }

@@ -1,7 +1,8 @@
 #include "physics/models/ball_table/slate_bounce.hpp"
 
 #include <cmath>
-#include <limits>
+
+#include "cue_sim/physics/motion.hpp"
 
 namespace cue_sim
 {
@@ -9,16 +10,9 @@ namespace physics
 {
 namespace
 {
-/// The contact point's slip on the slate, u = v + w x (-R z), in the table's xy.
-template <typename S>
-Vec3<S> slateSlip(const BallMotion<S>& m, S radius)
-{
-  return Vec3<S>(m.v.x() - radius * m.w.y(), m.v.y() + radius * m.w.x(), S(0));
-}
-
 /// The ball after a tangential impulse J per unit mass against the slip's direction `along`.
 template <typename S>
-void applyFriction(BallMotion<S>& m, const Vec3<S>& along, S impulse, S radius)
+void applyFriction(Ball<S>& m, const Vec3<S>& along, S impulse, S radius)
 {
   m.v -= impulse * along;
   m.w += (S(5) * impulse / (S(2) * radius)) * Vec3<S>(-along.y(), along.x(), S(0));  // (z x along)
@@ -52,14 +46,14 @@ int impactThatStops(S needed, S first, S e)
 }  // namespace
 
 template <typename S>
-BallMotion<S> slateImpact(const BallMotion<S>& in, const SlateContact<S>& contact, S radius)
+Ball<S> slateImpact(const Ball<S>& in, const SlateContact<S>& contact, S radius)
 {
-  BallMotion<S> out = in;
+  Ball<S> out = in;
   if (!(in.v.z() < 0))
     return out;
   const S incoming = -in.v.z();
   out.v.z() = contact.restitution * incoming;
-  const Vec3<S> slip = slateSlip(in, radius);
+  const Vec3<S> slip = slipVelocity(in.v, in.w, radius);
   const S slip_speed = slip.norm();
   if (!(slip_speed > 0) || !(contact.friction > 0))
     return out;
@@ -69,50 +63,49 @@ BallMotion<S> slateImpact(const BallMotion<S>& in, const SlateContact<S>& contac
 }
 
 template <typename S>
-BounceSeries<S> bounceSeries(const BallMotion<S>& in, const SlateContact<S>& contact, S radius, S gravity)
+BounceSeries<S> bounceSeries(const Ball<S>& in, const SlateContact<S>& contact, S radius, S gravity)
 {
   BounceSeries<S> series;
-  series.end = in;
-  series.end.v.z() = S(0);
-  if (!(in.v.z() < 0))
-    return series;
+  Ball<S>& end = series.end;
+  end = in;
   const S e = contact.restitution, g = gravity;
-  const S u0 = -in.v.z();                              // the first impact's normal speed U_0
+  const S u0 = in.v.z() < 0 ? -in.v.z() : S(0);        // the first impact's normal speed U_0
   const S flights = S(2) * e * u0 / (g * (S(1) - e));  // sum of 2 e U_k / g
-  series.duration = flights;
   series.first_rebound = (e * u0) * (e * u0) / (S(2) * g);
-  const Vec3<S> level(in.v.x(), in.v.y(), S(0));
-  series.way = level * flights;
+  Vec3<S> way(in.v.x() * flights, in.v.y() * flights, S(0));
 
-  const Vec3<S> slip = slateSlip(in, radius);
+  const Vec3<S> slip = slipVelocity(in.v, in.w, radius);
   const S slip_speed = slip.norm();
   const S grip = contact.friction * (S(1) + e);  // impact k's friction per unit mass: grip U_k
-  if (!(slip_speed > 0) || !(grip > 0))
-    return series;
-  const Vec3<S> along = slip / slip_speed;
-  // Impacts before K take their whole friction; K stops the slip (it needs 2/7 of it in all).
-  const S needed = S(2) / S(7) * slip_speed;
-  const int stop = impactThatStops(needed, grip * u0, e);
-  series.slip_stopped_at = stop;
-  const bool stops = stop >= 0;
-  const S whole = stops ? S(stop) : std::numeric_limits<S>::infinity();  // impacts at full friction
-  const S eK = stops ? std::pow(e, whole) : S(0);                        // e^K
-  const S e2K = eK * eK;
-  // Flight k follows impact k with horizontal velocity v_in - grip S_k along (S_k = sum_{j<=k} U_j)
-  // for k < K, then v_in - needed along: the way less v_in's part is
-  //   grip sum_{k<K} S_k T_k + needed sum_{k>=K} T_k, T_k = 2 e U_0 e^k / g,
-  // with sum_{k<K} S_k T_k = 2 e U_0^2 / (g (1-e)) ((1-e^K)/(1-e) - e (1-e^2K)/(1-e^2)).
-  const S held = S(2) * e * u0 * u0 / (g * (S(1) - e)) * ((S(1) - eK) / (S(1) - e) - e * (S(1) - e2K) / (S(1) - e * e));
-  const S tail = S(2) * e * u0 * eK / (g * (S(1) - e));
-  const S friction_total = stops ? needed : grip * u0 / (S(1) - e);
-  series.way -= (grip * held + (stops ? needed * tail : S(0))) * along;
-  applyFriction(series.end, along, friction_total, radius);
+  if (slip_speed > 0 && grip > 0 && u0 > 0)
+  {
+    const Vec3<S> along = slip / slip_speed;
+    // Impacts before K take their whole friction; K stops the slip (it needs 2/7 of it in all).
+    const S needed = S(2) / S(7) * slip_speed;
+    const int stop = impactThatStops(needed, grip * u0, e);
+    series.slip_stopped_at = stop;
+    const bool stops = stop >= 0;
+    const S eK = stops ? std::pow(e, S(stop)) : S(0);  // e^K, K the impacts at full friction
+    const S e2K = eK * eK;
+    // Flight k follows impact k with horizontal velocity v_in - grip S_k along (S_k = sum_{j<=k} U_j)
+    // for k < K, then v_in - needed along: the way less v_in's part is
+    //   grip sum_{k<K} S_k T_k + needed sum_{k>=K} T_k, T_k = 2 e U_0 e^k / g,
+    // with sum_{k<K} S_k T_k = 2 e U_0^2 / (g (1-e)) ((1-e^K)/(1-e) - e (1-e^2K)/(1-e^2)).
+    const S held =
+        S(2) * e * u0 * u0 / (g * (S(1) - e)) * ((S(1) - eK) / (S(1) - e) - e * (S(1) - e2K) / (S(1) - e * e));
+    const S tail = S(2) * e * u0 * eK / (g * (S(1) - e));
+    way -= (grip * held + (stops ? needed * tail : S(0))) * along;
+    applyFriction(end, along, stops ? needed : grip * u0 / (S(1) - e), radius);
+  }
+  end.time = in.time + flights;
+  end.r = in.r + way;
+  settleMotion(end, radius);  // on the cloth: z = R, v_z = 0, the motion its v and w imply
   return series;
 }
 
 #define CUE_SIM_INSTANTIATE_SLATE_BOUNCE(S)                                                                            \
-  template BallMotion<S> slateImpact(const BallMotion<S>&, const SlateContact<S>&, S);                                 \
-  template BounceSeries<S> bounceSeries(const BallMotion<S>&, const SlateContact<S>&, S, S);
+  template Ball<S> slateImpact(const Ball<S>&, const SlateContact<S>&, S);                                             \
+  template BounceSeries<S> bounceSeries(const Ball<S>&, const SlateContact<S>&, S, S);
 CUE_SIM_INSTANTIATE_SLATE_BOUNCE(double)
 CUE_SIM_INSTANTIATE_SLATE_BOUNCE(long double)
 

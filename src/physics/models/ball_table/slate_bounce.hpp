@@ -25,7 +25,7 @@
 // Nothing here is approximate: the sums are exact for the impact law above.
 #pragma once
 
-#include "cue_sim/physics/types.hpp"
+#include "cue_sim/physics/ball.hpp"
 
 namespace cue_sim
 {
@@ -39,32 +39,24 @@ struct SlateContact
   S friction = S(0.2);
 };
 
-/// A ball's motion at an instant: velocity [m/s] and angular velocity [rad/s].
+/// The ball just after one impact on the slate: only its v and w change. `in` must be coming down
+/// (v.z < 0), or it is returned as it is.
 template <typename S>
-struct BallMotion
-{
-  Vec3<S> v = Vec3<S>::Zero();
-  Vec3<S> w = Vec3<S>::Zero();
-};
+Ball<S> slateImpact(const Ball<S>& in, const SlateContact<S>& contact, S radius);
 
-/// The ball just after one impact on the slate; `in` must be coming down (v.z < 0), or it is
-/// returned as it is.
-template <typename S>
-BallMotion<S> slateImpact(const BallMotion<S>& in, const SlateContact<S>& contact, S radius);
-
-/// The whole bounce sequence after a first impact met with `in` (v.z < 0).
+/// The whole bounce sequence after a first impact met with `in` (v.z < 0, at the slate).
 template <typename S>
 struct BounceSeries
 {
-  S duration = S(0);              ///< from the first impact to the ball's rest on the cloth [s]
-  Vec3<S> way = Vec3<S>::Zero();  ///< the centre's horizontal travel meanwhile [m] (z = 0)
-  BallMotion<S> end;              ///< on the cloth at the end: v.z = 0
-  int slip_stopped_at = -1;       ///< the impact (0 the first) whose friction stopped the slip; -1 none
-  S first_rebound = S(0);         ///< the centre's rise after the first impact [m]
+  /// On the cloth when the bounces end: its time, its centre moved by every flight's way, its
+  /// motion settled (sliding, rolling, spinning or at rest).
+  Ball<S> end;
+  int slip_stopped_at = -1;  ///< the impact (0 the first) whose friction stopped the slip; -1 none
+  S first_rebound = S(0);    ///< the centre's rise after the first impact [m]
 };
 
 template <typename S>
-BounceSeries<S> bounceSeries(const BallMotion<S>& in, const SlateContact<S>& contact, S radius, S gravity);
+BounceSeries<S> bounceSeries(const Ball<S>& in, const SlateContact<S>& contact, S radius, S gravity);
 
 }  // namespace physics
 }  // namespace cue_sim
