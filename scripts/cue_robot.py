@@ -7,8 +7,9 @@ node's ~strike_cue reads a pose), and drives the gantry there: it lifts the cue,
 table, lowers it behind the ball, and strokes: a uniform acceleration to the speed at the touch,
 then a follow-through that slows to a stop. It publishes joint_states at ~rate all the while
 (robot_state_publisher turns them into tf, the table node follows the frame cue_tip), and, once
-the cue is lifted clear again, answers with what the table reported of the touch (~cue_contacts). ~joint_noise adds Gaussian noise of
-that standard deviation [m or rad] to every joint position published, as an encoder's would be;
+the cue is lifted clear again, answers with what the table reported of the touch (~cue_contacts).
+~joint_noise adds Gaussian noise of that standard deviation [m or rad] to every joint position
+published, as an encoder's would be;
 ~settle [s] is how long the cue rests behind the ball before it strokes.
 
   rosrun cue_sim cue_robot.py _rate:=1000
