@@ -19,6 +19,7 @@ enum class Motion : std::uint8_t
   Sliding = 2,   ///< the contact point slips on the cloth
   Rolling = 3,   ///< no slip: w_xy = (z x v) / R
   Pocketed = 4,  ///< out of play
+  Airborne = 5,  ///< off the cloth: in flight under gravity (src/physics/models/flight.hpp)
 };
 
 const char* motionName(Motion motion);
@@ -40,13 +41,18 @@ struct Ball
   Motion motion = Motion::Stationary;
   S time = S(0);                ///< time [s] that r, v, w refer to
   Vec3<S> r = Vec3<S>::Zero();  ///< centre in the table frame [m]; z = R on the cloth
-  Vec3<S> v = Vec3<S>::Zero();  ///< velocity [m/s]; z = 0
+  Vec3<S> v = Vec3<S>::Zero();  ///< velocity [m/s]; z = 0 on the cloth
   Vec3<S> w = Vec3<S>::Zero();  ///< angular velocity [rad/s]
   int pocket = -1;              ///< index into TableModel::pockets when pocketed
 
   bool inPlay() const { return motion != Motion::Pocketed; }
-  bool moving() const { return motion == Motion::Sliding || motion == Motion::Rolling || motion == Motion::Spinning; }
-  bool translating() const { return motion == Motion::Sliding || motion == Motion::Rolling; }
+  bool moving() const { return translating() || motion == Motion::Spinning; }
+  /// Its centre moves (a ball in the air counts, even one dropped straight down).
+  bool translating() const
+  {
+    return motion == Motion::Sliding || motion == Motion::Rolling || motion == Motion::Airborne;
+  }
+  bool airborne() const { return motion == Motion::Airborne; }
 };
 
 }  // namespace physics

@@ -14,7 +14,8 @@ namespace cue_sim
 namespace physics
 {
 /// Resolves a ball-ball impact. Both balls are at the contact time, touching, with the line of
-/// centres from a to b. Changes v and w of both; the engine then settles their motion states.
+/// centres from a to b (in three dimensions when one is in the air). Changes v and w of both; the
+/// engine then settles their motion states.
 template <typename S>
 class BallBallModel
 {
@@ -22,6 +23,9 @@ public:
   using Scalar = S;
   virtual ~BallBallModel() = default;
   virtual void resolve(Ball<S>& a, Ball<S>& b, const PhysicsParams<S>& p) const = 0;
+  /// True for a model that needs both balls on the cloth (its friction under each): a pair with a
+  /// ball in the air then meets by the default model instead (Engine::ballBallModelInAir).
+  virtual bool needsCloth() const { return false; }
 };
 
 /// Resolves a ball-cushion impact. `normal` is the unit xy normal of the contact, pointing from
@@ -35,10 +39,23 @@ public:
   virtual void resolve(Ball<S>& ball, const Vec3<S>& normal, const PhysicsParams<S>& p) const = 0;
 };
 
+/// Resolves one impact of a ball coming down onto the slate: the ball is at it (z = R) with
+/// v.z < 0, and leaves with `restitution` times its normal speed (the engine passes e_table, or 0
+/// for the impact that ends a bounce sequence: doc/physics.md). Changes v and w; the engine then
+/// settles its motion state.
+template <typename S>
+class BallTableModel
+{
+public:
+  using Scalar = S;
+  virtual ~BallTableModel() = default;
+  virtual void resolve(Ball<S>& ball, S restitution, const PhysicsParams<S>& p) const = 0;
+};
+
 /// One contact model as include/cue_sim/physics/contact_models.def declares it.
 struct ModelInfo
 {
-  const char* kind;          ///< "ball_ball" or "cushion"
+  const char* kind;          ///< "ball_ball", "cushion" or "ball_table"
   const char* name;          ///< the name physics.yaml, scene files and ~cushion_model take
   const char* summary;       ///< what it does, in a line
   const char* coefficients;  ///< the PhysicsParams it reads, space-separated
@@ -48,25 +65,30 @@ struct ModelInfo
 /// Every contact model, in declaration order; the first of each kind is the default.
 const std::vector<ModelInfo>& contactModels();
 
-/// Which model to use for each contact kind, by name (see ballBallModelNames() and
-/// cushionModelNames()). Default-constructed: the default of each kind.
+/// Which model to use for each contact kind, by name (see ballBallModelNames(),
+/// cushionModelNames() and ballTableModelNames()). Default-constructed: the default of each kind.
 struct ModelChoice
 {
   ModelChoice();
   ModelChoice(std::string ball_ball_model, std::string cushion_model);
+  ModelChoice(std::string ball_ball_model, std::string cushion_model, std::string ball_table_model);
   std::string ball_ball;
   std::string cushion;
+  std::string ball_table;
 };
 
 /// The names accepted for each kind, the default first.
 std::vector<std::string> ballBallModelNames();
 std::vector<std::string> cushionModelNames();
+std::vector<std::string> ballTableModelNames();
 
 /// Throws std::invalid_argument naming the unknown model and the known ones.
 template <typename S>
 std::unique_ptr<BallBallModel<S>> makeBallBallModel(const std::string& name);
 template <typename S>
 std::unique_ptr<CushionModel<S>> makeCushionModel(const std::string& name);
+template <typename S>
+std::unique_ptr<BallTableModel<S>> makeBallTableModel(const std::string& name);
 
 }  // namespace physics
 }  // namespace cue_sim

@@ -80,6 +80,10 @@ public:
   const EngineLimits& limits() const { return limits_; }
   const BallBallModel<S>& ballBallModel() const { return *ball_ball_; }
   const CushionModel<S>& cushionModel() const { return *cushion_; }
+  const BallTableModel<S>& ballTableModel() const { return *ball_table_; }
+  /// The model for a pair with a ball in the air: the chosen one, unless it needs the cloth under
+  /// both balls (BallBallModel::needsCloth), then the default ball-ball model.
+  const BallBallModel<S>& ballBallModelInAir() const { return ball_ball_in_air_ ? *ball_ball_in_air_ : *ball_ball_; }
 
   /// A ball of the state at time t (>= the state's last event): pure, closed form.
   Ball<S> ballAt(const TableState<S>& state, std::size_t index, S t) const;
@@ -109,6 +113,8 @@ private:
   EngineLimits limits_;
   std::unique_ptr<BallBallModel<S>> ball_ball_;
   std::unique_ptr<CushionModel<S>> cushion_;
+  std::unique_ptr<BallTableModel<S>> ball_table_;
+  std::unique_ptr<BallBallModel<S>> ball_ball_in_air_;  ///< null when ball_ball_ serves
   std::shared_ptr<const TableGeometry<S>> geometry_;
 };
 

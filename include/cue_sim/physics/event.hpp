@@ -21,6 +21,7 @@ enum class EventKind : int
   BallCushion = 11,  ///< `ball` hit straight cushion `obstacle`
   BallCircle = 12,   ///< `ball` hit circular cushion `obstacle` (jaw or cushion end)
   Pocketed = 13,     ///< `ball` dropped into pocket `obstacle`
+  BallSlate = 14,    ///< `ball` came down onto the slate from the air (it bounces, or stays on the cloth)
 };
 
 const char* eventKindName(EventKind kind);

@@ -47,6 +47,9 @@ void EventResolver<S>::resolve(const Event<S>& event)
     case EventKind::Pocketed:
       pocketBall(ball, event.obstacle);
       break;
+    case EventKind::BallSlate:
+      landOnSlate(ball);
+      break;
     default:
       applyTransition(ball, params_);
       break;
@@ -63,6 +66,11 @@ void EventResolver<S>::resolveBallBall(const Event<S>& event)
   // A pressed pair is joined (with its cluster, held by any wall it touches); any other contact
   // is an impact of the touching group. An event must change something, or it is found again
   // at the same instant forever.
+  if (ball.airborne() || other.airborne())
+  {
+    resolveAirbornePair(ball, other);
+    return;
+  }
   const Vec3<S> ball_before = ball.v, other_before = other.v;
   if (inSustainedContact(ball, other))
     joinPressedCluster(event.time, context_.index, context_.other_index);
@@ -82,6 +90,42 @@ void EventResolver<S>::resolveBallBall(const Event<S>& event)
   }
   settleMotion(ball, params_.ball_radius);
   settleMotion(other, params_.ball_radius);
+}
+
+template <typename S>
+void EventResolver<S>::resolveAirbornePair(Ball<S>& a, Ball<S>& b)
+{
+  const Vec3<S> a_before = a.v, b_before = b.v;
+  engine_.ballBallModelInAir().resolve(a, b, params_);
+  if (a.v == a_before && b.v == b_before)
+  {
+    // Found closing by the gap polynomial but not by the model: parted by a few ulps of speed.
+    const Vec3<S> n = (b.r - a.r).normalized();
+    const S part = roundingSpeed((a.v - b.v).norm());
+    a.v -= S(0.5) * part * n;
+    b.v += S(0.5) * part * n;
+  }
+  for (Ball<S>* ball : {&a, &b})
+  {
+    if (ball->r.z() - params_.ball_radius <= onClothHeight(params_.ball_radius) && ball->v.z() < S(0))
+      landOnSlate(*ball);
+    else
+      settleMotion(*ball, params_.ball_radius);
+  }
+}
+
+template <typename S>
+void EventResolver<S>::landOnSlate(Ball<S>& ball) const
+{
+  const S R = params_.ball_radius;
+  ball.r.z() = R;
+  const S incoming = -ball.v.z();
+  if (incoming > S(0))
+  {
+    const S rebound = params_.e_table * incoming;
+    engine_.ballTableModel().resolve(ball, rebound < S(kSettleSpeed) ? S(0) : params_.e_table, params_);
+  }
+  settleMotion(ball, R);
 }
 
 template <typename S>

@@ -20,11 +20,14 @@ Engine<S>::Engine(std::shared_ptr<const TableModel> table, const PhysicsParams<S
     model_choice_(models),
     limits_(limits),
     ball_ball_(makeBallBallModel<S>(models.ball_ball)),
-    cushion_(makeCushionModel<S>(models.cushion))
+    cushion_(makeCushionModel<S>(models.cushion)),
+    ball_table_(makeBallTableModel<S>(models.ball_table))
 {
   const std::string why = params_.validate();
   if (!why.empty())
     throw std::invalid_argument("physics parameter " + why);
+  if (ball_ball_->needsCloth())
+    ball_ball_in_air_ = makeBallBallModel<S>(ballBallModelNames().front());
   geometry_ = std::make_shared<const TableGeometry<S>>(*table_, params_.ball_radius);
 }
 
@@ -94,7 +97,12 @@ std::string whyBallInvalid(const TableModel& table, const Ball<S>& b, S R, doubl
         << BallLimits::max_speed << " m/s and " << BallLimits::max_spin << " rad/s";
     return why.str();
   }
-  if (std::abs(static_cast<double>(b.r.z() - R)) > tolerance)
+  if (b.airborne())
+  {
+    if (static_cast<double>(b.r.z() - R) < -tolerance)
+      return label + ": a ball in the air has z >= R = " + std::to_string(static_cast<double>(R)) + " m";
+  }
+  else if (std::abs(static_cast<double>(b.r.z() - R)) > tolerance)
     return label + ": a ball on the cloth has z = R = " + std::to_string(static_cast<double>(R)) + " m";
   const std::string where =
       table.whyNotPlaceable(b.r.template head<2>().template cast<double>(), static_cast<double>(R), tolerance);

@@ -30,6 +30,8 @@ const char* eventKindName(EventKind kind)
       return "ball_circle";
     case EventKind::Pocketed:
       return "pocketed";
+    case EventKind::BallSlate:
+      return "ball_slate";
   }
   return "unknown";
 }

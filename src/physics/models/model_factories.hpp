@@ -14,6 +14,8 @@ template <typename S>
 using ModelBase_ball_ball = BallBallModel<S>;
 template <typename S>
 using ModelBase_cushion = CushionModel<S>;
+template <typename S>
+using ModelBase_ball_table = BallTableModel<S>;
 
 #define CUE_SIM_MODEL(kind, name, ...)                                                                                 \
   template <typename S>                                                                                                \

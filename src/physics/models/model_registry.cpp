@@ -49,10 +49,25 @@ std::vector<std::string> cushionModelNames()
   return namesOf("cushion");
 }
 
-ModelChoice::ModelChoice() : ball_ball(ballBallModelNames().front()), cushion(cushionModelNames().front()) {}
+std::vector<std::string> ballTableModelNames()
+{
+  return namesOf("ball_table");
+}
+
+ModelChoice::ModelChoice()
+  : ball_ball(ballBallModelNames().front()),
+    cushion(cushionModelNames().front()),
+    ball_table(ballTableModelNames().front())
+{
+}
 
 ModelChoice::ModelChoice(std::string ball_ball_model, std::string cushion_model)
-  : ball_ball(std::move(ball_ball_model)), cushion(std::move(cushion_model))
+  : ModelChoice(std::move(ball_ball_model), std::move(cushion_model), ballTableModelNames().front())
+{
+}
+
+ModelChoice::ModelChoice(std::string ball_ball_model, std::string cushion_model, std::string ball_table_model)
+  : ball_ball(std::move(ball_ball_model)), cushion(std::move(cushion_model)), ball_table(std::move(ball_table_model))
 {
 }
 
@@ -97,10 +112,20 @@ std::unique_ptr<CushionModel<S>> makeCushionModel(const std::string& name)
   throw std::invalid_argument("unknown cushion model '" + name + "' (known: " + joined(cushionModelNames()) + ")");
 }
 
+template <typename S>
+std::unique_ptr<BallTableModel<S>> makeBallTableModel(const std::string& name)
+{
+  if (auto model = madeByName<BallTableModel<S>>("ball_table", name))
+    return model;
+  throw std::invalid_argument("unknown ball-table model '" + name + "' (known: " + joined(ballTableModelNames()) + ")");
+}
+
 template std::unique_ptr<BallBallModel<double>> makeBallBallModel(const std::string&);
 template std::unique_ptr<BallBallModel<long double>> makeBallBallModel(const std::string&);
 template std::unique_ptr<CushionModel<double>> makeCushionModel(const std::string&);
 template std::unique_ptr<CushionModel<long double>> makeCushionModel(const std::string&);
+template std::unique_ptr<BallTableModel<double>> makeBallTableModel(const std::string&);
+template std::unique_ptr<BallTableModel<long double>> makeBallTableModel(const std::string&);
 
 }  // namespace physics
 }  // namespace cue_sim

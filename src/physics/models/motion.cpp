@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/models/flight.hpp"
+
 namespace cue_sim
 {
 namespace physics
@@ -21,6 +23,8 @@ const char* motionName(Motion motion)
       return "rolling";
     case Motion::Pocketed:
       return "pocketed";
+    case Motion::Airborne:
+      return "airborne";
   }
   return "unknown";
 }
@@ -49,6 +53,11 @@ void settleMotion(Ball<S>& ball, S radius)
 {
   if (!ball.inPlay())
     return;
+  if (ball.r.z() - radius > onClothHeight(radius) || ball.v.z() > zeroSpeed<S>())
+  {
+    ball.motion = Motion::Airborne;
+    return;
+  }
   ball.v.z() = S(0);
   ball.r.z() = radius;
   ball.motion = classifyMotion(ball.v, ball.w, radius);
@@ -89,6 +98,8 @@ S timeToTransition(const Ball<S>& ball, const PhysicsParams<S>& p)
       rate = p.spinDecel();
       amount = std::abs(ball.w.z());
       break;
+    case Motion::Airborne:
+      return timeToHeight(ball.r.z(), ball.v.z(), p.ball_radius, p.gravity);
     default:
       return infinity<S>();
   }
@@ -119,6 +130,13 @@ Ball<S> evolve(const Ball<S>& ball, S t, const PhysicsParams<S>& p)
   const S dt = std::min(t - ball.time, timeToTransition(ball, p));
   const S R = p.ball_radius;
   out.time = t;
+  if (ball.motion == Motion::Airborne)
+  {
+    // In the air the spin is carried unchanged (no drag: flight.hpp says why).
+    out.r = flightPosition(ball.r, ball.v, dt, p.gravity);
+    out.v = flightVelocity(ball.v, dt, p.gravity);
+    return out;
+  }
   out.w.z() = decayedSpin(ball.w.z(), dt, p);
   if (ball.motion == Motion::Sliding)
   {
@@ -160,6 +178,13 @@ Trajectory<S> trajectoryFrom(const Ball<S>& ball, S t_base, const PhysicsParams<
   {
     traj.c1 = now.v.template head<2>();
     traj.c2 = S(-0.5) * p.rollDecel() * traj.c1.normalized();
+  }
+  else if (now.motion == Motion::Airborne)
+  {
+    traj.c1 = now.v.template head<2>();
+    traj.h0 = now.r.z() - p.ball_radius;
+    traj.h1 = now.v.z();
+    traj.h2 = S(-0.5) * p.gravity;
   }
   return traj;
 }
@@ -204,6 +229,8 @@ EventKind applyTransition(Ball<S>& ball, const PhysicsParams<S>& p)
       ball.w.setZero();
       ball.motion = Motion::Stationary;
       return EventKind::SpinToStop;
+    case Motion::Airborne:
+      return EventKind::BallSlate;  // the engine's ball-table model resolves it
     default:
       return EventKind::None;
   }

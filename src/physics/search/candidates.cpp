@@ -28,6 +28,9 @@ Trajectory<S> shifted(const Trajectory<S>& path, S delta)
   out.c0 = path.at(delta);
   out.c1 = path.velocityAt(delta);
   out.c2 = path.c2;
+  out.h0 = path.heightAt(delta);
+  out.h1 = path.h1 + S(2) * delta * path.h2;
+  out.h2 = path.h2;
   return out;
 }
 
@@ -201,6 +204,13 @@ PairMotion<S> PairMotion<S>::of(const BallRecords<S>& records, int i, int j)
   m.c0 = pi.c0 - pj.c0;
   m.c1 = pi.c1 - pj.c1;
   m.c2 = pi.c2 - pj.c2;
+  m.airborne = ri.airborne || rj.airborne;
+  if (m.airborne)
+  {
+    m.h0 = pi.h0 - pj.h0;
+    m.h1 = pi.h1 - pj.h1;
+    m.h2 = pi.h2 - pj.h2;
+  }
   m.limit = horizon(std::min(ri.first.time, rj.first.time), m.base);
   return m;
 }
@@ -218,6 +228,7 @@ void CandidateFinder<S>::restingPath(const Ball<S>& ball, int index, BallRecord<
   record.window = infinity<S>();
   record.in_play = true;
   record.translating = false;
+  record.airborne = false;
   record.low = record.path.c0 - Vec2<S>::Constant(margin_);
   record.high = record.path.c0 + Vec2<S>::Constant(margin_);
 }
@@ -275,6 +286,7 @@ void CandidateFinder<S>::computeOwnEvent(const Ball<S>& ball, int index, BallRec
   record.time = ball.time;
   record.in_play = ball.inPlay();
   record.translating = ball.translating();
+  record.airborne = ball.airborne();
   Candidate<S>& first = record.first;
   first = Candidate<S>();
   first.ball = index;
@@ -327,8 +339,10 @@ bool CandidateFinder<S>::solvePair(const PairMotion<S>& motion, Candidate<S>& pa
 {
   // Solved over the whole horizon, so the result never depends on the windows.
   const S R = params_.ball_radius;
-  const S tau = contactTime(distanceGap<S>(motion.c0, motion.c1, motion.c2, S(2) * R), motion.limit,
-                            -S(4) * R * zeroSpeed<S>(), touchTolerance(S(4) * R * R), true);
+  const Poly4<S> gap = motion.airborne
+                           ? distanceGap<S>(motion.c0, motion.c1, motion.c2, motion.h0, motion.h1, motion.h2, S(2) * R)
+                           : distanceGap<S>(motion.c0, motion.c1, motion.c2, S(2) * R);
+  const S tau = contactTime(gap, motion.limit, -S(4) * R * zeroSpeed<S>(), touchTolerance(S(4) * R * R), true);
   if (!(tau <= motion.limit))
     return false;
   pair.time = motion.base + tau;

@@ -70,7 +70,7 @@ struct alignas(64) BallRecord
   /// The ball's earliest event of its own (transition, cushion, jaw, pocket): the ball
   /// changes then, so nothing of it later than this needs finding yet.
   Candidate<S> first;
-  bool in_play, translating;
+  bool in_play, translating, airborne;
 };
 
 template <typename S>
@@ -83,6 +83,9 @@ struct PairMotion
 {
   S base;
   Vec2<S> c0, c1, c2;  ///< relative position c0 + c1 tau + c2 tau^2, tau from base
+  /// Relative height h0 + h1 tau + h2 tau^2: all zero unless a ball is in the air.
+  S h0 = S(0), h1 = S(0), h2 = S(0);
+  bool airborne = false;
   /// Nothing later than either ball's own next event needs finding: that event changes it.
   S limit;
 

@@ -60,8 +60,23 @@ Poly4<S> distanceGap(const Vec2<S>& c0, const Vec2<S>& c1, const Vec2<S>& c2, S 
           c2.squaredNorm()};
 }
 
+/// |d(tau)|^2 + h(tau)^2 - reach^2 for a relative position with a height part too,
+/// h(tau) = h0 + h1 tau + h2 tau^2 (a ball in the air).
+template <typename S>
+Poly4<S> distanceGap(const Vec2<S>& c0, const Vec2<S>& c1, const Vec2<S>& c2, S h0, S h1, S h2, S reach)
+{
+  Poly4<S> gap = distanceGap<S>(c0, c1, c2, reach);
+  gap[0] += h0 * h0;
+  gap[1] += S(2) * h0 * h1;
+  gap[2] += h1 * h1 + S(2) * h0 * h2;
+  gap[3] += S(2) * h1 * h2;
+  gap[4] += h2 * h2;
+  return gap;
+}
+
 /// True if two bodies whose relative position is d(tau) = c0 + c1 tau + c2 tau^2 cannot come
-/// within `reach` for tau in [0, limit]: a cheap bound, so that pairs that pass wide or part
+/// within `reach` for tau in [0, limit] (in the plane, and so in space whatever their heights): a
+/// cheap bound, so that pairs that pass wide or part
 /// never reach the quartic solver. The straight part c0 + c1 tau comes no closer than its
 /// closest approach within the interval, and the curved part adds at most |c2| limit^2. When
 /// only that curved part keeps the bound from holding, the interval is halved (each half

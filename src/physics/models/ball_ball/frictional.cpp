@@ -20,9 +20,8 @@ class FrictionalBallBall : public BallBallModel<S>
 public:
   void resolve(Ball<S>& a, Ball<S>& b, const PhysicsParams<S>& p) const override
   {
-    Vec3<S> n = b.r - a.r;
-    n.z() = S(0);
-    n.normalize();
+    // Horizontal for balls on the cloth (both centres at z = R), tilted when one is in the air.
+    const Vec3<S> n = (b.r - a.r).normalized();
     const S approach = (a.v - b.v).dot(n);
     if (!(approach > S(0)))
       return;
@@ -43,9 +42,13 @@ public:
     const Vec3<S> spin_change = (R * n).cross(impulse) / inertia;
     a.w += spin_change;
     b.w += spin_change;
-    // Vertical friction on the balls goes into the cloth: they stay on it.
-    a.v.z() = S(0);
-    b.v.z() = S(0);
+    // Vertical friction on balls on the cloth goes into it: they stay on it. (With a ball in the
+    // air, the engine lands any ball driven into the slate, and one driven up leaves the cloth.)
+    if (!a.airborne() && !b.airborne())
+    {
+      a.v.z() = S(0);
+      b.v.z() = S(0);
+    }
   }
 };
 }  // namespace

@@ -14,9 +14,8 @@ class FrictionlessBallBall : public BallBallModel<S>
 public:
   void resolve(Ball<S>& a, Ball<S>& b, const PhysicsParams<S>& p) const override
   {
-    Vec3<S> n = b.r - a.r;
-    n.z() = S(0);
-    n.normalize();
+    // Horizontal for balls on the cloth (both centres at z = R), tilted when one is in the air.
+    const Vec3<S> n = (b.r - a.r).normalized();
     const S approach = (a.v - b.v).dot(n);  // > 0 while closing
     if (!(approach > S(0)))
       return;

@@ -25,6 +25,7 @@ template <typename S>
 class MathavanBallBall : public BallBallModel<S>
 {
 public:
+  bool needsCloth() const override { return true; }
   void resolve(Ball<S>& a, Ball<S>& b, const PhysicsParams<S>& p) const override
   {
     Vec3<S> n = b.r - a.r;

@@ -1,0 +1,370 @@
+// Balls off the cloth in the engine (issue 33): flight, landings on the slate and the bounces
+// that follow, and balls meeting in three dimensions, checked against the closed forms
+// (PHYSICS.md, balls off the cloth), the exact bounce series (slate_bounce.hpp), and the
+// invariants: energy with its potential part never gained, no overlap in space, no ball below
+// the slate, the kept search equal to a full scan bit for bit, and long double agreeing.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "cue_sim/physics/motion.hpp"
+#include "cue_sim/physics/scan.hpp"
+#include "cue_sim/physics/simulation.hpp"
+#include "physics/contacts/event_resolver.hpp"
+#include "physics/models/ball_table/slate_bounce.hpp"
+
+using namespace cue_sim::physics;
+
+namespace
+{
+std::shared_ptr<const TableModel> sevenFoot()
+{
+  return std::make_shared<const TableModel>(TableModel::pool("7ft", 1.9812, 0.9906, 0.118, 0.137));
+}
+
+template <typename S = double>
+Ball<S> inTheAir(int id, S x, S y, S height, const Vec3<S>& v = Vec3<S>::Zero(), const Vec3<S>& w = Vec3<S>::Zero())
+{
+  const PhysicsParams<S> p;
+  Ball<S> b;
+  b.id = id;
+  b.r = Vec3<S>(x, y, p.ball_radius + height);
+  b.v = v;
+  b.w = w;
+  settleMotion(b, p.ball_radius);
+  return b;
+}
+
+/// Kinetic energy and the potential of the centre's height above the cloth [J].
+double mechanicalEnergy(const Ball<double>& b, const PhysicsParams<double>& p)
+{
+  return kineticEnergy(b, p) + p.ball_mass * p.gravity * (b.r.z() - p.ball_radius);
+}
+
+/// The shot run event by event with a full scan, every invariant checked at each event and at
+/// `samples` times between: returns the events.
+std::vector<Event<double>> runChecked(const Engine<double>& engine, TableState<double> s, int samples = 8)
+{
+  const PhysicsParams<double>& p = engine.params();
+  const double R = p.ball_radius;
+  const auto energy = [&](double t) {
+    double e = 0;
+    for (std::size_t i = 0; i < s.balls.size(); ++i)
+      if (s.balls[i].inPlay())
+        e += mechanicalEnergy(engine.ballAt(s, i, t), p);
+    return e;
+  };
+  const auto check = [&](double t) {
+    for (std::size_t i = 0; i < s.balls.size(); ++i)
+    {
+      if (!s.balls[i].inPlay())
+        continue;
+      const Ball<double> a = engine.ballAt(s, i, t);
+      EXPECT_TRUE(isFinite(a.r) && isFinite(a.v) && isFinite(a.w)) << "ball " << a.id << " at " << t;
+      EXPECT_GE(a.r.z(), R - 1e-12) << "ball " << a.id << " below the slate at t = " << t;
+      for (std::size_t j = i + 1; j < s.balls.size(); ++j)
+        if (s.balls[j].inPlay())
+          EXPECT_GE((a.r - engine.ballAt(s, j, t).r).norm(), 2 * R - 1e-9)
+              << "balls " << a.id << " and " << s.balls[j].id << " overlap at t = " << t;
+    }
+  };
+  std::vector<Event<double>> events;
+  double last_time = s.time, last_energy = energy(s.time);
+  for (int n = 0; n < 20000; ++n)
+  {
+    const Event<double> next = scanNextEvent(engine, s);
+    if (!next.valid())
+      break;
+    for (int k = 1; k < samples; ++k)
+    {
+      const double t = last_time + (next.time - last_time) * k / samples;
+      check(t);
+      const double e = energy(t);
+      EXPECT_LE(e, last_energy * (1 + 1e-12) + 1e-15) << "energy gained at t = " << t;
+      last_energy = std::min(last_energy, e);
+    }
+    const double before = energy(next.time);
+    EXPECT_LE(before, last_energy * (1 + 1e-12) + 1e-15) << "energy gained by t = " << next.time;
+    events.push_back(scanStep(engine, s));
+    const double after = energy(next.time);
+    EXPECT_LE(after, before * (1 + 1e-12) + 1e-15)
+        << eventKindName(next.kind) << " of ball " << next.ball << " gained energy at t = " << next.time;
+    check(next.time);
+    last_time = next.time;
+    last_energy = after;
+  }
+  return events;
+}
+
+int countKind(const std::vector<Event<double>>& events, EventKind kind)
+{
+  int n = 0;
+  for (const auto& e : events)
+    n += e.kind == kind;
+  return n;
+}
+}  // namespace
+
+TEST(Airborne, ABallAboveTheClothIsInTheAirAndOneOnItStaysThere)
+{
+  const PhysicsParams<double> p;
+  EXPECT_EQ(inTheAir(0, 0.0, 0.0, 0.01).motion, Motion::Airborne);
+  EXPECT_EQ(inTheAir(0, 0.0, 0.0, 0.0, Vec3<double>(0, 0, 0.5)).motion, Motion::Airborne);  // leaving the cloth
+  Ball<double> rolling = inTheAir(0, 0.0, 0.0, 0.0, Vec3<double>(1, 0, 0), Vec3<double>(0, 1 / p.ball_radius, 0));
+  EXPECT_EQ(rolling.motion, Motion::Rolling);
+  EXPECT_EQ(rolling.r.z(), p.ball_radius);
+  EXPECT_STREQ(motionName(Motion::Airborne), "airborne");
+  EXPECT_STREQ(eventKindName(EventKind::BallSlate), "ball_slate");
+}
+
+TEST(Airborne, FlightIsTheParabolaWithTheSpinCarried)
+{
+  const PhysicsParams<double> p;
+  const Vec3<double> v0(1.5, -0.5, 2.0), w0(30, -20, 40);
+  Ball<double> b = inTheAir(0, 0.1, 0.2, 0.05, v0, w0);
+  const double t = 0.25;
+  ASSERT_LT(t, timeToTransition(b, p));
+  const Ball<double> later = evolve(b, t, p);
+  EXPECT_NEAR(later.r.x(), 0.1 + 1.5 * t, 1e-15);
+  EXPECT_NEAR(later.r.y(), 0.2 - 0.5 * t, 1e-15);
+  EXPECT_NEAR(later.r.z(), p.ball_radius + 0.05 + 2.0 * t - 0.5 * p.gravity * t * t, 1e-15);
+  EXPECT_NEAR(later.v.z(), 2.0 - p.gravity * t, 1e-15);
+  EXPECT_EQ(later.w, w0);  // no spin decay in the air
+  // It lands when the centre comes back to R: 0.05 + 2 t - g t^2 / 2 = 0.
+  const double landing = (2.0 + std::sqrt(4.0 + 2 * p.gravity * 0.05)) / p.gravity;
+  EXPECT_NEAR(timeToTransition(b, p), landing, 1e-15);
+  const Trajectory<double> path = trajectoryFrom(b, 0.0, p);
+  EXPECT_NEAR(path.heightAt(t), later.r.z() - p.ball_radius, 1e-15);
+  EXPECT_NEAR((path.at(t) - later.r.head<2>()).norm(), 0, 1e-15);
+}
+
+// PHYSICS.md: a ball dropped from rest bounces with heights falling by e^2 and the bounces,
+// after a first fall of t1, lasting 2 e t1 / (1 - e) in all; each impact gives back e^2 of the
+// energy it meets. The engine ends the sequence at the impact whose rebound is slower than
+// kSettleSpeed, so the landings are the series' first ones, at its times.
+TEST(Airborne, ADropBouncesAsTheTextbookSaysAndEndsAtRest)
+{
+  const auto table = sevenFoot();
+  for (const std::string model : {"frictional", "frictionless"})
+    for (double e : {0.0, 0.3, 0.5, 0.8})
+    {
+      PhysicsParams<double> p;
+      p.e_table = e;
+      const Engine<double> engine(table, p, ModelChoice("frictional", "han2005", model));
+      const double h = 0.2, g = p.gravity;
+      TableState<double> s;
+      s.balls.push_back(inTheAir(0, 0.3, -0.1, h));
+      const std::vector<Event<double>> events = runChecked(engine, s);
+      TableState<double> end = s;
+      const std::vector<Event<double>> recorded = simulateToRest(engine, end).events;  // with speeds
+      ASSERT_EQ(recorded.size(), events.size());
+      const double t1 = std::sqrt(2 * h / g), U = g * t1;
+      // The impacts whose rebound e^(k+1) U is at least kSettleSpeed, and the one after them.
+      int expected = 1;
+      while (std::pow(e, expected) * U >= kSettleSpeed)
+        ++expected;
+      ASSERT_EQ(static_cast<int>(events.size()), expected) << model << ", e = " << e;
+      for (int k = 0; k < expected; ++k)
+      {
+        ASSERT_EQ(events[k].kind, EventKind::BallSlate);
+        const double t_k = t1 + 2 * e * U / g * (1 - std::pow(e, k)) / (1 - e);
+        EXPECT_NEAR(events[k].time, t_k, 1e-12 * (1 + t_k)) << model << ", e = " << e << ", impact " << k;
+        // The rebound: e^(k+1) U up, or nothing at the last.
+        const double rebound = k + 1 < expected ? std::pow(e, k + 1) * U : 0.0;
+        EXPECT_NEAR(recorded[k].speed, rebound, 1e-12 * U) << "impact " << k;
+      }
+      // Heights fall by e^2: the apex after impact k is e^(2(k+1)) h.
+      for (int k = 0; k + 1 < std::min(expected, 4); ++k)
+      {
+        const double apex_time = (events[k].time + events[k + 1].time) / 2;
+        Simulation<double> sim(engine, s);
+        sim.advance(apex_time);
+        EXPECT_NEAR(engine.ballAt(sim.state(), 0, apex_time).r.z() - p.ball_radius, std::pow(e, 2 * (k + 1)) * h, 1e-12)
+            << "apex " << k;
+      }
+      // At rest on the cloth where it fell: nothing horizontal came in.
+      EXPECT_EQ(end.balls[0].motion, Motion::Stationary);
+      EXPECT_EQ(end.balls[0].r, Vec3<double>(0.3, -0.1, p.ball_radius));
+    }
+}
+
+// A ball landing with backspin and side: its slip is not stopped by the bounces, so the
+// engine's ball at the end of the exact bounce series has that series' velocity and spin
+// (kSettleSpeed's argument), and its centre is within the bound said there.
+TEST(Airborne, BouncesWithFrictionEndAsTheExactSeriesDoes)
+{
+  const auto table = sevenFoot();
+  const PhysicsParams<double> p;
+  const double R = p.ball_radius, g = p.gravity;
+  for (const double e : {0.3, 0.5, 0.7})
+  {
+    PhysicsParams<double> q = p;
+    q.e_table = e;
+    const Engine<double> eng(table, q);
+    TableState<double> s;
+    // Moving at 1 m/s with 300 rad/s of backspin (slip 9.6 m/s) and side: the slip outlasts the bounces.
+    s.balls.push_back(inTheAir(0, -0.5, 0.0, 0.05, Vec3<double>(1.0, 0.1, -0.5), Vec3<double>(10, -300, 20)));
+    const Ball<double> at_slate = evolve(s.balls[0], timeToTransition(s.balls[0], q), q);
+    Ball<double> in = at_slate;
+    in.r.z() = R;
+    const BounceSeries<double> series = bounceSeries(in, SlateContact<double>{e, q.mu_table}, R, g);
+    ASSERT_EQ(series.slip_stopped_at, -1);
+    ASSERT_EQ(series.end.motion, Motion::Sliding);
+    Simulation<double> sim(eng, s);
+    sim.advance(series.end.time);
+    const Ball<double> got = eng.ballAt(sim.state(), 0, series.end.time);
+    ASSERT_EQ(got.motion, Motion::Sliding) << "e = " << e;
+    EXPECT_NEAR((got.v - series.end.v).norm(), 0, 1e-12) << "e = " << e;
+    EXPECT_NEAR((got.w.head<2>() - series.end.w.head<2>()).norm(), 0, 1e-10) << "e = " << e;
+    // The exact series keeps the z-spin in the air; on the cloth it decays meanwhile.
+    const double last_rebound = kSettleSpeed;  // at most
+    const double bound = 2 * q.mu_table * last_rebound * last_rebound / (g * (1 - e));
+    EXPECT_LT((got.r - series.end.r).norm(), bound + 1e-12) << "e = " << e;
+  }
+}
+
+// A ball dropped onto the top of a resting ball, a little off its centre: they meet in space,
+// the lower one is driven into the slate and bounces, neither ever overlaps the other or goes
+// below the slate, and no energy is made (kinetic and potential).
+TEST(Airborne, ABallFallingOntoAnotherMeetsItInSpace)
+{
+  const auto table = sevenFoot();
+  for (const std::string bb : {"frictional", "frictionless", "mathavan2014"})
+  {
+    const Engine<double> engine(table, PhysicsParams<double>(), ModelChoice(bb, "han2005"));
+    const double R = engine.params().ball_radius;
+    TableState<double> s;
+    s.balls.push_back(inTheAir(0, 0.0, 0.0, 0.3, Vec3<double>(0.2, 0, 0)));
+    Ball<double> below;
+    below.id = 1;
+    below.r = Vec3<double>(0.06, 0.01, R);
+    s.balls.push_back(below);
+    const std::vector<Event<double>> events = runChecked(engine, s);
+    ASSERT_FALSE(events.empty()) << bb;
+    EXPECT_EQ(events.front().kind, EventKind::BallBall) << bb;
+    EXPECT_GT(countKind(events, EventKind::BallSlate), 1) << bb;
+    // The first contact is where the centres are 2R apart in space, the upper ball still in the air.
+    TableState<double> at = s;
+    Simulation<double> sim(engine, at);
+    sim.advance(events.front().time);
+    const auto& balls = sim.state().balls;
+    EXPECT_NEAR((balls[0].r - balls[1].r).norm(), 2 * R, 1e-9) << bb;
+    EXPECT_GT(balls[0].r.z(), balls[1].r.z() + R) << bb;
+  }
+}
+
+// Horizontal momentum: a ball thrown horizontally into a resting one at the height of its upper
+// half, with frictionless balls and slate, keeps the pair's horizontal momentum at the contact.
+TEST(Airborne, AFrictionlessMeetingInTheAirKeepsTheHorizontalMomentum)
+{
+  const auto table = sevenFoot();
+  const Engine<double> engine(table, PhysicsParams<double>(), ModelChoice("frictionless", "simple", "frictionless"));
+  const double R = engine.params().ball_radius;
+  TableState<double> s;
+  s.balls.push_back(inTheAir(0, -0.3, 0.0, 0.5 * R, Vec3<double>(3.0, 0.02, 0.3)));
+  Ball<double> resting;
+  resting.id = 1;
+  resting.r = Vec3<double>(0.0, 0.0, R);
+  s.balls.push_back(resting);
+  bool met = false;
+  for (int n = 0; n < 100 && !met; ++n)
+  {
+    const Event<double> next = scanNextEvent(engine, s);
+    ASSERT_TRUE(next.valid());
+    const Vec2<double> before = engine.ballAt(s, 0, next.time).v.head<2>() + engine.ballAt(s, 1, next.time).v.head<2>();
+    scanStep(engine, s);
+    if (next.kind != EventKind::BallBall)
+      continue;
+    met = true;
+    const Vec2<double> after = s.balls[0].v.head<2>() + s.balls[1].v.head<2>();
+    EXPECT_NEAR((after - before).norm(), 0, 1e-12);
+    EXPECT_GT(s.balls[1].v.x(), 0.5);  // driven on
+  }
+  EXPECT_TRUE(met);
+}
+
+// Two touching balls dropped side by side fall together: they never meet, and they land, bounce
+// and settle together.
+TEST(Airborne, TouchingBallsFallingTogetherDoNotMeet)
+{
+  const auto table = sevenFoot();
+  const Engine<double> engine(table, PhysicsParams<double>());
+  const double R = engine.params().ball_radius;
+  TableState<double> s;
+  s.balls.push_back(inTheAir(0, 0.0, 0.0, 0.1));
+  s.balls.push_back(inTheAir(1, 2 * R, 0.0, 0.1));
+  const std::vector<Event<double>> events = runChecked(engine, s);
+  EXPECT_EQ(countKind(events, EventKind::BallBall), 0);
+  EXPECT_EQ(countKind(events, EventKind::BallSlate), static_cast<int>(events.size()));
+  EXPECT_EQ(events.size() % 2, 0u);
+}
+
+// The kept search (Simulation) and a full scan find the same events bit for bit, and long double
+// agrees, on a scene with flights, landings, meetings in the air and cushions.
+TEST(Airborne, TheKeptSearchAndAFullScanAgreeAndLongDoubleAgrees)
+{
+  const auto table = sevenFoot();
+  const Engine<double> engine(table, PhysicsParams<double>());
+  const Engine<long double> reference(table, PhysicsParams<long double>());
+  const double R = engine.params().ball_radius;
+  TableState<double> s;
+  // Ball 0 comes down onto ball 1 about 0.24 s in, 4 cm above the cloth.
+  s.balls.push_back(inTheAir(0, -0.6, 0.0, 0.08, Vec3<double>(2.5, 0.05, 1.0), Vec3<double>(0, -60, 5)));
+  s.balls.push_back(inTheAir(1, 0.0, 0.01, 0.0, Vec3<double>(0, 0, 0)));
+  s.balls.push_back(inTheAir(2, 0.3, 0.0, 0.0, Vec3<double>(0, 0, 0)));
+  s.balls.push_back(inTheAir(3, 0.3 + 2 * R + 1e-4, 0.0, 0.0, Vec3<double>(0, 0, 0)));
+  s.balls.push_back(inTheAir(4, 0.5, -0.3, 0.2, Vec3<double>(-0.5, 1.5, 0.0)));
+  TableState<double> scanned = s;
+  std::vector<Event<double>> by_scan;
+  for (int n = 0; n < 5000; ++n)
+  {
+    const Event<double> e = scanStep(engine, scanned);
+    if (!e.valid())
+      break;
+    by_scan.push_back(e);
+  }
+  TableState<double> kept = s;
+  const ShotResult<double> run = simulateToRest(engine, kept);
+  ASSERT_EQ(run.events.size(), by_scan.size());
+  for (std::size_t i = 0; i < by_scan.size(); ++i)
+  {
+    EXPECT_EQ(run.events[i].kind, by_scan[i].kind) << "event " << i;
+    EXPECT_EQ(run.events[i].time, by_scan[i].time) << "event " << i;
+    EXPECT_EQ(run.events[i].ball, by_scan[i].ball) << "event " << i;
+  }
+  EXPECT_GT(countKind(by_scan, EventKind::BallSlate), 5);
+  EXPECT_GT(countKind(by_scan, EventKind::BallBall), 0);
+
+  TableState<long double> wide;
+  for (const auto& b : s.balls)
+  {
+    Ball<long double> c;
+    c.id = b.id;
+    c.motion = b.motion;
+    c.r = b.r.cast<long double>();
+    c.v = b.v.cast<long double>();
+    c.w = b.w.cast<long double>();
+    wide.balls.push_back(c);
+  }
+  const ShotResult<long double> wide_run = simulateToRest(reference, wide);
+  // Chaos grows differences over many events; the first dozen agree to rounding.
+  const std::size_t compared = std::min<std::size_t>(12, std::min(wide_run.events.size(), by_scan.size()));
+  for (std::size_t i = 0; i < compared; ++i)
+  {
+    EXPECT_EQ(wide_run.events[i].kind, by_scan[i].kind) << "event " << i;
+    EXPECT_NEAR(static_cast<double>(wide_run.events[i].time), by_scan[i].time, 1e-9) << "event " << i;
+  }
+}
+
+// A state with a ball in the air is valid; one below the slate is not.
+TEST(Airborne, TheEngineTakesABallInTheAirAndRefusesOneBelowTheSlate)
+{
+  const auto table = sevenFoot();
+  const Engine<double> engine(table, PhysicsParams<double>());
+  TableState<double> s;
+  s.balls.push_back(inTheAir(0, 0.0, 0.0, 0.1));
+  EXPECT_EQ(engine.whyInvalid(s), "");
+  s.balls[0].r.z() = engine.params().ball_radius - 1e-3;
+  EXPECT_NE(engine.whyInvalid(s).find("z >= R"), std::string::npos) << engine.whyInvalid(s);
+}
