@@ -4,11 +4,11 @@
 # with CUE_SIM_ROOT the repository, and CUE_SIM_URDF_DIRS and CUE_SIM_CONFIG_DIRS where tables and
 # calibrations are looked for at run time.
 
-# The physics core: no ROS. Each contact model is one file in models/ball_ball or models/cushion,
-# named as include/cue_sim/physics/contact_models.def declares it; the ball on the slate is in
-# models/ball_table.
+# The physics core: no ROS. Each contact model is one file in models/<kind> (ball_ball, cushion,
+# ball_table, cue), named as include/cue_sim/physics/contact_models.def declares it.
 file(GLOB CUE_SIM_CONTACT_MODELS CONFIGURE_DEPENDS ${CUE_SIM_ROOT}/src/physics/models/ball_ball/*.cpp
-  ${CUE_SIM_ROOT}/src/physics/models/cushion/*.cpp ${CUE_SIM_ROOT}/src/physics/models/ball_table/*.cpp)
+  ${CUE_SIM_ROOT}/src/physics/models/cushion/*.cpp ${CUE_SIM_ROOT}/src/physics/models/ball_table/*.cpp
+  ${CUE_SIM_ROOT}/src/physics/models/cue/*.cpp)
 add_library(cue_sim_physics
   # motion and collision models
   ${CUE_SIM_ROOT}/src/physics/models/event.cpp
@@ -16,7 +16,6 @@ add_library(cue_sim_physics
   ${CUE_SIM_ROOT}/src/physics/models/flight.cpp
   ${CUE_SIM_ROOT}/src/physics/models/orientation.cpp
   ${CUE_SIM_ROOT}/src/physics/models/physics_params.cpp
-  ${CUE_SIM_ROOT}/src/physics/models/cue_strike.cpp
   ${CUE_SIM_ROOT}/src/physics/models/model_registry.cpp
   ${CUE_SIM_ROOT}/src/physics/models/frictional_impact.cpp
   ${CUE_SIM_CONTACT_MODELS}

@@ -6,7 +6,7 @@ import rospy
 from cue_sim.msg import BallState, TableState
 
 MOTION = {BallState.STATIONARY: "stationary", BallState.SPINNING: "spinning", BallState.SLIDING: "sliding",
-          BallState.ROLLING: "rolling", BallState.POCKETED: "pocketed"}
+          BallState.ROLLING: "rolling", BallState.POCKETED: "pocketed", BallState.AIRBORNE: "airborne"}
 
 
 def main():
@@ -20,9 +20,9 @@ def main():
         t = (msg.header.stamp - start).to_sec()
         if t - last_report[0] >= 0.5:
             last_report[0] = t
-            moving = sum(1 for b in msg.balls if b.motion in (BallState.SLIDING, BallState.ROLLING))
+            moving = sum(1 for b in msg.balls if b.motion in (BallState.SLIDING, BallState.ROLLING, BallState.AIRBORNE))
             pocketed = [b.id for b in msg.balls if b.pocketed]
-            print(f"  t = {t:5.2f} s: {moving:2d} balls rolling or sliding, pocketed: {pocketed}", flush=True)
+            print(f"  t = {t:5.2f} s: {moving:2d} balls rolling, sliding or in the air, pocketed: {pocketed}", flush=True)
         if not msg.moving and t > 0.05:
             done[0] = msg
 

@@ -16,9 +16,9 @@ import numpy as np  # noqa: E402
 #: Event kinds by number (the `kind` column of Shot.events), as cue_sim/Event.msg numbers them.
 EVENT_KINDS: Dict[int, str] = {0: "slide_to_roll", 1: "roll_to_spin", 2: "roll_to_stop", 3: "spin_to_stop",
                                4: "slide_to_spin", 5: "slide_to_stop", 10: "ball_ball", 11: "ball_cushion",
-                               12: "ball_jaw", 13: "pocketed"}
+                               12: "ball_jaw", 13: "pocketed", 14: "ball_slate"}
 #: Ball motion states by number (State.motion), as cue_sim/BallState.msg numbers them.
-MOTION: Dict[int, str] = {0: "stationary", 1: "spinning", 2: "sliding", 3: "rolling", 4: "pocketed"}
+MOTION: Dict[int, str] = {0: "stationary", 1: "spinning", 2: "sliding", 3: "rolling", 4: "pocketed", 5: "airborne"}
 
 #: The dtype of Shot.events.
 EVENT_DTYPE = np.dtype([("time", "f8"), ("kind", "i4"), ("ball", "i4"), ("other", "i4"), ("obstacle", "U32")])
@@ -30,8 +30,10 @@ def tables() -> List[str]:
 
 
 def models() -> Dict[str, List[str]]:
-    """The contact models by kind, the default first: {"ball_ball": [...], "cushion": [...]}."""
-    return {"ball_ball": list(_core.ball_ball_models()), "cushion": list(_core.cushion_models())}
+    """The contact models by kind, the default first: {"ball_ball": [...], "cushion": [...],
+    "ball_table": [...], "cue": [...]}."""
+    return {"ball_ball": list(_core.ball_ball_models()), "cushion": list(_core.cushion_models()),
+            "ball_table": list(_core.ball_table_models()), "cue": list(_core.cue_models())}
 
 
 def parameters() -> Dict[str, dict]:
@@ -117,29 +119,30 @@ class Engine:
     """The physics model: a table, its coefficients and contact models. Immutable; share it.
 
     table: a bundled table's name (tables()) or a URDF file's path.
-    ball_ball_model, cushion_model: models()' names; None for the defaults.
+    ball_ball_model, cushion_model, ball_table_model, cue_model: models()' names; None for the
+    defaults.
     params: coefficients by name over the defaults (parameters()), e.g. mu_slide=0.2.
     """
 
     def __init__(self, table: str = "7ft", ball_ball_model: Optional[str] = None,
-                 cushion_model: Optional[str] = None, **params: float):
-        self._spec = (table, ball_ball_model, cushion_model, dict(params))
+                 cushion_model: Optional[str] = None, ball_table_model: Optional[str] = None,
+                 cue_model: Optional[str] = None, **params: float):
+        self._spec = (table, ball_ball_model, cushion_model, ball_table_model, cue_model, dict(params))
         self._engine = _core.Engine(table, {k: float(v) for k, v in params.items()}, ball_ball_model or "",
-                                    cushion_model or "")
+                                    cushion_model or "", ball_table_model or "", cue_model or "")
 
     def with_params(self, **params: float) -> "Engine":
         """This engine with the given coefficients changed (checked as the constructor checks
         them), on the same table, read once: cheap enough to make at every step of a fit."""
-        table, ball_ball_model, cushion_model, given = self._spec
+        *models, given = self._spec
         out = Engine.__new__(Engine)
-        out._spec = (table, ball_ball_model, cushion_model, dict(given, **params))
+        out._spec = (*models, dict(given, **params))
         out._engine = self._engine.with_params({k: float(v) for k, v in params.items()})
         return out
 
     def __reduce__(self):
         # Pickled as what it was made from (for Dask's workers, which build their own).
-        table, ball_ball_model, cushion_model, params = self._spec
-        return (_engine_from_spec, (table, ball_ball_model, cushion_model, params))
+        return (_engine_from_spec, self._spec)
 
     @property
     def table(self) -> str:
@@ -167,7 +170,8 @@ class Engine:
 
     @property
     def models(self) -> Dict[str, str]:
-        return {"ball_ball": self._engine.ball_ball_model, "cushion": self._engine.cushion_model}
+        return {"ball_ball": self._engine.ball_ball_model, "cushion": self._engine.cushion_model,
+                "ball_table": self._engine.ball_table_model, "cue": self._engine.cue_model}
 
     def rack(self, layout: str = "eight", gap: float = 1e-5, jitter: float = 0.0, seed: int = 0) -> State:
         """A standard rack ("eight", "nine" or "empty": the cue ball only) with `gap` [m] between
@@ -195,8 +199,8 @@ class Samples:
     pocket: np.ndarray
 
 
-def _engine_from_spec(table, ball_ball_model, cushion_model, params):
-    return Engine(table, ball_ball_model, cushion_model, **params)
+def _engine_from_spec(table, ball_ball_model, cushion_model, ball_table_model, cue_model, params):
+    return Engine(table, ball_ball_model, cushion_model, ball_table_model, cue_model, **params)
 
 
 @dataclass

@@ -259,6 +259,8 @@ NodeParameters readNodeParameters(ros::NodeHandle& node, ros::NodeHandle& privat
     throw std::runtime_error("physics parameter ~" + bad_physics);
   reader.read("ball_ball_model", p.models.ball_ball);
   reader.read("cushion_model", p.models.cushion);
+  reader.read("ball_table_model", p.models.ball_table);
+  reader.read("cue_model", p.models.cue);
   readTable(node, reader, p);
   reader.refuseUnknown();
   return p;

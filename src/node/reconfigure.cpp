@@ -37,6 +37,8 @@ std::string PhysicsReconfigure::apply(const TableNodeConfig& config)
   physics::ModelChoice models;
   models.ball_ball = config.ball_ball_model;
   models.cushion = config.cushion_model;
+  models.ball_table = config.ball_table_model;
+  models.cue = config.cue_model;
   const session::Stamp now = toStamp(shared_.now());
   const session::Outcome physics = table.setPhysics(params, models, now);
   if (!physics.success)

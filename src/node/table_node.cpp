@@ -56,7 +56,8 @@ TableNode::TableNode(const ros::NodeHandle& node, const ros::NodeHandle& private
   }
   catch (const std::invalid_argument& e)
   {
-    throw std::runtime_error(std::string("~ball_ball_model, ~cushion_model: ") + e.what());
+    throw std::runtime_error(std::string("~ball_ball_model, ~cushion_model, ~ball_table_model, ~cue_model: ") +
+                             e.what());
   }
   if (shared_.sim_time)
   {

@@ -72,7 +72,8 @@ PhysicsParams<double> paramsFrom(const std::map<std::string, double>& given,
 
 /// The engine a Python Engine holds: the table by name or URDF path, coefficients and models.
 std::shared_ptr<const Engine<double>> makeEngine(const std::string& table, const std::map<std::string, double>& params,
-                                                 const std::string& ball_ball, const std::string& cushion)
+                                                 const std::string& ball_ball, const std::string& cushion,
+                                                 const std::string& ball_table, const std::string& cue)
 {
   std::shared_ptr<const physics::TableModel> model;
   try
@@ -83,11 +84,7 @@ std::shared_ptr<const Engine<double>> makeEngine(const std::string& table, const
   {
     throw std::invalid_argument("table '" + table + "': " + e.what());
   }
-  physics::ModelChoice models;
-  if (!ball_ball.empty())
-    models.ball_ball = ball_ball;
-  if (!cushion.empty())
-    models.cushion = cushion;
+  const physics::ModelChoice models(ball_ball, cushion, ball_table, cue);  // empty: the default
   return std::make_shared<const Engine<double>>(model, paramsFrom(params), models);
 }
 
@@ -271,6 +268,8 @@ PYBIND11_MODULE(_core, m)
   m.def("table_names", &tableNames);
   m.def("ball_ball_models", &physics::ballBallModelNames);
   m.def("cushion_models", &physics::cushionModelNames);
+  m.def("ball_table_models", &physics::ballTableModelNames);
+  m.def("cue_models", &physics::cueModelNames);
   m.def("param_fields", &paramFields);
   m.def("rack_names", &physics::rackNames);
   m.def("ball_colour", [](int id) {
@@ -292,13 +291,18 @@ PYBIND11_MODULE(_core, m)
       .def_readwrite("pocket", &StateArrays::pocket);
   py::class_<Engine<double>, std::shared_ptr<Engine<double>>>(m, "Engine")
       .def(py::init([](const std::string& table, const std::map<std::string, double>& params,
-                       const std::string& ball_ball, const std::string& cushion) {
-             return std::const_pointer_cast<Engine<double>>(makeEngine(table, params, ball_ball, cushion));
+                       const std::string& ball_ball, const std::string& cushion, const std::string& ball_table,
+                       const std::string& cue) {
+             return std::const_pointer_cast<Engine<double>>(
+                 makeEngine(table, params, ball_ball, cushion, ball_table, cue));
            }),
-           py::arg("table"), py::arg("params"), py::arg("ball_ball_model"), py::arg("cushion_model"))
+           py::arg("table"), py::arg("params"), py::arg("ball_ball_model"), py::arg("cushion_model"),
+           py::arg("ball_table_model") = "", py::arg("cue_model") = "")
       .def_property_readonly("table_name", [](const Engine<double>& e) { return e.table().name(); })
       .def_property_readonly("ball_ball_model", [](const Engine<double>& e) { return e.models().ball_ball; })
       .def_property_readonly("cushion_model", [](const Engine<double>& e) { return e.models().cushion; })
+      .def_property_readonly("ball_table_model", [](const Engine<double>& e) { return e.models().ball_table; })
+      .def_property_readonly("cue_model", [](const Engine<double>& e) { return e.models().cue; })
       .def_property_readonly("params",
                              [](const Engine<double>& e) {
                                std::map<std::string, double> out;

@@ -94,7 +94,7 @@ void onlyKeys(const YAML::Node& map, const std::string& where, const std::set<st
 
 void applyPhysicsNode(const YAML::Node& node, physics::PhysicsParams<double>& params, physics::ModelChoice& models)
 {
-  std::set<std::string> known = {"ball_ball_model", "cushion_model"};
+  std::set<std::string> known = {"ball_ball_model", "cushion_model", "ball_table_model", "cue_model"};
   for (const auto& field : physics::physicsParamFields())
     known.insert(field.name);
   onlyKeys(node, "physics", known);
@@ -115,6 +115,8 @@ void applyPhysicsNode(const YAML::Node& node, physics::PhysicsParams<double>& pa
   };
   model("ball_ball_model", models.ball_ball, physics::ballBallModelNames());
   model("cushion_model", models.cushion, physics::cushionModelNames());
+  model("ball_table_model", models.ball_table, physics::ballTableModelNames());
+  model("cue_model", models.cue, physics::cueModelNames());
   const std::string why = params.validate();
   if (!why.empty())
     throw SceneError("physics: " + why);
@@ -401,6 +403,8 @@ std::string sceneYaml(const Scene& scene, const std::string& comment)
     out << "  " << field.name << ": " << exact(scene.params.*field.member) << "\n";
   out << "  ball_ball_model: " << scene.models.ball_ball << "\n";
   out << "  cushion_model: " << scene.models.cushion << "\n";
+  out << "  ball_table_model: " << scene.models.ball_table << "\n";
+  out << "  cue_model: " << scene.models.cue << "\n";
   out << "balls:\n";
   for (const auto& b : scene.state.balls)
     out << "  - {id: " << b.id << ", position: " << exactList(b.r.head<2>())

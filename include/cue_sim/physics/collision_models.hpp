@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cue_sim/physics/ball.hpp"
+#include "cue_sim/physics/cue_strike.hpp"
 #include "cue_sim/physics/physics_params.hpp"
 
 namespace cue_sim
@@ -52,10 +53,22 @@ public:
   virtual void resolve(Ball<S>& ball, S restitution, const PhysicsParams<S>& p) const = 0;
 };
 
+/// What the cue does to the ball it strikes, on the cloth: its velocity and spin right after the
+/// cue leaves it. A velocity into the slate (v.z < 0) is the slate's to answer: the engine lands
+/// it through the ball-table model.
+template <typename S>
+class CueModel
+{
+public:
+  using Scalar = S;
+  virtual ~CueModel() = default;
+  virtual void strike(Ball<S>& ball, const CueStrike<S>& strike, const PhysicsParams<S>& p) const = 0;
+};
+
 /// One contact model as include/cue_sim/physics/contact_models.def declares it.
 struct ModelInfo
 {
-  const char* kind;          ///< "ball_ball", "cushion" or "ball_table"
+  const char* kind;          ///< "ball_ball", "cushion", "ball_table" or "cue"
   const char* name;          ///< the name physics.yaml, scene files and ~cushion_model take
   const char* summary;       ///< what it does, in a line
   const char* coefficients;  ///< the PhysicsParams it reads, space-separated
@@ -66,21 +79,24 @@ struct ModelInfo
 const std::vector<ModelInfo>& contactModels();
 
 /// Which model to use for each contact kind, by name (see ballBallModelNames(),
-/// cushionModelNames() and ballTableModelNames()). Default-constructed: the default of each kind.
+/// cushionModelNames(), ballTableModelNames() and cueModelNames()). Default-constructed, or a
+/// name left empty: the default of that kind.
 struct ModelChoice
 {
   ModelChoice();
-  ModelChoice(std::string ball_ball_model, std::string cushion_model);
-  ModelChoice(std::string ball_ball_model, std::string cushion_model, std::string ball_table_model);
+  ModelChoice(std::string ball_ball_model, std::string cushion_model, std::string ball_table_model = "",
+              std::string cue_model = "");
   std::string ball_ball;
   std::string cushion;
   std::string ball_table;
+  std::string cue;
 };
 
 /// The names accepted for each kind, the default first.
 std::vector<std::string> ballBallModelNames();
 std::vector<std::string> cushionModelNames();
 std::vector<std::string> ballTableModelNames();
+std::vector<std::string> cueModelNames();
 
 /// Throws std::invalid_argument naming the unknown model and the known ones.
 template <typename S>
@@ -89,6 +105,8 @@ template <typename S>
 std::unique_ptr<CushionModel<S>> makeCushionModel(const std::string& name);
 template <typename S>
 std::unique_ptr<BallTableModel<S>> makeBallTableModel(const std::string& name);
+template <typename S>
+std::unique_ptr<CueModel<S>> makeCueModel(const std::string& name);
 
 }  // namespace physics
 }  // namespace cue_sim

@@ -44,9 +44,11 @@ std::string validateStrike(const CueStrike<S>& strike);
 
 /// The ball's velocity and spin right after the cue leaves it. a and b are where the tip
 /// touches the ball; with side offset the ball squirts away from the side struck (TP A-31:
-/// 1.9 degrees at a = 0.5 with the default cue). The cue's vertical momentum goes into the
-/// cloth. A cue whose axis passes d from the centre touches at d / (1 + r_tip / R): see
-/// contactOffset().
+/// 1.9 degrees at a = 0.5 with the default cue). cueImpulse gives the velocity along the cue,
+/// down into the slate when the cue is elevated (what the slate then does is the ball-table
+/// model's: the `sequential` cue model); applyCueStrike lets the cloth take that vertical part
+/// (the `planar` cue model: the ball stays on the cloth). A cue whose axis passes d from the
+/// centre touches at d / (1 + r_tip / R): see contactOffset().
 /// Where the tip touches the ball, in units of R, for a cue whose axis passes `axis_offset`
 /// (units of R) from the ball's centre: the tip's curvature moves the contact point inwards.
 template <typename S>
@@ -59,6 +61,8 @@ S contactOffset(S axis_offset, const PhysicsParams<S>& p)
 template <typename S>
 S squirtAngle(S a, const PhysicsParams<S>& p);
 
+template <typename S>
+void cueImpulse(Ball<S>& ball, const CueStrike<S>& strike, const PhysicsParams<S>& p);
 template <typename S>
 void applyCueStrike(Ball<S>& ball, const CueStrike<S>& strike, const PhysicsParams<S>& p);
 

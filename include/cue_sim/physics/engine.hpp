@@ -81,6 +81,7 @@ public:
   const BallBallModel<S>& ballBallModel() const { return *ball_ball_; }
   const CushionModel<S>& cushionModel() const { return *cushion_; }
   const BallTableModel<S>& ballTableModel() const { return *ball_table_; }
+  const CueModel<S>& cueModel() const { return *cue_; }
   /// The model for a pair with a ball in the air: the chosen one, unless it needs the cloth under
   /// both balls (BallBallModel::needsCloth), then the default ball-ball model.
   const BallBallModel<S>& ballBallModelInAir() const { return ball_ball_in_air_ ? *ball_ball_in_air_ : *ball_ball_; }
@@ -92,7 +93,9 @@ public:
 
   /// Empty if the strike may be applied to the ball with this id in this state, else why not.
   std::string whyNotStrikable(const TableState<S>& state, int ball_id, const CueStrike<S>& strike) const;
-  /// Applies a strike at state.time (check whyNotStrikable first; throws std::invalid_argument).
+  /// Applies a strike at state.time (check whyNotStrikable first; throws std::invalid_argument):
+  /// the cue model's impulse, then the slate's answer to any downward part (the ball may leave
+  /// the cloth).
   void strike(TableState<S>& state, int ball_id, const CueStrike<S>& strike) const;
 
   /// Empty if the state is valid on this table: finite numbers, unique ids, balls in play on
@@ -114,6 +117,7 @@ private:
   std::unique_ptr<BallBallModel<S>> ball_ball_;
   std::unique_ptr<CushionModel<S>> cushion_;
   std::unique_ptr<BallTableModel<S>> ball_table_;
+  std::unique_ptr<CueModel<S>> cue_;
   std::unique_ptr<BallBallModel<S>> ball_ball_in_air_;  ///< null when ball_ball_ serves
   std::shared_ptr<const TableGeometry<S>> geometry_;
 };

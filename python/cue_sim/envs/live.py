@@ -76,7 +76,9 @@ def node_engine(namespace):
     params = {name: float(rospy.get_param(f"{namespace}/{name}")) for name in cue_sim.parameters()
               if rospy.has_param(f"{namespace}/{name}")}
     return cue_sim.Engine(table, ball_ball_model=rospy.get_param(namespace + "/ball_ball_model", None),
-                          cushion_model=rospy.get_param(namespace + "/cushion_model", None), **params)
+                          cushion_model=rospy.get_param(namespace + "/cushion_model", None),
+                          ball_table_model=rospy.get_param(namespace + "/ball_table_model", None),
+                          cue_model=rospy.get_param(namespace + "/cue_model", None), **params)
 
 
 class LiveTableEnv:

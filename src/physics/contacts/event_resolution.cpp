@@ -48,7 +48,7 @@ void EventResolver<S>::resolve(const Event<S>& event)
       pocketBall(ball, event.obstacle);
       break;
     case EventKind::BallSlate:
-      landOnSlate(ball);
+      landOnSlate(ball, engine_.ballTableModel(), params_);
       break;
     default:
       applyTransition(ball, params_);
@@ -108,24 +108,10 @@ void EventResolver<S>::resolveAirbornePair(Ball<S>& a, Ball<S>& b)
   for (Ball<S>* ball : {&a, &b})
   {
     if (ball->r.z() - params_.ball_radius <= onClothHeight(params_.ball_radius) && ball->v.z() < S(0))
-      landOnSlate(*ball);
+      landOnSlate(*ball, engine_.ballTableModel(), params_);
     else
       settleMotion(*ball, params_.ball_radius);
   }
-}
-
-template <typename S>
-void EventResolver<S>::landOnSlate(Ball<S>& ball) const
-{
-  const S R = params_.ball_radius;
-  ball.r.z() = R;
-  const S incoming = -ball.v.z();
-  if (incoming > S(0))
-  {
-    const S rebound = params_.e_table * incoming;
-    engine_.ballTableModel().resolve(ball, rebound < S(kSettleSpeed) ? S(0) : params_.e_table, params_);
-  }
-  settleMotion(ball, R);
 }
 
 template <typename S>

@@ -7,6 +7,7 @@
 
 #include "cue_sim/physics/engine.hpp"
 #include "physics/contacts/event_resolution.hpp"
+#include "physics/contacts/slate_landing.hpp"
 #include "physics/engine/table_geometry.hpp"
 
 namespace cue_sim
@@ -87,19 +88,6 @@ constexpr int kInelasticSweeps = 100000;
 constexpr double kSameInstant = 1e-12;
 constexpr double kSameInstantPerSecond = 1e-13;
 
-/// A ball that the slate would send back up slower than this [m/s] stays on the cloth instead:
-/// its landing is perfectly inelastic (the normal impulse m U, friction at most mu_table m U),
-/// and it slides on. That ends a bounce sequence, which would otherwise have infinitely many
-/// impacts in a finite time. It is exact where it matters: with mu_table = mu_slide (the default)
-/// the cloth's sliding friction over the rest of the sequence, 2 e U / (g (1 - e)) long, takes
-/// 2 mu e U / (1 - e) of speed, and the remaining impacts would have taken mu (1 + e) e U / (1 - e):
-/// the difference, mu e U, is the friction the inelastic impact takes beyond the elastic one's
-/// mu (1 + e) U, so by the sequence's end the ball has the velocity and spin the exact sequence
-/// gives it (bounceSeries, slate_bounce.hpp), the slip permitting; its centre is off by at most
-/// 2 mu (e U)^2 / (g (1 - e)) meanwhile, 8e-8 m at mu = 0.2 and e = 0.5, and it skips hops lower
-/// than (e U)^2 / 2g = 5e-8 m. A landing at 5 m/s bounces 12 times before this at e = 0.5.
-constexpr double kSettleSpeed = 1e-3;
-
 template <typename S>
 class EventResolver
 {
@@ -116,9 +104,6 @@ private:
   /// A pair of which at least one ball is in the air: the model's impulse along the line of
   /// centres in three dimensions, then any ball it drives into the slate lands on it.
   void resolveAirbornePair(Ball<S>& a, Ball<S>& b);
-  /// A ball at the slate coming down (or pressed into it): the ball-table model's impact with
-  /// e_table, or the inelastic one that ends the bounces (kSettleSpeed); then its motion settled.
-  void landOnSlate(Ball<S>& ball) const;
   void resolveWall(Ball<S>& ball, const Event<S>& event);
   /// The cushion model's impulses on a ball closing on a wall (`normal` into play), until it no
   /// longer closes; what kMaxWallImpulses of them leave of its motion into the wall, the wall

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "cue_sim/physics/motion.hpp"
+#include "physics/contacts/slate_landing.hpp"
 #include "physics/engine/table_geometry.hpp"
 
 namespace cue_sim
@@ -21,7 +22,8 @@ Engine<S>::Engine(std::shared_ptr<const TableModel> table, const PhysicsParams<S
     limits_(limits),
     ball_ball_(makeBallBallModel<S>(models.ball_ball)),
     cushion_(makeCushionModel<S>(models.cushion)),
-    ball_table_(makeBallTableModel<S>(models.ball_table))
+    ball_table_(makeBallTableModel<S>(models.ball_table)),
+    cue_(makeCueModel<S>(models.cue))
 {
   const std::string why = params_.validate();
   if (!why.empty())
@@ -58,6 +60,8 @@ std::string Engine<S>::whyNotStrikable(const TableState<S>& state, int ball_id, 
     return "ball_id " + std::to_string(ball_id) + " is not on the table";
   if (!state.balls[index].inPlay())
     return "ball_id " + std::to_string(ball_id) + " is pocketed";
+  if (state.balls[index].airborne())
+    return "ball_id " + std::to_string(ball_id) + " is in the air: the cue strikes a ball on the cloth";
   return validateStrike(strike);
 }
 
@@ -69,8 +73,8 @@ void Engine<S>::strike(TableState<S>& state, int ball_id, const CueStrike<S>& st
     throw std::invalid_argument(why);
   Ball<S>& ball = state.balls[state.indexOf(ball_id)];
   ball = evolve(ball, state.time, params_);
-  applyCueStrike(ball, strike, params_);
-  settleMotion(ball, params_.ball_radius);
+  cue_->strike(ball, strike, params_);
+  landOnSlate(ball, *ball_table_, params_);  // settles it too: on the cloth, or in the air
   // The strike is an event: predictions restart from it.
   state.event_time = state.time;
   state.events_this_instant = 0;

@@ -16,6 +16,8 @@ template <typename S>
 using ModelBase_cushion = CushionModel<S>;
 template <typename S>
 using ModelBase_ball_table = BallTableModel<S>;
+template <typename S>
+using ModelBase_cue = CueModel<S>;
 
 #define CUE_SIM_MODEL(kind, name, ...)                                                                                 \
   template <typename S>                                                                                                \

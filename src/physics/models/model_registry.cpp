@@ -54,20 +54,27 @@ std::vector<std::string> ballTableModelNames()
   return namesOf("ball_table");
 }
 
-ModelChoice::ModelChoice()
-  : ball_ball(ballBallModelNames().front()),
-    cushion(cushionModelNames().front()),
-    ball_table(ballTableModelNames().front())
+std::vector<std::string> cueModelNames()
 {
+  return namesOf("cue");
 }
 
-ModelChoice::ModelChoice(std::string ball_ball_model, std::string cushion_model)
-  : ModelChoice(std::move(ball_ball_model), std::move(cushion_model), ballTableModelNames().front())
+namespace
 {
+std::string orDefault(std::string name, const std::vector<std::string>& names)
+{
+  return name.empty() ? names.front() : name;
 }
+}  // namespace
 
-ModelChoice::ModelChoice(std::string ball_ball_model, std::string cushion_model, std::string ball_table_model)
-  : ball_ball(std::move(ball_ball_model)), cushion(std::move(cushion_model)), ball_table(std::move(ball_table_model))
+ModelChoice::ModelChoice() : ModelChoice("", "") {}
+
+ModelChoice::ModelChoice(std::string ball_ball_model, std::string cushion_model, std::string ball_table_model,
+                         std::string cue_model)
+  : ball_ball(orDefault(std::move(ball_ball_model), ballBallModelNames())),
+    cushion(orDefault(std::move(cushion_model), cushionModelNames())),
+    ball_table(orDefault(std::move(ball_table_model), ballTableModelNames())),
+    cue(orDefault(std::move(cue_model), cueModelNames()))
 {
 }
 
@@ -120,12 +127,22 @@ std::unique_ptr<BallTableModel<S>> makeBallTableModel(const std::string& name)
   throw std::invalid_argument("unknown ball-table model '" + name + "' (known: " + joined(ballTableModelNames()) + ")");
 }
 
+template <typename S>
+std::unique_ptr<CueModel<S>> makeCueModel(const std::string& name)
+{
+  if (auto model = madeByName<CueModel<S>>("cue", name))
+    return model;
+  throw std::invalid_argument("unknown cue model '" + name + "' (known: " + joined(cueModelNames()) + ")");
+}
+
 template std::unique_ptr<BallBallModel<double>> makeBallBallModel(const std::string&);
 template std::unique_ptr<BallBallModel<long double>> makeBallBallModel(const std::string&);
 template std::unique_ptr<CushionModel<double>> makeCushionModel(const std::string&);
 template std::unique_ptr<CushionModel<long double>> makeCushionModel(const std::string&);
 template std::unique_ptr<BallTableModel<double>> makeBallTableModel(const std::string&);
 template std::unique_ptr<BallTableModel<long double>> makeBallTableModel(const std::string&);
+template std::unique_ptr<CueModel<double>> makeCueModel(const std::string&);
+template std::unique_ptr<CueModel<long double>> makeCueModel(const std::string&);
 
 }  // namespace physics
 }  // namespace cue_sim

@@ -39,7 +39,7 @@ S squirtAngle(S a, const PhysicsParams<S>& p)
 }
 
 template <typename S>
-void applyCueStrike(Ball<S>& ball, const CueStrike<S>& s, const PhysicsParams<S>& p)
+void cueImpulse(Ball<S>& ball, const CueStrike<S>& s, const PhysicsParams<S>& p)
 {
   const S R = p.ball_radius;
   // Table-frame axes of the shot: h along the heading, side to the shooter's right, z up.
@@ -59,16 +59,25 @@ void applyCueStrike(Ball<S>& ball, const CueStrike<S>& s, const PhysicsParams<S>
   // Squirt (Alciatore TP A-31): the cue's end mass m_e is pushed aside with the ball, which
   // leaves away from the side struck, turned by alpha in the horizontal plane.
   const S heading = s.phi + squirtAngle(s.a, p);
-  ball.v =
-      speed * cos_t * Vec3<S>(std::cos(heading), std::sin(heading), S(0));  // the vertical part goes into the cloth
+  ball.v = speed * cos_t * Vec3<S>(std::cos(heading), std::sin(heading), S(0));  // along the cue: level part...
+  ball.v.z() = -speed * sin_t;                                                 // ...and down into the slate
   ball.w = (speed / (S(0.4) * R * R)) * lever;
   ball.r.z() = R;
+}
+
+template <typename S>
+void applyCueStrike(Ball<S>& ball, const CueStrike<S>& s, const PhysicsParams<S>& p)
+{
+  cueImpulse(ball, s, p);
+  ball.v.z() = S(0);  // the vertical part goes into the cloth
 }
 
 template std::string validateStrike(const CueStrike<double>&);
 template std::string validateStrike(const CueStrike<long double>&);
 template double squirtAngle(double, const PhysicsParams<double>&);
 template long double squirtAngle(long double, const PhysicsParams<long double>&);
+template void cueImpulse(Ball<double>&, const CueStrike<double>&, const PhysicsParams<double>&);
+template void cueImpulse(Ball<long double>&, const CueStrike<long double>&, const PhysicsParams<long double>&);
 template void applyCueStrike(Ball<double>&, const CueStrike<double>&, const PhysicsParams<double>&);
 template void applyCueStrike(Ball<long double>&, const CueStrike<long double>&, const PhysicsParams<long double>&);
 
