@@ -197,6 +197,43 @@ inline const std::map<std::string, std::function<BenchScene()>>& benchScenes()
          }
          return struck(engine, state, 4.0, 0.15, 0.2, 0.2);
        }},
+      // Issue 33: a jump shot (sequential cue at 45 degrees, V0 4 m/s) over a ball 0.3 m ahead, its
+      // flight, landing and bounces; and a ball dropped from 0.2 m onto a cluster of four touching
+      // balls, bouncing off them and the slate.
+      {"jump_shot",
+       [] {
+         auto engine = defaultEngine(sevenFoot(), EngineLimits().max_events, ModelChoice("", "", "", "sequential"));
+         const double R = engine->params().ball_radius;
+         TableState<double> state = rackLayout<double>("empty", engine->table(), R);
+         Ball<double> obstacle = state.balls[0];
+         obstacle.id = 1;
+         obstacle.r += Vec3<double>(0.3, 0, 0);
+         state.balls.push_back(obstacle);
+         CueStrike<double> cue;
+         cue.speed = 4.0;
+         cue.theta = M_PI / 4;
+         engine->strike(state, 0, cue);
+         return BenchScene{engine, state};
+       }},
+      {"bouncing_cluster",
+       [] {
+         auto engine = defaultEngine(sevenFoot());
+         const double R = engine->params().ball_radius;
+         TableState<double> state;
+         for (int id = 1; id <= 4; ++id)
+         {
+           Ball<double> b;
+           b.id = id;
+           b.r = Vec3<double>((id % 2) * 2 * R, (id / 3) * 2 * R, R);
+           state.balls.push_back(b);
+         }
+         Ball<double> dropped;
+         dropped.r = Vec3<double>(R + 0.004, R - 0.003, R + 0.2);
+         dropped.v = Vec3<double>(0.3, 0.1, 0);
+         settleMotion(dropped, R);
+         state.balls.push_back(dropped);
+         return BenchScene{engine, state};
+       }},
       {"scaling_16", [] { return scaling(16, 16); }},
       {"scaling_64", [] { return scaling(64, 64); }},
       {"scaling_256", [] { return scaling(256, 256); }},

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <std_srvs/Trigger.h>
+#include <tf2_msgs/TFMessage.h>
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <visualization_msgs/InteractiveMarkerFeedback.h>
 #include <visualization_msgs/InteractiveMarkerInit.h>
@@ -599,6 +600,74 @@ TEST_F(ResearchInterfaceTest, ReconfigureStartsFromTheNodesParametersAndChangesP
   EXPECT_NE(table_.predict(shot).time_to_rest, frictional.time_to_rest);
   reconfigure("/table", {}, {{"ball_ball_model", "frictional"}});
   EXPECT_EQ(table_.predict(shot).time_to_rest, frictional.time_to_rest);
+}
+
+// Issue 33 on the node: with the sequential cue chosen at run time, a steep stroke jumps the cue
+// ball over a ball a foot ahead. The prediction has its landings; the live table's tf carries its
+// height and ~state its motion (AIRBORNE), and it comes back to the cloth at rest where the
+// prediction said. The planar cue, chosen again, keeps the same stroke on the cloth.
+TEST_F(ResearchInterfaceTest, AJumpShotFliesInTfWhenTheSequentialCueIsChosen)
+{
+  EXPECT_EQ(stringOf(reconfigure("/table", {}), "cue_model"), "planar");
+  EXPECT_EQ(stringOf(reconfigure("/table", {}, {{"cue_model", "sequential"}}), "cue_model"), "sequential");
+  ASSERT_TRUE(table_.rack("custom", {0, 1}, {{-0.6, 0.0}, {-0.6 + 0.3048, 0.0}}).success);
+  table_.atRest(10);
+  const cue_sim::Shot jump = TableClient::shot(0, 4.0, 0.0, 0.8);
+  const cue_sim::Prediction planned = table_.predict(jump, {}, 0.005);
+  ASSERT_TRUE(planned.success) << planned.message;
+  int landings = 0;
+  for (const auto& e : planned.events)
+  {
+    landings += e.kind == cue_sim::Event::BALL_SLATE && e.ball_id == 0;
+    if (e.kind == cue_sim::Event::BALL_SLATE)
+      EXPECT_EQ(e.kind_name, "ball_slate");
+  }
+  EXPECT_GT(landings, 3);
+  // Its first event is its landing, and before it the samples have it beyond the other ball, in
+  // the air: it flew over.
+  ASSERT_EQ(planned.events.front().kind, cue_sim::Event::BALL_SLATE);
+  bool beyond_in_the_air = false;
+  for (std::size_t k = 0; k < planned.samples.size() && k * planned.sample_period < planned.events.front().shot_time;
+       ++k)
+    for (const auto& b : planned.samples[k].balls)
+      beyond_in_the_air |= b.id == 0 && b.position.x > -0.6 + 0.3048 + 2 * kRadius && b.position.z > kRadius + 0.01;
+  EXPECT_TRUE(beyond_in_the_air);
+
+  std::mutex mutex;
+  double highest = 0;
+  bool airborne_seen = false;
+  ros::Subscriber tf = nh_.subscribe<tf2_msgs::TFMessage>("/tf", 1000, [&](const tf2_msgs::TFMessageConstPtr& m) {
+    std::lock_guard<std::mutex> lock(mutex);
+    for (const auto& t : m->transforms)
+      if (t.child_frame_id == "ball_0")
+        highest = std::max(highest, t.transform.translation.z);
+  });
+  ros::Subscriber state =
+      nh_.subscribe<cue_sim::TableState>("/table/state", 1000, [&](const cue_sim::TableStateConstPtr& m) {
+        std::lock_guard<std::mutex> lock(mutex);
+        for (const auto& b : m->balls)
+          airborne_seen |= b.id == 0 && b.motion == cue_sim::BallState::AIRBORNE;
+      });
+  ASSERT_TRUE(waitFor([&] { return tf.getNumPublishers() > 0 && state.getNumPublishers() > 0; }));
+  const cue_sim::Strike::Response struck = table_.strike(jump);
+  ASSERT_TRUE(struck.success) << struck.message;
+  const cue_sim::TableState rest = *table_.atRestAfter(struck.stamp, planned.time_to_rest + 30);
+  expectSameBalls(rest.balls, planned.final_balls, "the jump shot");
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    // The flight's apex: (e_table V sin theta)^2 / 2g above the cloth, some 25 cm at this stroke;
+    // tf at 100 Hz samples it within a few millimetres.
+    EXPECT_GT(highest, kRadius + 0.08) << "the cue ball's highest transform";
+    EXPECT_TRUE(airborne_seen);
+  }
+  for (const auto& b : rest.balls)
+    EXPECT_NEAR(b.position.z, kRadius, 1e-12) << "ball " << b.id << " back on the cloth";
+
+  EXPECT_EQ(stringOf(reconfigure("/table", {}, {{"cue_model", "planar"}}), "cue_model"), "planar");
+  const cue_sim::Prediction level = table_.predict(jump);
+  ASSERT_TRUE(level.success) << level.message;
+  for (const auto& e : level.events)
+    EXPECT_NE(e.kind, cue_sim::Event::BALL_SLATE);
 }
 
 TEST_F(ResearchInterfaceTest, TheAimMarkerFiresTheShotItShows)

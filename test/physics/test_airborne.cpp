@@ -7,8 +7,10 @@
 
 #include <cmath>
 #include <memory>
+#include <random>
 
 #include "cue_sim/physics/motion.hpp"
+#include "cue_sim/physics/rack.hpp"
 #include "cue_sim/physics/scan.hpp"
 #include "cue_sim/physics/simulation.hpp"
 #include "physics/contacts/event_resolver.hpp"
@@ -454,7 +456,7 @@ TEST(JumpShots, AnElevatedDrawHopsByTheSlatesRestitution)
 {
   const auto table = sevenFoot();
   const PhysicsParams<double> p;
-  const Engine<double> engine(table, p);
+  const Engine<double> engine(table, p, ModelChoice("", "", "", "sequential"));
   const Engine<double> planar(table, p, ModelChoice("", "", "", "planar"));
   for (const double theta : {0.1, 0.25, 0.4})
   {
@@ -499,7 +501,7 @@ TEST(JumpShots, AnElevatedDrawHopsByTheSlatesRestitution)
 TEST(JumpShots, AFortyFiveDegreeCueJumpsABallAFootAwayAndNearerBallsNeedSteeper)
 {
   const auto table = sevenFoot();
-  const Engine<double> engine(table, PhysicsParams<double>());
+  const Engine<double> engine(table, PhysicsParams<double>(), ModelChoice("", "", "", "sequential"));
   const Engine<double> planar(table, PhysicsParams<double>(), ModelChoice("", "", "", "planar"));
   const double deg = M_PI / 180, foot = 0.3048;
   for (const double v0 : {3.0, 4.0, 5.0, 6.0})
@@ -513,4 +515,47 @@ TEST(JumpShots, AFortyFiveDegreeCueJumpsABallAFootAwayAndNearerBallsNeedSteeper)
     EXPECT_LT(at60, at45) << "V0 = " << v0;
     EXPECT_LT(at45, at35) << "V0 = " << v0;
   }
+}
+
+// Hostile: breaks struck with the sequential cue at random elevations up to 69 degrees, speeds up
+// to 12 m/s and English, under every ball-ball and cushion model: the cue ball hops or jumps into
+// the rack. Every event keeps the invariants (energy with its potential part, no overlap in
+// space, none below the slate), and every shot ends at rest in a valid state.
+TEST(JumpShots, ElevatedBreaksKeepEveryInvariant)
+{
+  std::mt19937 rng(33);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const auto table = sevenFoot();
+  const std::vector<std::string> balls = ballBallModelNames(), cushions = cushionModelNames();
+  int flights = 0;
+  for (int k = 0; k < 48; ++k)
+  {
+    const ModelChoice models(balls[k % balls.size()], cushions[(k / balls.size()) % cushions.size()], "", "sequential");
+    const Engine<double> engine(table, PhysicsParams<double>(), models);
+    RackOptions options;
+    options.gap = 1e-4 * unit(rng);
+    TableState<double> s = rackLayout<double>(k % 2 ? "eight" : "nine", *table, engine.params().ball_radius, options);
+    CueStrike<double> cue;
+    cue.speed = 1.0 + 11.0 * unit(rng);
+    cue.phi = 0.1 * (unit(rng) - 0.5);
+    cue.theta = 1.2 * unit(rng);
+    cue.a = 0.6 * (unit(rng) - 0.5);
+    cue.b = 0.6 * (unit(rng) - 0.5);
+    if (std::hypot(cue.a, cue.b) > 0.5)
+      cue.a = cue.b = 0.0;
+    SCOPED_TRACE("shot " + std::to_string(k) + ": " + models.ball_ball + ", " + models.cushion + ", theta " +
+                 std::to_string(cue.theta) + ", V0 " + std::to_string(cue.speed));
+    engine.strike(s, 0, cue);
+    flights += s.balls[0].airborne();
+    const std::vector<Event<double>> events = runChecked(engine, s, 2);
+    EXPECT_LT(events.size(), 20000u);
+    TableState<double> end = s;
+    const ShotResult<double> run = simulateToRest(engine, end);
+    EXPECT_EQ(run.events.size(), events.size());
+    EXPECT_FALSE(end.anyMoving());
+    EXPECT_EQ(engine.whyInvalid(end), "");
+    if (HasFailure())
+      break;
+  }
+  EXPECT_GT(flights, 30);
 }

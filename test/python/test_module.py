@@ -3,6 +3,7 @@ answers bit for bit: the `simulate` program's for a scene, and simulate()'s for 
 batch, however the batch is split or threaded."""
 import json
 import os
+import pickle
 import subprocess
 import sys
 
@@ -211,3 +212,33 @@ def test_a_table_from_its_urdf_file_is_the_named_table(tmp_path):
     for path in (str(tmp_path / "missing.urdf"), str(broken)):
         with pytest.raises(ValueError, match=path):
             cue_sim.Engine(path)
+
+
+def test_a_jump_shot_flies_in_the_samples_with_the_sequential_cue():
+    # Issue 33: the ball-table and cue models by name; a steep stroke with the sequential cue
+    # leaves the cloth (motion "airborne", heights above R in the samples) and lands ("ball_slate"
+    # events); the planar cue keeps the same stroke on the cloth.
+    models = cue_sim.models()
+    assert models["ball_table"] == ["frictional", "frictionless"]
+    assert models["cue"] == ["planar", "sequential"]
+    jumper = cue_sim.Engine(cue_model="sequential")
+    assert jumper.models["cue"] == "sequential" and jumper.models["ball_table"] == "frictional"
+    assert pickle.loads(pickle.dumps(jumper)).models == jumper.models
+    start = cue_sim.State.from_balls([0, 1], [[-0.6, 0.0], [-0.3, 0.0]])
+    radius = jumper.params["ball_radius"]
+    shot = cue_sim.simulate(jumper, start, speed=4.0, theta=0.8, sample_period=0.005)
+    kinds = [cue_sim.EVENT_KINDS[int(k)] for k in shot.events["kind"]]
+    assert kinds[0] == "ball_slate" and kinds.count("ball_slate") > 3
+    cue_ball = 0  # row 0 of the starting State
+    heights = shot.samples.positions[:, cue_ball, 2] - radius
+    assert heights.max() > 0.08
+    airborne = [cue_sim.MOTION[int(m)] for m in shot.samples.motion[:, cue_ball]]
+    assert "airborne" in airborne
+    assert np.allclose(shot.final.positions[:, 2], radius, atol=1e-12)
+    level = cue_sim.simulate(cue_sim.Engine(), start, speed=4.0, theta=0.8, sample_period=0.005)
+    assert "ball_slate" not in [cue_sim.EVENT_KINDS[int(k)] for k in level.events["kind"]]
+    assert np.all(level.samples.positions[:, :, 2] == radius)
+    with pytest.raises(ValueError, match="rubber"):
+        cue_sim.Engine(ball_table_model="rubber")
+    with pytest.raises(ValueError, match="catapult"):
+        cue_sim.Engine(cue_model="catapult")

@@ -29,7 +29,8 @@ using physics::TableState;
 constexpr double kOverlapTolerance = 1e-9;
 constexpr double kEnergyTolerance = 1e-12;
 
-/// The invariants of the balls at one instant, and the kinetic energy since the last look.
+/// The invariants of the balls at one instant, and the energy since the last look: kinetic, and
+/// the potential of a ball in the air, m g (z - R) (a falling ball gains speed, not energy).
 class InvariantCheck
 {
 public:
@@ -44,7 +45,10 @@ public:
     for (std::size_t i = 0; i < state.balls.size(); ++i)
     {
       balls_.push_back(engine_.ballAt(state, i, t));
-      energy += physics::kineticEnergy(balls_.back(), engine_.params());
+      const Ball<double>& b = balls_.back();
+      energy += physics::kineticEnergy(b, engine_.params());
+      if (b.airborne())
+        energy += engine_.params().ball_mass * engine_.params().gravity * (b.r.z() - engine_.params().ball_radius);
     }
     for (const Ball<double>& b : balls_)
       if (!physics::isFinite(b.r) || !physics::isFinite(b.v) || !physics::isFinite(b.w))
@@ -57,13 +61,16 @@ public:
     {
       std::ostringstream why;
       why.precision(17);
-      why << describe(when, t) << ": kinetic energy grew from " << last_energy_ << " J to " << energy << " J";
+      why << describe(when, t) << ": energy grew from " << last_energy_ << " J to " << energy << " J";
       note(found, "energy_gain", why.str());
     }
     last_energy_ = energy;
     lookForOverlaps(when, t, found);
     for (const Ball<double>& b : balls_)
-      if (b.inPlay())
+      if (b.airborne() && b.r.z() < R - kOverlapTolerance)
+        note(found, "below_slate", describe(when, t) + ": ball " + std::to_string(b.id) + " is below the slate");
+    for (const Ball<double>& b : balls_)
+      if (b.inPlay() && !b.airborne())  // a ball in the air may fly over a cushion or a pocket
       {
         const std::string where = engine_.table().whyNotPlaceable(b.r.head<2>(), R, kOverlapTolerance);
         if (!where.empty())
@@ -101,7 +108,7 @@ private:
       {
         const Ball<double>& a = balls_[order_[m]];
         const Ball<double>& b = balls_[order_[l]];
-        const double d = (a.r - b.r).head<2>().norm();
+        const double d = (a.r - b.r).norm();  // in space: a ball in the air passes over another
         if (d < reach)
         {
           std::ostringstream why;

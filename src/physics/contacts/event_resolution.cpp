@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "cue_sim/physics/motion.hpp"
 #include "physics/contacts/event_resolver.hpp"
@@ -27,8 +28,12 @@ void EventResolver<S>::resolve(const Event<S>& event)
   ball = evolve(ball, event.time, params_);
   changed(context_.index);
   const long allowance = engine_.limits().collapse_events;
-  if (at_this_instant > allowance && (event.kind == EventKind::BallBall || event.kind == EventKind::BallCushion ||
-                                      event.kind == EventKind::BallCircle))
+  // A ball in the air is no part of a collapse on the cloth (its pair is resolved as it comes).
+  const bool in_the_air =
+      ball.airborne() || (context_.other_index >= 0 && state_.balls[context_.other_index].airborne());
+  if (at_this_instant > allowance && !in_the_air &&
+      (event.kind == EventKind::BallBall || event.kind == EventKind::BallCushion ||
+       event.kind == EventKind::BallCircle))
   {
     if (context_.other_index >= 0)
       state_.balls[context_.other_index] = evolve(state_.balls[context_.other_index], event.time, params_);
@@ -96,7 +101,29 @@ template <typename S>
 void EventResolver<S>::resolveAirbornePair(Ball<S>& a, Ball<S>& b)
 {
   const Vec3<S> a_before = a.v, b_before = b.v;
-  engine_.ballBallModelInAir().resolve(a, b, params_);
+  const bool a_on_cloth = !a.airborne(), b_on_cloth = !b.airborne();
+  // A ball on the cloth stays on it: the cloth takes the vertical part of the impulse, as it
+  // does in every impact on the cloth (the slate, already in contact, takes a push down during
+  // the impact; friction lifting it is the vertical friction the ball-ball models leave to the
+  // cloth). Answered with e_table instead, a cue ball hopping into a touching rack would set it
+  // hopping, ball by ball, at one instant. The cloth's part leaves the pair closing again along
+  // their tilted line of centres, so the impulses follow one another, as at a wall
+  // (kMaxWallImpulses), and what they leave of the closing the flying ball loses.
+  const auto keepOnCloth = [&] {
+    if (a_on_cloth)
+      a.v.z() = S(0);
+    if (b_on_cloth)
+      b.v.z() = S(0);
+  };
+  const Vec3<S> n = (b.r - a.r).normalized();
+  for (int impulse = 0; impulse == 0 || (impulse < kMaxWallImpulses && (a.v - b.v).dot(n) > zeroSpeed<S>()); ++impulse)
+  {
+    engine_.ballBallModelInAir().resolve(a, b, params_);
+    keepOnCloth();
+  }
+  const S closing = (a.v - b.v).dot(n);
+  if (closing > zeroSpeed<S>())
+    (a_on_cloth ? b : a).v += (a_on_cloth ? closing : -closing) * n;
   if (a.v == a_before && b.v == b_before)
   {
     // Found closing by the gap polynomial but not by the model: parted by a few ulps of speed.
@@ -105,8 +132,10 @@ void EventResolver<S>::resolveAirbornePair(Ball<S>& a, Ball<S>& b)
     a.v -= S(0.5) * part * n;
     b.v += S(0.5) * part * n;
   }
+  keepOnCloth();
   for (Ball<S>* ball : {&a, &b})
   {
+    // A ball coming down from the air meets the slate anew.
     if (ball->r.z() - params_.ball_radius <= onClothHeight(params_.ball_radius) && ball->v.z() < S(0))
       landOnSlate(*ball, engine_.ballTableModel(), params_);
     else
@@ -122,7 +151,15 @@ void EventResolver<S>::resolveWall(Ball<S>& ball, const Event<S>& event)
                         : (ball.r.template head<2>() - geometry_.circles[event.obstacle].centre).normalized();
   const Vec3<S> normal(n.x(), n.y(), S(0));
   const Vec3<S> v_before = ball.v, w_before = ball.w;
+  // The cushion models take a ball on the cloth (the cloth takes their vertical part). A ball in
+  // the air meets the wall as a vertical face (doc/physics.md, "Balls in the air"): the models
+  // resolve its level motion, and it keeps its vertical speed.
+  const bool flying = ball.airborne();
+  if (flying)
+    ball.v.z() = S(0);
   wallImpact(ball, normal);
+  if (flying)
+    ball.v.z() = v_before.z();
   settleMotion(ball, params_.ball_radius);
   holdAgainstWall(ball, normal);
   if (ball.v == v_before && ball.w == w_before)

@@ -62,7 +62,8 @@ std::vector<int> EventResolver<S>::touchingGroup(S time, int first, int second)
           cannotReach(state_.balls[j], state_.balls[group[k]].r, touching, time))
         continue;
       const Ball<S> at_time = evolve(state_.balls[j], time, params_);
-      if ((at_time.r - state_.balls[group[k]].r).template head<2>().norm() <= touching)
+      // A ball in the air is no part of a group on the cloth (it meets balls pair by pair).
+      if (!at_time.airborne() && (at_time.r - state_.balls[group[k]].r).template head<2>().norm() <= touching)
       {
         state_.balls[j] = at_time;
         group.push_back(j);

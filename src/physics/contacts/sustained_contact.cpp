@@ -53,8 +53,8 @@ bool EventResolver<S>::growCluster(S time, const Vec3<S>& v, std::vector<int>& c
       Ball<S> joined = state_.balls[member];
       joined.v = v;
       const S closing = closingSpeed(at_time, joined);
-      if ((at_time.r - joined.r).template head<2>().norm() <= touching && closing > -zeroSpeed<S>() &&
-          closing < S(engine_.limits().sustained_contact_speed))
+      if (!at_time.airborne() && (at_time.r - joined.r).template head<2>().norm() <= touching &&
+          closing > -zeroSpeed<S>() && closing < S(engine_.limits().sustained_contact_speed))
       {
         state_.balls[j] = at_time;
         cluster.push_back(j);
@@ -110,11 +110,23 @@ void EventResolver<S>::moveAsOne(Ball<S>& joined, const std::vector<int>& cluste
       settleMotion(joined, params_.ball_radius);
       holdAgainstWall(joined, normal);
     }
+  const bool level = std::none_of(cluster.begin(), cluster.end(), [&](int c) { return state_.balls[c].airborne(); });
   for (int c : cluster)
   {
-    state_.balls[c].v = joined.v;
-    state_.balls[c].w = joined.w;
-    state_.balls[c].motion = joined.motion;
+    Ball<S>& ball = state_.balls[c];
+    const S v_z = ball.v.z();
+    ball.v = joined.v;
+    ball.w = joined.w;
+    if (level)
+      ball.motion = joined.motion;
+    else
+    {
+      // A cluster with a ball in the air (a ball hopping while wedged between others or a wall)
+      // moves as one across the cloth; a ball in the air keeps its height and its vertical
+      // speed, one on the cloth stays there.
+      ball.v.z() = ball.airborne() ? v_z : S(0);
+      settleMotion(ball, params_.ball_radius);
+    }
     changed(c);
   }
 }

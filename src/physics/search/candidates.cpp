@@ -18,20 +18,19 @@ S horizon(S end, S base)
   return std::isfinite(static_cast<double>(end)) ? end - base : kEndlessHorizon<S>;
 }
 
-/// The path re-expanded about a time `delta` after its own base.
+/// The path's position and velocity terms re-expanded about a time `delta` after its own base
+/// (its acceleration term is the same about any time).
 template <typename S>
-Trajectory<S> shifted(const Trajectory<S>& path, S delta)
+void shifted(const Trajectory<S>& path, S delta, Vec2<S>& c0, Vec2<S>& c1)
 {
   if (delta == S(0))
-    return path;
-  Trajectory<S> out;
-  out.c0 = path.at(delta);
-  out.c1 = path.velocityAt(delta);
-  out.c2 = path.c2;
-  out.h0 = path.heightAt(delta);
-  out.h1 = path.h1 + S(2) * delta * path.h2;
-  out.h2 = path.h2;
-  return out;
+  {
+    c0 = path.c0;
+    c1 = path.c1;
+    return;
+  }
+  c0 = path.at(delta);
+  c1 = path.velocityAt(delta);
 }
 
 /// Smallest and largest value of c0 + c1 tau + c2 tau^2 over tau in [T0, T] (T may be +inf).
@@ -199,16 +198,19 @@ PairMotion<S> PairMotion<S>::of(const BallRecords<S>& records, int i, int j)
   const auto& rj = records[j];
   PairMotion m;
   m.base = std::max(ri.time, rj.time);
-  const Trajectory<S> pi = shifted(ri.path, m.base - ri.time);
-  const Trajectory<S> pj = shifted(rj.path, m.base - rj.time);
-  m.c0 = pi.c0 - pj.c0;
-  m.c1 = pi.c1 - pj.c1;
-  m.c2 = pi.c2 - pj.c2;
+  const S di = m.base - ri.time, dj = m.base - rj.time;
+  Vec2<S> c0i, c1i, c0j, c1j;
+  shifted(ri.path, di, c0i, c1i);
+  shifted(rj.path, dj, c0j, c1j);
+  m.c0 = c0i - c0j;
+  m.c1 = c1i - c1j;
+  m.c2 = ri.path.c2 - rj.path.c2;
   m.airborne = ri.airborne || rj.airborne;
-  if (m.airborne)
+  if (m.airborne)  // on the cloth every height term is zero
   {
-    m.h0 = pi.h0 - pj.h0;
-    m.h1 = pi.h1 - pj.h1;
+    const Trajectory<S>&pi = ri.path, &pj = rj.path;
+    m.h0 = pi.heightAt(di) - pj.heightAt(dj);
+    m.h1 = (pi.h1 + S(2) * di * pi.h2) - (pj.h1 + S(2) * dj * pj.h2);
     m.h2 = pi.h2 - pj.h2;
   }
   m.limit = horizon(std::min(ri.first.time, rj.first.time), m.base);

@@ -55,7 +55,7 @@ struct Candidate
 };
 
 /// What the search knows of one ball, computed once per change of the ball: laid out so that a
-/// pair test reads two cache lines of each ball and nothing else. Every field is set by
+/// pair test on the cloth reads two cache lines of each ball and nothing else. Every field is set by
 /// CandidateFinder::restingPath or computePath before it is read.
 template <typename S>
 struct alignas(64) BallRecord
@@ -64,13 +64,15 @@ struct alignas(64) BallRecord
   /// whose boxes are apart cannot meet before one of the windows ends. A window shorter than
   /// the path keeps the box small on a large table; it is drawn further when it ends.
   Vec2<S> low, high;
-  Trajectory<S> path;  ///< about the ball's own reference time
-  S time;              ///< the ball's reference time
+  S time;  ///< the ball's reference time
   S window;
   /// The ball's earliest event of its own (transition, cushion, jaw, pocket): the ball
   /// changes then, so nothing of it later than this needs finding yet.
   Candidate<S> first;
   bool in_play, translating, airborne;
+  /// About the ball's own reference time. Last, so that a pair on the cloth reads the first two
+  /// cache lines only: the heights, read for a ball in the air, lie in the third.
+  Trajectory<S> path;
 };
 
 template <typename S>
