@@ -18,7 +18,9 @@ int main(int argc, char** argv)
 {
   CLI::App app{"Renders the simulated overhead camera's picture of a rack or a break to a PNG."};
   std::string table_name = "7ft", rack = "eight", out = "camera.png";
-  double after_ms = 0, speed = 8.0, phi = 0.002, exposure = 0.004, height = cue_sim::camera::kOverheadHeight, noise = 0;
+  double after_ms = 0, speed = 8.0, phi = 0.002, theta = 0, exposure = 0.004, height = cue_sim::camera::kOverheadHeight,
+         noise = 0;
+  std::string cue_model;  // empty: the default
   int width = 0, image_height = 0;
   std::string calibration;  // empty: the package's default
   app.add_option("--table", table_name, "a bundled table (7ft, 9ft, carom) or a URDF file");
@@ -27,6 +29,8 @@ int main(int argc, char** argv)
       ->check(CLI::Range(0.0, 60000.0));
   app.add_option("--speed", speed, "the break's cue speed [m/s]")->check(CLI::Range(0.01, 12.0));
   app.add_option("--phi", phi, "the break's heading [rad]");
+  app.add_option("--theta", theta, "the cue's elevation [rad]")->check(CLI::Range(0.0, 1.5707963267948966));
+  app.add_option("--cue-model", cue_model, "planar (the default) or sequential: an elevated cue makes the ball jump");
   app.add_option("--exposure", exposure, "[s] shutter open")->check(CLI::Range(0.0, 0.1));
   app.add_option("--height", height, "[m] the camera over the cloth's centre, looking down")
       ->check(CLI::Range(0.3, 20.0));
@@ -48,7 +52,8 @@ int main(int argc, char** argv)
   {
     using namespace cue_sim;
     const auto table = std::make_shared<const physics::TableModel>(tableFromUrdfFile(tableUrdfPath(table_name)));
-    const auto engine = std::make_shared<const physics::Engine<double>>(table, physics::PhysicsParams<double>());
+    const auto engine = std::make_shared<const physics::Engine<double>>(table, physics::PhysicsParams<double>(),
+                                                                        physics::ModelChoice("", "", "", cue_model));
     session::LiveTable live(engine, {}, rack, 0);
     const session::Stamp after = static_cast<session::Stamp>(after_ms * 1e6);
     if (after > 0)
@@ -56,6 +61,7 @@ int main(int argc, char** argv)
       session::Shot shot;
       shot.strike.speed = speed;
       shot.strike.phi = phi;
+      shot.strike.theta = theta;
       const session::StrikeOutcome outcome = live.strike(shot, 0);
       if (!outcome.success)
         throw std::invalid_argument(outcome.message);

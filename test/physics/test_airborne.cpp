@@ -13,7 +13,7 @@
 #include "cue_sim/physics/rack.hpp"
 #include "cue_sim/physics/scan.hpp"
 #include "cue_sim/physics/simulation.hpp"
-#include "physics/contacts/event_resolver.hpp"
+#include "physics/models/ball_table/slate_landing.hpp"
 #include "physics/models/ball_table/slate_bounce.hpp"
 
 using namespace cue_sim::physics;

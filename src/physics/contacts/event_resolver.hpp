@@ -7,7 +7,7 @@
 
 #include "cue_sim/physics/engine.hpp"
 #include "physics/contacts/event_resolution.hpp"
-#include "physics/contacts/slate_landing.hpp"
+#include "physics/models/ball_table/slate_landing.hpp"
 #include "physics/engine/table_geometry.hpp"
 
 namespace cue_sim

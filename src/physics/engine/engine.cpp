@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "cue_sim/physics/motion.hpp"
-#include "physics/contacts/slate_landing.hpp"
+#include "physics/models/ball_table/slate_landing.hpp"
 #include "physics/engine/table_geometry.hpp"
 
 namespace cue_sim
