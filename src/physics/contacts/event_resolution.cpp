@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
 
 #include "cue_sim/physics/motion.hpp"
 #include "physics/contacts/event_resolver.hpp"
@@ -127,7 +126,6 @@ void EventResolver<S>::resolveAirbornePair(Ball<S>& a, Ball<S>& b)
   if (a.v == a_before && b.v == b_before)
   {
     // Found closing by the gap polynomial but not by the model: parted by a few ulps of speed.
-    const Vec3<S> n = (b.r - a.r).normalized();
     const S part = roundingSpeed((a.v - b.v).norm());
     a.v -= S(0.5) * part * n;
     b.v += S(0.5) * part * n;

@@ -110,23 +110,11 @@ void EventResolver<S>::moveAsOne(Ball<S>& joined, const std::vector<int>& cluste
       settleMotion(joined, params_.ball_radius);
       holdAgainstWall(joined, normal);
     }
-  const bool level = std::none_of(cluster.begin(), cluster.end(), [&](int c) { return state_.balls[c].airborne(); });
   for (int c : cluster)
   {
-    Ball<S>& ball = state_.balls[c];
-    const S v_z = ball.v.z();
-    ball.v = joined.v;
-    ball.w = joined.w;
-    if (level)
-      ball.motion = joined.motion;
-    else
-    {
-      // A cluster with a ball in the air (a ball hopping while wedged between others or a wall)
-      // moves as one across the cloth; a ball in the air keeps its height and its vertical
-      // speed, one on the cloth stays there.
-      ball.v.z() = ball.airborne() ? v_z : S(0);
-      settleMotion(ball, params_.ball_radius);
-    }
+    state_.balls[c].v = joined.v;
+    state_.balls[c].w = joined.w;
+    state_.balls[c].motion = joined.motion;
     changed(c);
   }
 }
