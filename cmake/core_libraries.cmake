@@ -26,11 +26,13 @@ add_library(cue_sim_physics
   # the engine: the immutable model, and the table's geometry as the search reads it
   ${CUE_SIM_ROOT}/src/physics/engine/engine.cpp
   ${CUE_SIM_ROOT}/src/physics/engine/table_geometry.cpp
+  ${CUE_SIM_ROOT}/src/physics/engine/table_departure.cpp
   # the event search: the simulation (and runs of one), its queue and grid, roots and contact
   # times, and the full scan it is checked against
   ${CUE_SIM_ROOT}/src/physics/search/simulation.cpp
   ${CUE_SIM_ROOT}/src/physics/search/event_search.cpp
   ${CUE_SIM_ROOT}/src/physics/search/candidates.cpp
+  ${CUE_SIM_ROOT}/src/physics/search/airborne_walls.cpp
   ${CUE_SIM_ROOT}/src/physics/search/full_scan.cpp
   ${CUE_SIM_ROOT}/src/physics/search/polynomial.cpp
   # what an event does: impacts of touching groups, sustained contact, pocketing

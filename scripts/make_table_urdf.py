@@ -9,7 +9,9 @@ The link naming convention the simulator reads (doc/tools.md, "Describing a tabl
   pocket_<name>  collision cylinder: a ball whose centre enters the circle drops
   jaw_<name>     collision cylinder: a circular cushion (pocket jaw); a straight cushion
                  ends where its jaw begins
-Other links (rails_*, legs) are visual only. All joints are fixed.
+  rails_<name>   collision box: the wooden rail; a ball flying over a cushion lands on the
+                 rails' top, and beyond their outer edges it falls off the table
+Other links (legs) are visual only. All joints are fixed.
 Run it again after changing a dimension here; the files are committed.
 """
 import math
@@ -18,6 +20,7 @@ import os
 CUSHION_WIDTH = 0.05  # [m] nose to rail
 NOSE_HEIGHT = 0.036576  # [m] 0.64 x 2R
 RAIL_WIDTH = 0.10  # [m] wood beyond the cushion
+RAIL_BELOW = 0.005  # [m] how far the rail reaches below the cloth's top
 JAW_RADIUS = 0.01  # [m] the rounded end of a cushion at a pocket
 CAPTURE_RADIUS = 0.15  # [m] pocket capture circles
 
@@ -145,7 +148,7 @@ def table(name, length, width, corner_mouth=None, side_mouth=None):
             hole = cylinder(math.dist(jaw1, jaw2) / 2, 0.003)
             lines += link(p_name, (cylinder(CAPTURE_RADIUS, 0.1), (0, 0, -0.05), None), (hole, mid, "pocket"))
             lines += joint(p_name, (centre[0], centre[1], 0))
-    # Wooden rails outside the cushions: visual only.
+    # Wooden rails outside the cushions, their top flush with the cushions' nose.
     outer = CUSHION_WIDTH + RAIL_WIDTH / 2
     rails = [
         ("rails_yneg", (0, -hy - outer), (length + 2 * (CUSHION_WIDTH + RAIL_WIDTH), RAIL_WIDTH)),
@@ -154,7 +157,8 @@ def table(name, length, width, corner_mouth=None, side_mouth=None):
         ("rails_foot", (hx + outer, 0), (RAIL_WIDTH, width + 2 * CUSHION_WIDTH)),
     ]
     for r_name, centre, (sx, sy) in rails:
-        lines += link(r_name, None, (box(sx, sy, 0.045), (0, 0, 0.0225 - 0.005), "wood"))
+        rail = (box(sx, sy, NOSE_HEIGHT + RAIL_BELOW), (0, 0, (NOSE_HEIGHT - RAIL_BELOW) / 2), "wood")
+        lines += link(r_name, rail, rail)
         lines += joint(r_name, (centre[0], centre[1], 0))
     lines.append("</robot>")
     return "\n".join(lines) + "\n"

@@ -4,6 +4,7 @@
 #include <urdf_parser/urdf_parser.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -59,8 +60,15 @@ public:
     std::vector<CushionSegment> segments;
     std::vector<CircularCushion> circles;
     std::vector<Pocket> pockets;
+    physics::TableEdge edge;
+    bool has_rails = false;
     for (const auto& [name, link] : model_.links_)
     {
+      if (startsWith(name, "rails_") && link->collision)
+      {
+        addRail(*link, edge, has_rails);
+        continue;
+      }
       if (startsWith(name, "cushion_"))
       {
         const auto [pose, size] = boxOf(*link);
@@ -84,8 +92,12 @@ public:
     if (segments.empty())
       fail("no cushion links: name each straight cushion 'cushion_<name>' with a collision box");
     const Eigen::Vector3d centre = cloth_pose.translation();
+    const Eigen::Vector2d half(length / 2, width / 2);
+    if (has_rails && ((edge.low - (centre.head<2>() - half)).maxCoeff() > 0 ||
+                      ((centre.head<2>() + half) - edge.high).maxCoeff() > 0))
+      fail("the rails' outer edges must enclose link 'cloth'");
     TableModel table(model_.getName(), centre.head<2>(), length, width, std::move(segments), std::move(circles),
-                     std::move(pockets));
+                     std::move(pockets), has_rails ? std::optional<physics::TableEdge>(edge) : std::nullopt);
     const std::string open = table.whyOpen();
     if (!open.empty())
       fail(open);
@@ -93,6 +105,29 @@ public:
   }
 
 private:
+  /// A rail widens the table's edge to its footprint and sets the rails' top (the highest).
+  void addRail(const urdf::Link& link, physics::TableEdge& edge, bool& has_rails) const
+  {
+    const auto [pose, size] = boxOf(link);
+    if (!isLevel(pose))
+      fail("link '" + link.name + "' must be level (rotated about z only)");
+    Eigen::Vector2d low = Eigen::Vector2d::Constant(HUGE_VAL), high = -low;
+    for (const double sx : {-0.5, 0.5})
+      for (const double sy : {-0.5, 0.5})
+      {
+        const Eigen::Vector2d corner = (pose * Eigen::Vector3d(sx * size.x(), sy * size.y(), 0)).head<2>();
+        low = low.cwiseMin(corner);
+        high = high.cwiseMax(corner);
+      }
+    const double top = (pose * Eigen::Vector3d(0, 0, size.z() / 2)).z();
+    if (!(top > 0))
+      fail("link '" + link.name + "': the rail's top must be above the cloth, it is at z = " + std::to_string(top));
+    edge.low = has_rails ? edge.low.cwiseMin(low) : low;
+    edge.high = has_rails ? edge.high.cwiseMax(high) : high;
+    edge.rail_height = has_rails ? std::max(edge.rail_height, top) : top;
+    has_rails = true;
+  }
+
   [[noreturn]] void fail(const std::string& why) const
   {
     throw TableDescriptionError("URDF '" + model_.getName() + "': " + why);

@@ -13,8 +13,8 @@
 #include "cue_sim/physics/rack.hpp"
 #include "cue_sim/physics/scan.hpp"
 #include "cue_sim/physics/simulation.hpp"
-#include "physics/models/ball_table/slate_landing.hpp"
 #include "physics/models/ball_table/slate_bounce.hpp"
+#include "physics/models/ball_table/slate_landing.hpp"
 
 using namespace cue_sim::physics;
 
@@ -394,6 +394,8 @@ bool clears(const Engine<double>& engine, double theta, double cue_speed, double
       return false;
     if (e.ball == 0 && e.kind == EventKind::BallSlate)
       return s.balls[0].r.x() > -0.7 + distance + 2 * R;  // came down beyond it
+    if (e.ball == 0 && e.kind == EventKind::OffTable)
+      return true;  // a long flight: over the ball, and over the foot cushion off the table
   }
   return false;
 }
@@ -558,4 +560,217 @@ TEST(JumpShots, ElevatedBreaksKeepEveryInvariant)
       break;
   }
   EXPECT_GT(flights, 30);
+}
+
+// Walls in three dimensions (doc/physics.md, "Balls in the air"): each cushion is a block from
+// the cloth to its nose at h = cushion_height, the rails beyond it flush with the nose and ending
+// at the table's edge. The 7-ft table in code: the ypos cushion's nose line at y = 0.4953, the
+// edge at y = 0.6453.
+namespace
+{
+struct Flight
+{
+  double z0, vy;
+};
+
+/// Ball 0 thrown level along +y from (0.2, y0) at centre height z0: beside cushion_ypos_foot.
+TableState<double> thrownAtTheYposCushion(double y0, const Flight& f)
+{
+  TableState<double> s;
+  s.balls.push_back(inTheAir(0, 0.2, y0, f.z0 - PhysicsParams<double>().ball_radius, Vec3<double>(0, f.vy, 0)));
+  return s;
+}
+}  // namespace
+
+// A ball whose centre passes the nose line higher than the nose by R or more clears the cushion:
+// it leaves the shot there, and lands on the rail where the parabola meets the rails' top, or,
+// past the table's edge, falls to the floor from where its centre crosses the edge.
+TEST(AirborneWalls, ABallHighOverACushionLandsOnTheRailOrTheFloor)
+{
+  const auto table = sevenFoot();
+  const Engine<double> engine(table, PhysicsParams<double>());
+  const PhysicsParams<double>& p = engine.params();
+  const double R = p.ball_radius, g = p.gravity, h = p.cushion_height, nose_y = 0.9906 / 2;
+  ASSERT_DOUBLE_EQ(table->edge().high.y(), nose_y + kCushionAndRailWidth);
+  for (const double vy : {2.0, 4.0})
+  {
+    SCOPED_TRACE("vy = " + std::to_string(vy));
+    const double y0 = 0.3, z0 = 0.12;
+    TableState<double> s = thrownAtTheYposCushion(y0, {z0, vy});
+    const std::vector<Event<double>> events = runChecked(engine, s);
+    ASSERT_EQ(events.size(), 1u);
+    const Event<double>& e = events[0];
+    EXPECT_EQ(e.kind, EventKind::OffTable);
+    EXPECT_NEAR(e.time, (nose_y - y0) / vy, 1e-15);  // as its centre passes over the nose
+    TableState<double> end = s;
+    simulateToRest(engine, end);
+    const Ball<double>& b = end.balls[0];
+    EXPECT_EQ(b.motion, Motion::OffTable);
+    EXPECT_FALSE(b.inPlay());
+    const double t_land = std::sqrt(2 * (z0 - (h + R)) / g), y_land = y0 + vy * t_land;
+    const double edge = table->edge().high.y();
+    if (y_land <= edge)
+    {
+      EXPECT_EQ(e.obstacle, kLandsOnRail);
+      EXPECT_NEAR(b.r.y(), y_land, 1e-12);
+      EXPECT_NEAR(b.r.z(), h + R, 1e-15);
+    }
+    else
+    {
+      EXPECT_EQ(e.obstacle, kLandsOffTable);
+      const double t_edge = (edge - y0) / vy;
+      EXPECT_NEAR(b.r.y(), edge, 1e-12);
+      EXPECT_NEAR(b.r.z(), z0 - g * t_edge * t_edge / 2, 1e-12);
+    }
+    EXPECT_EQ(b.r.x(), 0.2);
+    EXPECT_EQ(engine.whyInvalid(end), "");
+  }
+}
+
+// Above the nose but lower than R above it, the ball meets the nose's edge: at the moment its
+// centre is R from the edge line, it leaves with the normal part of its velocity (along the line
+// from the edge to the centre) reversed and scaled by e_cushion, the rest unchanged, and up.
+TEST(AirborneWalls, ABallJustAboveTheNoseBouncesOffItsEdge)
+{
+  const auto table = sevenFoot();
+  const Engine<double> engine(table, PhysicsParams<double>());
+  const PhysicsParams<double>& p = engine.params();
+  const double R = p.ball_radius, h = p.cushion_height, nose_y = 0.9906 / 2;
+  for (const double above : {0.2, 0.5, 0.9})
+  {
+    SCOPED_TRACE("centre above the nose by " + std::to_string(above) + " R");
+    TableState<double> s = thrownAtTheYposCushion(0.42, {h + above * R, 8.0});
+    s.balls[0].v.x() = 0.3;
+    s.balls[0].w = Vec3<double>(5, -7, 11);
+    const Event<double> e = scanNextEvent(engine, s);
+    ASSERT_EQ(e.kind, EventKind::BallCushion);
+    const Ball<double> before = engine.ballAt(s, 0, e.time);
+    const Vec3<double> n(0, before.r.y() - nose_y, before.r.z() - h);
+    EXPECT_NEAR(n.norm(), R, 1e-12);  // touching the edge
+    EXPECT_GT(n.z(), 0.0);
+    EXPECT_LT(n.y(), 0.0);
+    const Vec3<double> unit = n.normalized();
+    scanStep(engine, s);
+    const Ball<double>& after = s.balls[0];
+    const double vn_before = before.v.dot(unit), vn_after = after.v.dot(unit);
+    EXPECT_LT(vn_before, 0.0);
+    EXPECT_NEAR(vn_after, -p.e_cushion * vn_before, 1e-12);
+    EXPECT_LT(((after.v - vn_after * unit) - (before.v - vn_before * unit)).norm(), 1e-12);
+    EXPECT_EQ(after.w, before.w);
+    if (above <= 0.5)
+      EXPECT_LT(after.v.y(), 0.0);  // thrown back; higher up, it glances on over the top
+    EXPECT_GT(after.v.z(), before.v.z());
+    EXPECT_TRUE(after.airborne());
+  }
+}
+
+// Below the nose the face takes the ball as on the cloth: its level motion by the cushion model,
+// its vertical speed kept.
+TEST(AirborneWalls, ABallBelowTheNoseReboundsOffTheFace)
+{
+  const auto table = sevenFoot();
+  const Engine<double> engine(table, PhysicsParams<double>());
+  const double R = engine.params().ball_radius, h = engine.params().cushion_height;
+  TableState<double> s = thrownAtTheYposCushion(0.42, {h - 0.2 * R, 6.0});
+  s.balls[0].v.z() = 0.5;
+  const Event<double> e = scanNextEvent(engine, s);
+  ASSERT_EQ(e.kind, EventKind::BallCushion);
+  const Ball<double> before = engine.ballAt(s, 0, e.time);
+  EXPECT_NEAR(0.9906 / 2 - before.r.y(), R, 1e-12);
+  EXPECT_LE(before.r.z(), h);
+  scanStep(engine, s);
+  EXPECT_LT(s.balls[0].v.y(), 0.0);
+  EXPECT_EQ(s.balls[0].v.z(), before.v.z());
+}
+
+// Pockets from the air: a ball low in the mouth drops as on the cloth; one over the mouth higher
+// than a ball between the jaws can be drops only if it comes down to the rails' top inside the
+// capture circle; flying further, it leaves the table.
+TEST(AirborneWalls, APocketTakesABallFromTheAirOnlyIfItComesDownInIt)
+{
+  const auto table = sevenFoot();
+  const Engine<double> engine(table, PhysicsParams<double>());
+  const double R = engine.params().ball_radius;
+  const int side_ypos = [&] {
+    int k = -1;
+    EXPECT_EQ(table->whyNoPocket("pocket_side_ypos", k), "");
+    return k;
+  }();
+  struct Case
+  {
+    double z0, vy;
+    EventKind kind;
+    int obstacle;
+  };
+  for (const Case& c :
+       {Case{R + 0.002, 2.0, EventKind::Pocketed, side_ypos}, Case{0.2, 1.0, EventKind::Pocketed, side_ypos},
+        Case{0.2, 3.0, EventKind::OffTable, kLandsOffTable}})
+  {
+    SCOPED_TRACE("z0 " + std::to_string(c.z0) + ", vy " + std::to_string(c.vy));
+    TableState<double> s;
+    s.balls.push_back(inTheAir(0, 0.0, 0.35, c.z0 - R, Vec3<double>(0, c.vy, 0)));
+    std::vector<Event<double>> events = runChecked(engine, s);
+    ASSERT_FALSE(events.empty());
+    EXPECT_EQ(events.back().kind, c.kind);
+    EXPECT_EQ(events.back().obstacle, c.obstacle);
+    EXPECT_EQ(countKind(events, EventKind::BallCircle) + countKind(events, EventKind::BallCushion), 0);
+  }
+}
+
+// Hostile: balls thrown at every wall from every height and speed, among balls on the cloth. The
+// kept search agrees with a full scan bit for bit, every invariant holds at every event, and the
+// edges, the rails and the floor are all reached.
+TEST(AirborneWalls, ThrowsAtEveryWallKeepTheInvariantsAndTheScan)
+{
+  std::mt19937 rng(3303);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const auto table = sevenFoot();
+  const Engine<double> engine(table, PhysicsParams<double>());
+  const double R = engine.params().ball_radius;
+  int off_table = 0, walls_in_the_air = 0;
+  for (int k = 0; k < 60; ++k)
+  {
+    SCOPED_TRACE("throw " + std::to_string(k));
+    TableState<double> s;
+    for (int id = 0; id < 4; ++id)
+    {
+      const double x = (unit(rng) - 0.5) * (1.9812 - 4 * R), y = (unit(rng) - 0.5) * (0.9906 - 4 * R);
+      const bool thrown = id < 2;
+      const double angle = 2 * M_PI * unit(rng), speed = thrown ? 0.5 + 6 * unit(rng) : 2 * unit(rng);
+      const Vec3<double> v(speed * std::cos(angle), speed * std::sin(angle), thrown ? 3 * unit(rng) - 1 : 0.0);
+      const Ball<double> b = inTheAir(id, x, y, thrown ? 0.15 * unit(rng) : 0.0, v,
+                                      Vec3<double>(40 * (unit(rng) - 0.5), 40 * (unit(rng) - 0.5), 20 * unit(rng)));
+      bool apart = engine.table().whyNotPlaceable(b.r.head<2>(), R) == "";
+      for (const auto& other : s.balls)
+        apart = apart && (other.r - b.r).norm() > 2 * R + 1e-6;
+      if (apart)
+        s.balls.push_back(b);
+    }
+    const std::vector<Event<double>> events = runChecked(engine, s, 2);
+    TableState<double> kept = s;
+    const ShotResult<double> run = simulateToRest(engine, kept);
+    ASSERT_EQ(run.events.size(), events.size());
+    for (std::size_t i = 0; i < events.size(); ++i)
+    {
+      EXPECT_EQ(run.events[i].kind, events[i].kind) << "event " << i;
+      EXPECT_EQ(run.events[i].time, events[i].time) << "event " << i;
+    }
+    EXPECT_FALSE(kept.anyMoving());
+    EXPECT_EQ(engine.whyInvalid(kept), "");
+    off_table += countKind(events, EventKind::OffTable);
+    TableState<double> replay = s;
+    for (int n = 0; n < 20000; ++n)
+    {
+      const Event<double> e = scanStep(engine, replay);
+      if (!e.valid())
+        break;
+      if ((e.kind == EventKind::BallCushion || e.kind == EventKind::BallCircle) &&
+          replay.balls[replay.indexOf(e.ball)].airborne())
+        ++walls_in_the_air;
+    }
+    if (HasFailure())
+      break;
+  }
+  EXPECT_GT(off_table, 10);
+  EXPECT_GT(walls_in_the_air, 10);
 }

@@ -20,6 +20,7 @@ enum class Motion : std::uint8_t
   Rolling = 3,   ///< no slip: w_xy = (z x v) / R
   Pocketed = 4,  ///< out of play
   Airborne = 5,  ///< off the cloth: in flight under gravity (src/physics/models/flight.hpp)
+  OffTable = 6,  ///< out of play: it flew over a cushion onto the rail or the floor (r: where it landed)
 };
 
 const char* motionName(Motion motion);
@@ -45,7 +46,7 @@ struct Ball
   Vec3<S> w = Vec3<S>::Zero();  ///< angular velocity [rad/s]
   int pocket = -1;              ///< index into TableModel::pockets when pocketed
 
-  bool inPlay() const { return motion != Motion::Pocketed; }
+  bool inPlay() const { return motion != Motion::Pocketed && motion != Motion::OffTable; }
   bool moving() const { return translating() || motion == Motion::Spinning; }
   /// Its centre moves (a ball in the air counts, even one dropped straight down).
   bool translating() const

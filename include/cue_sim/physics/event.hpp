@@ -22,6 +22,14 @@ enum class EventKind : int
   BallCircle = 12,   ///< `ball` hit circular cushion `obstacle` (jaw or cushion end)
   Pocketed = 13,     ///< `ball` dropped into pocket `obstacle`
   BallSlate = 14,    ///< `ball` came down onto the slate from the air (it bounces, or stays on the cloth)
+  OffTable = 15,     ///< `ball` flew over the cushions out of play; `obstacle` says where it lands (below)
+};
+
+/// Where a ball that left the table lands (Event::obstacle of an OffTable event).
+enum OffTablePlace : int
+{
+  kLandsOnRail = 0,   ///< on the rail's top, inside the table's edge (Ball::r is where it lands)
+  kLandsOffTable = 1  ///< beyond the table's edge, on the floor (Ball::r is where it crossed the edge)
 };
 
 const char* eventKindName(EventKind kind);

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,12 +42,29 @@ struct Pocket
   double radius = 0;
 };
 
+/// The table's top beyond its cushions: the rails a ball flying over a cushion lands on, and the
+/// edge past which it falls to the floor (doc/physics.md, "Balls in the air").
+struct TableEdge
+{
+  Eigen::Vector2d low, high;  ///< the table's outer edge, a level rectangle [m]
+  /// The rails' top above the cloth [m]; NaN: flush with the cushions' nose
+  /// (PhysicsParams::cushion_height), as on the tables in urdf/.
+  double rail_height = std::numeric_limits<double>::quiet_NaN();
+};
+
+/// How far the table reaches beyond the cloth when its description does not say: a 5 cm
+/// cushion and a 10 cm rail, as the tables in urdf/ (scripts/make_table_urdf.py).
+constexpr double kCushionAndRailWidth = 0.15;  // [m]
+
 class TableModel
 {
 public:
-  /// The playing surface is the rectangle |x - cx| <= length/2, |y - cy| <= width/2.
+  /// The playing surface is the rectangle |x - cx| <= length/2, |y - cy| <= width/2. Without an
+  /// `edge`, the table's edge is kCushionAndRailWidth beyond the cloth's and its rails are flush
+  /// with the cushions.
   TableModel(std::string name, Eigen::Vector2d cloth_centre, double cloth_length, double cloth_width,
-             std::vector<CushionSegment> segments, std::vector<CircularCushion> circles, std::vector<Pocket> pockets);
+             std::vector<CushionSegment> segments, std::vector<CircularCushion> circles, std::vector<Pocket> pockets,
+             std::optional<TableEdge> edge = std::nullopt);
 
   /// A segment from start to end whose playing side is to the left of start -> end.
   static CushionSegment makeSegment(std::string name, const Eigen::Vector2d& start, const Eigen::Vector2d& end);
@@ -66,6 +85,8 @@ public:
   /// Jaws and segment end caps.
   const std::vector<CircularCushion>& circles() const { return circles_; }
   const std::vector<Pocket>& pockets() const { return pockets_; }
+  /// The rails and the table's outer edge.
+  const TableEdge& edge() const { return edge_; }
   /// The index of the pocket named `name` (an empty name: -1, no pocket), or why there is none,
   /// listing the pockets' names.
   std::string whyNoPocket(const std::string& name, int& index) const;
@@ -98,6 +119,7 @@ private:
   std::vector<CushionSegment> segments_;
   std::vector<CircularCushion> circles_;
   std::vector<Pocket> pockets_;
+  TableEdge edge_;
 };
 
 }  // namespace physics

@@ -5,6 +5,7 @@
 
 #include "cue_sim/physics/motion.hpp"
 #include "physics/contacts/event_resolver.hpp"
+#include "physics/engine/table_departure.hpp"
 
 namespace cue_sim
 {
@@ -53,6 +54,9 @@ void EventResolver<S>::resolve(const Event<S>& event)
       break;
     case EventKind::BallSlate:
       landOnSlate(ball, engine_.ballTableModel(), params_);
+      break;
+    case EventKind::OffTable:
+      leaveTable(ball);
       break;
     default:
       applyTransition(ball, params_);
@@ -142,8 +146,58 @@ void EventResolver<S>::resolveAirbornePair(Ball<S>& a, Ball<S>& b)
 }
 
 template <typename S>
+void EventResolver<S>::leaveTable(Ball<S>& ball)
+{
+  const Departure<S> d = departureOf(ball, geometry_, params_);
+  if (d.kind == EventKind::Pocketed)
+  {
+    pocketBall(ball, d.obstacle);
+    return;
+  }
+  ball.motion = Motion::OffTable;
+  ball.pocket = -1;
+  ball.r = d.where;
+  ball.v.setZero();
+  ball.w.setZero();
+}
+
+template <typename S>
+bool EventResolver<S>::resolveWallTop(Ball<S>& ball, const Event<S>& event)
+{
+  // Above the wall's top: the nose's edge (or the post's rim) takes the impact, along the line
+  // from its nearest point to the centre, with the cushion's restitution and no friction
+  // (doc/physics.md, "Balls in the air").
+  const S above = ball.r.z() - geometry_.nose_height;
+  if (!ball.airborne() || !(above > S(0)))
+    return false;
+  Vec2<S> out;
+  if (event.kind == EventKind::BallCushion)
+  {
+    const auto& seg = geometry_.segments[event.obstacle];
+    out = std::max(seg.normal.dot(ball.r.template head<2>() - seg.start), S(0)) * seg.normal;
+  }
+  else
+  {
+    const auto& post = geometry_.circles[event.obstacle];
+    const Vec2<S> from_centre = ball.r.template head<2>() - post.centre;
+    const S distance = from_centre.norm();
+    out = distance > post.radius ? Vec2<S>((distance - post.radius) / distance * from_centre) : Vec2<S>::Zero();
+  }
+  const Vec3<S> normal = Vec3<S>(out.x(), out.y(), above).normalized();
+  const S approach = ball.v.dot(normal);
+  if (approach < S(0))
+    ball.v -= (S(1) + params_.e_cushion) * approach * normal;
+  else
+    ball.v += roundingSpeed(ball.v.norm()) * normal;  // closing within rounding: moved off
+  settleMotion(ball, params_.ball_radius);
+  return true;
+}
+
+template <typename S>
 void EventResolver<S>::resolveWall(Ball<S>& ball, const Event<S>& event)
 {
+  if (resolveWallTop(ball, event))
+    return;
   const Vec2<S> n = event.kind == EventKind::BallCushion
                         ? geometry_.segments[event.obstacle].normal
                         : (ball.r.template head<2>() - geometry_.circles[event.obstacle].centre).normalized();

@@ -7,8 +7,8 @@
 
 #include "cue_sim/physics/engine.hpp"
 #include "physics/contacts/event_resolution.hpp"
-#include "physics/models/ball_table/slate_landing.hpp"
 #include "physics/engine/table_geometry.hpp"
+#include "physics/models/ball_table/slate_landing.hpp"
 
 namespace cue_sim
 {
@@ -105,6 +105,11 @@ private:
   /// centres in three dimensions, then any ball it drives into the slate lands on it.
   void resolveAirbornePair(Ball<S>& a, Ball<S>& b);
   void resolveWall(Ball<S>& ball, const Event<S>& event);
+  /// A ball in the air above the wall's top meets its nose's edge or its post's rim: true if so
+  /// (and resolved).
+  bool resolveWallTop(Ball<S>& ball, const Event<S>& event);
+  /// A ball in the air past the cushions lands on the rail, the floor or in a pocket.
+  void leaveTable(Ball<S>& ball);
   /// The cushion model's impulses on a ball closing on a wall (`normal` into play), until it no
   /// longer closes; what kMaxWallImpulses of them leave of its motion into the wall, the wall
   /// stops.

@@ -30,7 +30,7 @@ Engine<S>::Engine(std::shared_ptr<const TableModel> table, const PhysicsParams<S
     throw std::invalid_argument("physics parameter " + why);
   if (ball_ball_->needsCloth())
     ball_ball_in_air_ = makeBallBallModel<S>(ballBallModelNames().front());
-  geometry_ = std::make_shared<const TableGeometry<S>>(*table_, params_.ball_radius);
+  geometry_ = std::make_shared<const TableGeometry<S>>(*table_, params_.ball_radius, params_.cushion_height);
 }
 
 template <typename S>

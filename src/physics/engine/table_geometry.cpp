@@ -1,13 +1,18 @@
 #include "physics/engine/table_geometry.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace cue_sim
 {
 namespace physics
 {
 template <typename S>
-TableGeometry<S>::TableGeometry(const TableModel& table, S R)
+TableGeometry<S>::TableGeometry(const TableModel& table, S R, S cushion_height)
+  : nose_height(cushion_height),
+    rail_height(std::isnan(table.edge().rail_height) ? cushion_height : S(table.edge().rail_height)),
+    edge_low(table.edge().low.cast<S>()),
+    edge_high(table.edge().high.cast<S>())
 {
   const S margin = S(kBoxMargin);
   const Vec2<S> spread(R + margin, R + margin);

@@ -36,8 +36,12 @@ struct TableGeometry
   /// A box about the cloth's centre that no cushion's, jaw's or pocket's box reaches: a ball
   /// whose centre is in it touches no wall.
   Vec2<S> clear_low, clear_high;
+  /// Heights above the cloth [m]: the cushions' (and jaws') nose, the top a flying ball clears,
+  /// and the rails' top, where a ball that clears them lands.
+  S nose_height, rail_height;
+  Vec2<S> edge_low, edge_high;  ///< the table's outer edge: beyond it, the floor
 
-  TableGeometry(const TableModel& table, S ball_radius);
+  TableGeometry(const TableModel& table, S ball_radius, S cushion_height);
 };
 
 }  // namespace physics

@@ -32,6 +32,8 @@ const char* eventKindName(EventKind kind)
       return "pocketed";
     case EventKind::BallSlate:
       return "ball_slate";
+    case EventKind::OffTable:
+      return "off_table";
   }
   return "unknown";
 }

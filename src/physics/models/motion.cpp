@@ -25,6 +25,8 @@ const char* motionName(Motion motion)
       return "pocketed";
     case Motion::Airborne:
       return "airborne";
+    case Motion::OffTable:
+      return "off_table";
   }
   return "unknown";
 }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/engine/table_departure.hpp"
+#include "physics/search/airborne_walls.hpp"
 #include "physics/search/contact_times.hpp"
 
 namespace cue_sim
@@ -298,6 +300,11 @@ void CandidateFinder<S>::computeOwnEvent(const Ball<S>& ball, int index, BallRec
   if (!ball.translating())
     return;
   const S R = params_.ball_radius;
+  if (ball.airborne())
+  {
+    findAirborneWallEvents(record.path, ball.time, geometry_, R, first);
+    return;
+  }
   OwnEventSearch<S> search(record.path, ball.time, first);
   for (std::size_t k = 0; k < geometry_.segments.size(); ++k)
     search.segment(geometry_.segments[k], k, R);
@@ -360,6 +367,19 @@ bool CandidateFinder<S>::pairCandidate(int a, int b, const BallRecords<S>& recor
 }
 
 template <typename S>
+void CandidateFinder<S>::departing(const Ball<S>& ball, const Candidate<S>& c, Event<S>& e) const
+{
+  const Ball<S> then = evolve(ball, c.time, params_);
+  if (c.rank == Candidate<S>::Pocket && !fliesOverPocket(then, geometry_, params_.ball_radius))
+    return;
+  if (c.rank == Candidate<S>::Circle && !onPostTop(then, geometry_.circles[c.obstacle], geometry_))
+    return;
+  const Departure<S> d = departureOf(then, geometry_, params_);
+  e.kind = d.kind;
+  e.obstacle = d.obstacle;
+}
+
+template <typename S>
 Event<S> CandidateFinder<S>::eventOf(const TableState<S>& state, const Candidate<S>& c) const
 {
   Event<S> e;
@@ -383,10 +403,15 @@ Event<S> CandidateFinder<S>::eventOf(const TableState<S>& state, const Candidate
     case Candidate<S>::Circle:
       e.kind = EventKind::BallCircle;
       e.obstacle = c.obstacle;
+      departing(state.balls[c.ball], c, e);
       break;
     case Candidate<S>::Pocket:
       e.kind = EventKind::Pocketed;
       e.obstacle = c.obstacle;
+      departing(state.balls[c.ball], c, e);
+      break;
+    case Candidate<S>::Overboard:
+      departing(state.balls[c.ball], c, e);
       break;
     case Candidate<S>::Pair:
       e.kind = EventKind::BallBall;

@@ -28,6 +28,7 @@ struct Candidate
     Circle = 2,
     Pocket = 3,
     Pair = 4,
+    Overboard = 5,  ///< a ball in the air passes over a cushion's nose (airborne_walls.hpp)
   };
   S time = infinity<S>();
   Rank rank = Transition;
@@ -125,6 +126,8 @@ public:
   Event<S> eventOf(const TableState<S>& state, const Candidate<S>& candidate) const;
 
 private:
+  /// A ball in the air past the cushions or over a pocket's mouth: the event says where it goes.
+  void departing(const Ball<S>& ball, const Candidate<S>& candidate, Event<S>& event) const;
   void computeOwnEvent(const Ball<S>& ball, int index, BallRecord<S>& record) const;
 
   const PhysicsParams<S>& params_;

@@ -46,7 +46,7 @@ std::vector<CircularCushion> withEndCaps(const std::vector<CushionSegment>& segm
 
 TableModel::TableModel(std::string name, Eigen::Vector2d cloth_centre, double cloth_length, double cloth_width,
                        std::vector<CushionSegment> segments, std::vector<CircularCushion> circles,
-                       std::vector<Pocket> pockets)
+                       std::vector<Pocket> pockets, std::optional<TableEdge> edge)
   : name_(std::move(name)),
     cloth_centre_(std::move(cloth_centre)),
     cloth_length_(cloth_length),
@@ -55,6 +55,14 @@ TableModel::TableModel(std::string name, Eigen::Vector2d cloth_centre, double cl
     circles_(withEndCaps(segments_, std::move(circles))),
     pockets_(std::move(pockets))
 {
+  if (edge)
+    edge_ = *edge;
+  else
+  {
+    const Eigen::Vector2d half(cloth_length_ / 2 + kCushionAndRailWidth, cloth_width_ / 2 + kCushionAndRailWidth);
+    edge_.low = cloth_centre_ - half;
+    edge_.high = cloth_centre_ + half;
+  }
 }
 
 CushionSegment TableModel::makeSegment(std::string name, const Eigen::Vector2d& start, const Eigen::Vector2d& end)

@@ -1,0 +1,246 @@
+#include "physics/search/airborne_walls.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "physics/search/contact_times.hpp"
+
+namespace cue_sim
+{
+namespace physics
+{
+namespace
+{
+/// A post's rim is searched on this many samples of the time the ball is within its reach, then
+/// by bisection to the last bit. A graze between two samples that the samples miss is shallower
+/// than (the interval / this)^2 |f''| / 8: under a nanometre for any flight on a table.
+constexpr int kRimSamples = 64;
+
+/// The search for one flying ball: each wall is searched up to the earliest event found so far.
+template <typename S>
+class AirborneWallSearch
+{
+public:
+  AirborneWallSearch(const Trajectory<S>& path, S base, const TableGeometry<S>& geometry, S R, Candidate<S>& first)
+    : p_(path), base_(base), g_(geometry), R_(R), first_(first)
+  {
+  }
+
+  void run()
+  {
+    for (std::size_t k = 0; k < g_.segments.size(); ++k)
+      segment(g_.segments[k], k);
+    for (std::size_t k = 0; k < g_.circles.size(); ++k)
+      post(g_.circles[k], k);
+    for (std::size_t k = 0; k < g_.pockets.size(); ++k)
+      pocket(g_.pockets[k], k);
+  }
+
+private:
+  using Segment = typename TableGeometry<S>::Segment;
+  using Circle = typename TableGeometry<S>::Circle;
+
+  S limit() const
+  {
+    const S end = first_.time - base_;
+    return std::isfinite(static_cast<double>(end)) ? end : kEndlessHorizon<S>;
+  }
+  /// The centre's height above the walls' top at tau (the path's height is the ball's lowest
+  /// point's, R below the centre).
+  S aboveTop(S tau) const { return p_.heightAt(tau) + R_ - g_.nose_height; }
+
+  void segment(const Segment& seg, std::size_t k)
+  {
+    const Vec2<S> rel = p_.c0 - seg.start;
+    const Poly4<S> across = {seg.normal.dot(rel), seg.normal.dot(p_.c1), seg.normal.dot(p_.c2), S(0), S(0)};
+    const auto beside = [&](S tau) {
+      const S along = seg.direction.dot(p_.at(tau) - seg.start);
+      return along >= S(0) && along <= seg.length;
+    };
+    // The face: the centre R in front of the cushion's line, at or below its top.
+    const Poly4<S> face = {across[0] - R_, across[1], across[2], S(0), S(0)};
+    const S tau_face = contactTime(face, limit(), -zeroSpeed<S>(), touchTolerance(R_), true);
+    if (tau_face <= limit() && beside(tau_face) && aboveTop(tau_face) <= S(0))
+      keep(tau_face, Candidate<S>::Segment, k);
+    // The nose's edge: the centre R from the line along the top of the face, in front of the
+    // face and above its top: across^2 + above^2 - R^2, a quartic.
+    const Poly4<S> edge = distanceGap<S>(Vec2<S>(across[0], S(0)), Vec2<S>(across[1], S(0)), Vec2<S>(across[2], S(0)),
+                                         p_.h0 + R_ - g_.nose_height, p_.h1, p_.h2, R_);
+    S from = S(0);
+    for (int root = 0; root < 4; ++root)
+    {
+      const S tau = root == 0 ? contactTime(edge, limit(), -S(2) * R_ * zeroSpeed<S>(), touchTolerance(R_ * R_))
+                              : firstDownCrossing(edge, from, limit());
+      if (!(tau <= limit()))
+        break;
+      if (evaluatePoly(across, tau) >= S(0) && aboveTop(tau) > S(0) && beside(tau))
+      {
+        keep(tau, Candidate<S>::Segment, k);
+        break;
+      }
+      if (!(tau > from))
+        break;
+      from = tau;
+    }
+    // Over the top: the centre crosses the nose's line above it.
+    if (across[0] > S(0))
+    {
+      const S tau = firstDownCrossing(across, S(0), limit());
+      if (tau <= limit() && beside(tau) && aboveTop(tau) > S(0))
+        keep(tau, Candidate<S>::Overboard, k);
+    }
+  }
+
+  /// The squared distance from the centre to a post of radius rho at `centre` (its side, its rim
+  /// or its top, whichever is nearest), less R^2.
+  S postGap(const Circle& post, S tau) const
+  {
+    const S side = std::max((p_.at(tau) - post.centre).norm() - post.radius, S(0));
+    const S above = std::max(aboveTop(tau), S(0));
+    return side * side + above * above - R_ * R_;
+  }
+
+  void post(const Circle& post, std::size_t k)
+  {
+    const S reach = R_ + post.radius;
+    const Vec2<S> rel = p_.c0 - post.centre;
+    if (cannotMeet<S>(rel, p_.c1, p_.c2, reach, limit()))
+      return;
+    const Poly4<S> within = distanceGap<S>(rel, p_.c1, p_.c2, reach);
+    const S touch = touchTolerance(reach * reach);
+    S enter = S(0);
+    if (within[0] > touch || aboveTop(S(0)) <= S(0))
+    {
+      // Its side, met as on the cloth, while the centre is no higher than the post's top.
+      enter = contactTime(within, limit(), -S(2) * reach * zeroSpeed<S>(), touch, true);
+      if (!(enter <= limit()))
+        return;
+      if (aboveTop(enter) <= S(0))
+      {
+        keep(enter, Candidate<S>::Circle, k);
+        return;
+      }
+    }
+    // Above the post while within its reach: its rim or its top. Out of reach again, the ball
+    // may come back within it (a flight across a corner).
+    for (int pass = 0; pass < 2; ++pass)
+    {
+      S leave = limit();
+      S roots[4];
+      const int n = polyRootsIn(within, enter, limit(), roots);
+      for (int i = 0; i < n; ++i)
+        if (roots[i] > enter)
+        {
+          leave = roots[i];
+          break;
+        }
+      S tau;
+      if (rimContact(post, enter, leave, tau))
+      {
+        keep(tau, Candidate<S>::Circle, k);
+        return;
+      }
+      enter = firstDownCrossing(within, leave, limit());
+      if (!(enter <= limit()))
+        return;
+      if (aboveTop(enter) <= S(0))
+      {
+        keep(enter, Candidate<S>::Circle, k);
+        return;
+      }
+    }
+  }
+
+  /// The first contact with the post's rim or top in [lo, hi]. At lo the ball may be touching it
+  /// (just off it): that is a contact only if it moves into the post.
+  bool rimContact(const Circle& post, S lo, S hi, S& tau) const
+  {
+    const S touch = touchTolerance(R_ * R_);
+    if (postGap(post, lo) <= touch && closingOnPost(post, lo))
+    {
+      tau = lo;
+      return true;
+    }
+    S apart = postGap(post, lo) > touch ? lo : -S(1);
+    for (int i = 1; i <= kRimSamples; ++i)
+    {
+      const S t = lo + (hi - lo) * S(i) / S(kRimSamples);
+      const S gap = postGap(post, t);
+      if (gap > touch)
+        apart = t;
+      else if (apart >= S(0) && gap <= S(0))
+      {
+        tau = bisect(post, apart, t);
+        return true;
+      }
+    }
+    return false;
+  }
+
+  /// Whether the ball moves into the post's rim or top at tau.
+  bool closingOnPost(const Circle& post, S tau) const
+  {
+    const Vec2<S> out = p_.at(tau) - post.centre;
+    const S side = std::max(out.norm() - post.radius, S(0));
+    const Vec2<S> v = p_.velocityAt(tau);
+    const S radial = side > S(0) ? v.dot(out.normalized()) : S(0);
+    const S vertical = p_.h1 + S(2) * tau * p_.h2;
+    return side * radial + std::max(aboveTop(tau), S(0)) * vertical < -R_ * zeroSpeed<S>();
+  }
+
+  /// The first moment in (lo, hi] at which postGap reaches zero, given it is positive at lo and not at hi.
+  S bisect(const Circle& post, S lo, S hi) const
+  {
+    for (;;)
+    {
+      const S mid = lo + (hi - lo) / S(2);
+      if (!(mid > lo && mid < hi))
+        return hi;
+      (postGap(post, mid) > S(0) ? lo : hi) = mid;
+    }
+  }
+
+  void pocket(const Circle& pocket, std::size_t k)
+  {
+    const Vec2<S> rel = p_.c0 - pocket.centre;
+    if (cannotMeet<S>(rel, p_.c1, p_.c2, pocket.radius, limit()))
+      return;
+    const S tau = contactTime(distanceGap<S>(rel, p_.c1, p_.c2, pocket.radius), limit(), S(0),
+                              touchTolerance(pocket.radius * pocket.radius));
+    if (tau <= limit())
+      keep(tau, Candidate<S>::Pocket, k);
+  }
+
+  void keep(S tau, typename Candidate<S>::Rank rank, std::size_t k)
+  {
+    Candidate<S> c;
+    c.time = base_ + tau;
+    c.rank = rank;
+    c.ball = first_.ball;
+    c.obstacle = static_cast<int>(k);
+    if (c.before(first_))
+      first_ = c;
+  }
+
+  const Trajectory<S>& p_;
+  const S base_;
+  const TableGeometry<S>& g_;
+  const S R_;
+  Candidate<S>& first_;
+};
+}  // namespace
+
+template <typename S>
+void findAirborneWallEvents(const Trajectory<S>& path, S base, const TableGeometry<S>& geometry, S ball_radius,
+                            Candidate<S>& first)
+{
+  AirborneWallSearch<S>(path, base, geometry, ball_radius, first).run();
+}
+
+template void findAirborneWallEvents(const Trajectory<double>&, double, const TableGeometry<double>&, double,
+                                     Candidate<double>&);
+template void findAirborneWallEvents(const Trajectory<long double>&, long double, const TableGeometry<long double>&,
+                                     long double, Candidate<long double>&);
+
+}  // namespace physics
+}  // namespace cue_sim
