@@ -6,7 +6,8 @@ import rospy
 from cue_sim.msg import BallState, TableState
 
 MOTION = {BallState.STATIONARY: "stationary", BallState.SPINNING: "spinning", BallState.SLIDING: "sliding",
-          BallState.ROLLING: "rolling", BallState.POCKETED: "pocketed", BallState.AIRBORNE: "airborne"}
+          BallState.ROLLING: "rolling", BallState.POCKETED: "pocketed", BallState.AIRBORNE: "airborne",
+          BallState.OFF_TABLE: "off the table"}
 
 
 def main():

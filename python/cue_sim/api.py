@@ -16,9 +16,11 @@ import numpy as np  # noqa: E402
 #: Event kinds by number (the `kind` column of Shot.events), as cue_sim/Event.msg numbers them.
 EVENT_KINDS: Dict[int, str] = {0: "slide_to_roll", 1: "roll_to_spin", 2: "roll_to_stop", 3: "spin_to_stop",
                                4: "slide_to_spin", 5: "slide_to_stop", 10: "ball_ball", 11: "ball_cushion",
-                               12: "ball_jaw", 13: "pocketed", 14: "ball_slate"}
+                               12: "ball_jaw", 13: "pocketed", 14: "ball_slate",
+                               15: "off_table"}
 #: Ball motion states by number (State.motion), as cue_sim/BallState.msg numbers them.
-MOTION: Dict[int, str] = {0: "stationary", 1: "spinning", 2: "sliding", 3: "rolling", 4: "pocketed", 5: "airborne"}
+MOTION: Dict[int, str] = {0: "stationary", 1: "spinning", 2: "sliding", 3: "rolling", 4: "pocketed", 5: "airborne",
+                          6: "off_table"}
 
 #: The dtype of Shot.events.
 EVENT_DTYPE = np.dtype([("time", "f8"), ("kind", "i4"), ("ball", "i4"), ("other", "i4"), ("obstacle", "U32")])
@@ -44,7 +46,7 @@ def parameters() -> Dict[str, dict]:
 @dataclass
 class State:
     """A table state, one row a ball: ids (N,), positions, velocities, spins (N, 3) [m, m/s, rad/s],
-    motion (N,) (MOTION), pocket (N,) (the pocket's index, -1 on the table)."""
+    motion (N,) (MOTION), pocket (N,) (the pocket's index, -1 on the table, -2 off it)."""
     ids: np.ndarray
     positions: np.ndarray
     velocities: np.ndarray

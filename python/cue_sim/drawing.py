@@ -134,7 +134,7 @@ def _draw_ball(ax, xy, ball: int, radius: float, final: bool) -> None:
 def _draw_events(ax, shot: Shot, exact: Dict[float, np.ndarray], index: Dict[int, int], radius: float) -> None:
     styles = {"ball_ball": ("x", "white", "ball-ball"), "ball_cushion": ("^", "orange", "cushion"),
               "ball_jaw": ("^", "red", "jaw"), "pocketed": ("o", "yellow", "pocketed"),
-              "ball_slate": ("v", "cyan", "lands")}
+              "ball_slate": ("v", "cyan", "lands"), "off_table": ("X", "red", "leaves the table")}
     seen = set()
     for event in shot.events:
         kind = EVENT_KINDS.get(int(event["kind"]))

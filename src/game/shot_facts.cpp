@@ -31,6 +31,10 @@ ShotFacts readShot(const std::vector<physics::Event<double>>& events, const phys
       facts.rail_after_contact = true;
     if (rail && e.ball != 0)
       to_rail.insert(e.ball);
+    if (e.kind == EventKind::OffTable && e.ball == 0)
+      facts.cue_ball_off_table = true;
+    else if (e.kind == EventKind::OffTable)
+      facts.off_table.push_back(e.ball);
     if (e.kind != EventKind::Pocketed)
       continue;
     if (e.ball == 0)

@@ -118,6 +118,9 @@ Event toEventMsg(const physics::Event<double>& event, const physics::TableModel&
     case physics::EventKind::Pocketed:
       msg.obstacle = table.pockets()[event.obstacle].name;
       break;
+    case physics::EventKind::OffTable:
+      msg.obstacle = physics::offTablePlaceName(event.obstacle);
+      break;
     default:
       break;
   }

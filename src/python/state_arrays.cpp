@@ -50,6 +50,8 @@ const char* obstacleName(const physics::TableModel& table, const physics::Event<
     return table.circles()[index].name.c_str();
   if (e.kind == EventKind::Pocketed && index < table.pockets().size())
     return table.pockets()[index].name.c_str();
+  if (e.kind == EventKind::OffTable)
+    return physics::offTablePlaceName(e.obstacle);
   return "";
 }
 }  // namespace
@@ -111,10 +113,11 @@ physics::TableState<double> fromArrays(const physics::Engine<double>& engine, co
     b.velocity = row(v, i, "velocities");
     b.angular_velocity = row(w, i, "spins");
     const int p = pocket(i);
-    if (p < -1 || p >= static_cast<int>(engine.table().pockets().size()))
+    if (p < physics::kOffTable || p >= static_cast<int>(engine.table().pockets().size()))
       throw std::invalid_argument("pocket[" + std::to_string(i) +
-                                  "] must be -1 (on the table) or a pocket's index, got " + std::to_string(p));
-    b.pocketed = p >= 0;
+                                  "] must be -1 (on the table), -2 (off the table) or a pocket's index, got " +
+                                  std::to_string(p));
+    b.pocketed = p >= 0 || p == physics::kOffTable;
     if (b.pocketed)
       b.pocket = engine.table().pockets()[static_cast<std::size_t>(p)].name;
     inputs.push_back(b);

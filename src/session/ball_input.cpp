@@ -23,6 +23,15 @@ std::string ballFromInput(const BallInput& input, const std::string& field, cons
     return field + ": position, velocity and angular_velocity must be finite";
   physics::Ball<double> b;
   b.id = input.id;
+  if (input.pocketed && input.pocket.empty())
+  {
+    // Out of play in no pocket: it left the table, and rests where it landed.
+    b.motion = physics::Motion::OffTable;
+    b.pocket = physics::kOffTable;
+    b.r = input.position;
+    out = b;
+    return "";
+  }
   if (input.pocketed)
   {
     for (std::size_t k = 0; k < table.pockets().size(); ++k)

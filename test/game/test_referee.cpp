@@ -9,6 +9,7 @@
 #include "cue_sim/game/game_play.hpp"
 #include "cue_sim/game/referee.hpp"
 #include "cue_sim/game/self_play.hpp"
+#include "cue_sim/physics/motion.hpp"
 #include "cue_sim/physics/simulation.hpp"
 
 using namespace cue_sim;
@@ -513,4 +514,54 @@ TEST(SelfPlay, OpenShotsCountClearPotsAndNotBlockedOnes)
   const Eigen::Vector2d on_line = object + 0.2 * along, in_front = object - 0.2 * along;
   EXPECT_EQ(openWith({ball(5, on_line.x(), on_line.y())}), open - 1);
   EXPECT_LT(openWith({ball(5, in_front.x(), in_front.y())}), open);
+}
+
+// WPA 6.1 and 6.5: a ball driven off the table is a foul, and each game says what is spotted.
+// Ball 3 flies over the ypos cushion in a real run of the engine and lands on the rail.
+TEST(Referee, ABallDrivenOffTheTableIsAFoulAndEachGameSaysWhatIsSpotted)
+{
+  TableState<double> s;
+  s.balls = {ball(0, -0.5, 0.0), ball(3, 0.2, 0.3), ball(8, 0.5, -0.2), ball(12, -0.6, 0.3)};
+  s.balls[1].r.z() = 0.12;
+  s.balls[1].v = Vec3<double>(0, 2, 0);
+  physics::settleMotion(s.balls[1], R());
+  const ShotFacts f = readShot(simulateToRest(engine(), s).events, &engine().table());
+  ASSERT_EQ(f.off_table, std::vector<int>{3});
+  EXPECT_EQ(s.balls[1].motion, physics::Motion::OffTable);
+
+  const Ruling r = judge(eightBallAfterBreak(Group::Solids), {3, 8, 12}, f);
+  EXPECT_TRUE(r.foul);
+  EXPECT_EQ(r.rule, "WPA 6.5");
+  EXPECT_EQ(r.ball_in_hand, BallInHand::Anywhere);
+  EXPECT_EQ(r.respot, std::vector<int>{3});
+  // Spotted, it stands on the long string again, in play.
+  physics::TableState<double> after = s;
+  spotBalls(engine().table(), R(), r.respot, after);
+  EXPECT_TRUE(after.balls[1].inPlay());
+  EXPECT_EQ(engine().whyInvalid(after), "");
+
+  ShotFacts eight;  // the 8 off the table after the break loses the rack
+  eight.first_contact = 3;
+  eight.off_table = {8};
+  const Ruling lost = judge(eightBallAfterBreak(Group::Solids), {3, 8, 12}, eight);
+  EXPECT_TRUE(lost.game_over);
+  EXPECT_EQ(lost.winner, 1);
+
+  ShotFacts cue;  // the cue ball off the table: 6.1
+  cue.first_contact = 3;
+  cue.cue_ball_off_table = true;
+  const Ruling scratch = judge(eightBallAfterBreak(Group::Solids), {3, 8, 12}, cue);
+  EXPECT_TRUE(scratch.foul);
+  EXPECT_EQ(scratch.rule, "WPA 6.1");
+
+  GameState nine;
+  nine.rules = "nine_ball";
+  nine.break_shot = false;
+  ShotFacts nine_off;  // 9-ball spots the 9 (WPA 2.6), and no other ball driven off
+  nine_off.first_contact = 1;
+  nine_off.off_table = {4, 9};
+  const Ruling spotted = judge(nine, {1, 4, 9}, nine_off);
+  EXPECT_TRUE(spotted.foul);
+  EXPECT_EQ(spotted.rule, "WPA 6.5");
+  EXPECT_EQ(spotted.respot, std::vector<int>{9});
 }

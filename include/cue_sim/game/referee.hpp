@@ -23,6 +23,8 @@ struct ShotFacts
   std::vector<int> pocketed;              ///< object balls pocketed, in order (not the cue ball)
   std::vector<int> pockets;               ///< the pocket each went into (TableModel::pockets index)
   bool scratch = false;                   ///< the cue ball was pocketed (WPA 6.1)
+  bool cue_ball_off_table = false;        ///< the cue ball was driven off the table (WPA 6.1)
+  std::vector<int> off_table;             ///< object balls driven off the table, in order (WPA 6.5)
   bool rail_after_contact = false;        ///< a ball met a cushion or jaw after the cue ball's first contact
   int object_balls_to_rail = 0;           ///< distinct object balls that met a cushion or jaw, or were pocketed
   std::vector<std::string> pocket_names;  ///< the table's pockets by index, for the rulings' text

@@ -35,6 +35,9 @@ struct BallLimits
   static constexpr double max_spin = 1e5;     ///< |w| [rad/s]
 };
 
+/// Ball::pocket of a ball that left the table (Motion::OffTable): in no pocket, and not on the table.
+constexpr int kOffTable = -2;
+
 template <typename S>
 struct Ball
 {
@@ -44,7 +47,7 @@ struct Ball
   Vec3<S> r = Vec3<S>::Zero();  ///< centre in the table frame [m]; z = R on the cloth
   Vec3<S> v = Vec3<S>::Zero();  ///< velocity [m/s]; z = 0 on the cloth
   Vec3<S> w = Vec3<S>::Zero();  ///< angular velocity [rad/s]
-  int pocket = -1;              ///< index into TableModel::pockets when pocketed
+  int pocket = -1;              ///< index into TableModel::pockets when pocketed; kOffTable off the table
 
   bool inPlay() const { return motion != Motion::Pocketed && motion != Motion::OffTable; }
   bool moving() const { return translating() || motion == Motion::Spinning; }

@@ -33,6 +33,8 @@ enum OffTablePlace : int
 };
 
 const char* eventKindName(EventKind kind);
+/// "rail" or "floor".
+const char* offTablePlaceName(int place);
 
 template <typename S>
 struct Event

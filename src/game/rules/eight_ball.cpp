@@ -63,6 +63,9 @@ public:
     const std::vector<int> legal = legalFirst(state, on_table);
     Ruling foul = generalFoul(shooter, f, legal, true);
     foul.groups = state.groups;
+    if (contains(f.off_table, 8))
+      return eightOffTable(state, foul);
+    spotJumped(f, foul);
     const auto eight = std::find(f.pocketed.begin(), f.pocketed.end(), 8);
     if (eight != f.pocketed.end())
       return eightPocketed(state, legal, foul, f, f.pockets[static_cast<std::size_t>(eight - f.pocketed.begin())]);
@@ -72,6 +75,29 @@ public:
   }
 
 private:
+  /// Object balls driven off the table are spotted (WPA 1.4) after the shot, the 8-ball with them on
+  /// the break: a group with a ball off the table could never be cleared.
+  static void spotJumped(const ShotFacts& f, Ruling& r)
+  {
+    r.respot.insert(r.respot.end(), f.off_table.begin(), f.off_table.end());
+    if (!f.off_table.empty())
+      r.reason += "; " + ballList(f.off_table) + " spotted (WPA 1.4)";
+  }
+
+  /// After the break, driving the 8-ball off the table loses the rack (WPA 3, losing the rack).
+  static Ruling eightOffTable(const GameState& state, const Ruling& foul)
+  {
+    Ruling r = foul;
+    r.foul = true;
+    r.rule = "WPA 6.5";
+    r.game_over = true;
+    r.winner = 1 - state.turn;
+    r.next_player = 1 - state.turn;
+    r.ball_in_hand = BallInHand::None;
+    r.reason = "the 8-ball was driven off the table (WPA 6.5), which loses the rack (WPA 3, losing the rack)";
+    return r;
+  }
+
   /// WPA 3.3: the break shot. No ball is called and any ball may be hit first.
   Ruling judgeBreak(const GameState& state, const ShotFacts& f) const
   {
@@ -81,6 +107,15 @@ private:
     const bool eight = contains(f.pocketed, 8);
     if (eight)
       r.respot = {8};
+    if ((f.cue_ball_off_table || !f.off_table.empty()) && !f.scratch)
+    {
+      Ruling jumped = generalFoul(breaker, f, {}, false);
+      jumped.groups = r.groups;
+      jumped.respot = r.respot;
+      jumped.reason = "foul on the break: " + jumped.reason + "; the table is open";
+      spotJumped(f, jumped);
+      return jumped;
+    }
     if (f.scratch)
     {
       r.foul = true;

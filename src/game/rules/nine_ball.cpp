@@ -36,7 +36,9 @@ public:
   {
     const int shooter = state.turn;
     const ShotFacts& f = shot.facts;
-    const bool nine = contains(f.pocketed, 9);
+    // WPA 2.6: a 9-ball pocketed on a foul or driven off the table is spotted; other object balls
+    // driven off the table stay off (they are not spotted in 9-ball).
+    const bool nine = contains(f.pocketed, 9) || contains(f.off_table, 9);
     if (shot.push_out && state.push_out_allowed && !state.break_shot)
       return pushOut(shooter, f, nine);
     Ruling r = generalFoul(shooter, f, legalFirst(state, on_table), !state.break_shot);

@@ -155,7 +155,7 @@ void EventResolver<S>::leaveTable(Ball<S>& ball)
     return;
   }
   ball.motion = Motion::OffTable;
-  ball.pocket = -1;
+  ball.pocket = kOffTable;
   ball.r = d.where;
   ball.v.setZero();
   ball.w.setZero();

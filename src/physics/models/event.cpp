@@ -38,5 +38,10 @@ const char* eventKindName(EventKind kind)
   return "unknown";
 }
 
+const char* offTablePlaceName(int place)
+{
+  return place == kLandsOnRail ? "rail" : place == kLandsOffTable ? "floor" : "";
+}
+
 }  // namespace physics
 }  // namespace cue_sim
