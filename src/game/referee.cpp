@@ -1,7 +1,8 @@
 // What every ruleset shares. What a simulator cannot judge it does not call: intent (a deliberate
 // foul, unsportsmanlike conduct) is not judged, so every foul found is a standard foul; fouls a
 // simulated player cannot commit (a double hit or push shot, touching a ball, a jump shot that
-// scoops the cue ball under it with the cue) never happen; a cue ball placed where the rules forbid is refused, not fouled.
+// scoops the cue ball under it with the cue) never happen; a cue ball placed where the rules forbid is refused, not
+// fouled.
 #include "cue_sim/game/referee.hpp"
 
 #include <algorithm>
@@ -88,11 +89,11 @@ Ruling generalFoul(int shooter, const ShotFacts& facts, const std::vector<int>& 
   if (facts.scratch)
     return standardFoul(shooter, "WPA 6.1", "foul (WPA 6.1, cue ball scratch): the cue ball was pocketed");
   if (facts.cue_ball_off_table)
-    return standardFoul(shooter, "WPA 6.1", "foul (WPA 6.1, cue ball off the table): the cue ball was driven off the table");
+    return standardFoul(shooter, "WPA 6.1",
+                        "foul (WPA 6.1, cue ball off the table): the cue ball was driven off the table");
   if (!facts.off_table.empty())
     return standardFoul(shooter, "WPA 6.5",
-                        "foul (WPA 6.5, ball driven off the table): " + ballList(facts.off_table) +
-                            " left the table");
+                        "foul (WPA 6.5, ball driven off the table): " + ballList(facts.off_table) + " left the table");
   if (!check_first_and_rail)
     return {};
   if (facts.first_contact < 0)

@@ -118,7 +118,7 @@ physics::TableState<double> fromArrays(const physics::Engine<double>& engine, co
                                   "] must be -1 (on the table), -2 (off the table) or a pocket's index, got " +
                                   std::to_string(p));
     b.pocketed = p >= 0 || p == physics::kOffTable;
-    if (b.pocketed)
+    if (p >= 0)  // in a pocket; off the table, in none (an empty name)
       b.pocket = engine.table().pockets()[static_cast<std::size_t>(p)].name;
     inputs.push_back(b);
   }

@@ -612,7 +612,7 @@ TEST_F(ResearchInterfaceTest, AJumpShotFliesInTfWhenTheSequentialCueIsChosen)
   EXPECT_EQ(stringOf(reconfigure("/table", {}, {{"cue_model", "sequential"}}), "cue_model"), "sequential");
   ASSERT_TRUE(table_.rack("custom", {0, 1}, {{-0.6, 0.0}, {-0.6 + 0.3048, 0.0}}).success);
   table_.atRest(10);
-  const cue_sim::Shot jump = TableClient::shot(0, 4.0, 0.0, 0.8);
+  const cue_sim::Shot jump = TableClient::shot(0, 3.0, 0.0, 0.8);
   const cue_sim::Prediction planned = table_.predict(jump, {}, 0.005);
   ASSERT_TRUE(planned.success) << planned.message;
   int landings = 0;
@@ -655,7 +655,7 @@ TEST_F(ResearchInterfaceTest, AJumpShotFliesInTfWhenTheSequentialCueIsChosen)
   expectSameBalls(rest.balls, planned.final_balls, "the jump shot");
   {
     std::lock_guard<std::mutex> lock(mutex);
-    // The flight's apex: (e_table V sin theta)^2 / 2g above the cloth, some 25 cm at this stroke;
+    // The flight's apex: (e_table V sin theta)^2 / 2g above the cloth, some 14 cm at this stroke;
     // tf at 100 Hz samples it within a few millimetres.
     EXPECT_GT(highest, kRadius + 0.08) << "the cue ball's highest transform";
     EXPECT_TRUE(airborne_seen);
@@ -668,6 +668,34 @@ TEST_F(ResearchInterfaceTest, AJumpShotFliesInTfWhenTheSequentialCueIsChosen)
   ASSERT_TRUE(level.success) << level.message;
   for (const auto& e : level.events)
     EXPECT_NE(e.kind, cue_sim::Event::BALL_SLATE);
+
+  // Harder, the same stroke flies over the foot cushion: an OFF_TABLE event that says where it
+  // lands, and the ball out of play (OFF_TABLE in ~state, no longer strikable) where it landed.
+  reconfigure("/table", {}, {{"cue_model", "sequential"}});
+  ASSERT_TRUE(table_.rack("custom", {0, 1}, {{-0.6, 0.0}, {-0.6 + 0.3048, 0.0}}).success);
+  table_.atRest(10);
+  const cue_sim::Shot off = TableClient::shot(0, 4.0, 0.0, 0.8);
+  const cue_sim::Prediction flies = table_.predict(off);
+  ASSERT_TRUE(flies.success) << flies.message;
+  ASSERT_FALSE(flies.events.empty());
+  const cue_sim::Event& gone = flies.events.back();
+  EXPECT_EQ(gone.kind, cue_sim::Event::OFF_TABLE);
+  EXPECT_EQ(gone.kind_name, "off_table");
+  EXPECT_EQ(gone.ball_id, 0);
+  EXPECT_TRUE(gone.obstacle == "rail" || gone.obstacle == "floor") << gone.obstacle;
+  const cue_sim::Strike::Response flown = table_.strike(off);
+  ASSERT_TRUE(flown.success) << flown.message;
+  const cue_sim::TableState after = *table_.atRestAfter(flown.stamp, flies.time_to_rest + 30);
+  expectSameBalls(after.balls, flies.final_balls, "the jump off the table");
+  const cue_sim::BallState cue_ball = TableClient::byId(after.balls).at(0);
+  EXPECT_EQ(cue_ball.motion, cue_sim::BallState::OFF_TABLE);
+  EXPECT_TRUE(cue_ball.pocketed);
+  EXPECT_EQ(cue_ball.pocket, "");
+  EXPECT_GT(std::abs(cue_ball.position.x), 0.9906);  // beyond the foot cushion's nose
+  const cue_sim::Strike::Response again = table_.strike(jump);
+  EXPECT_FALSE(again.success);
+  EXPECT_NE(again.message.find("off the table"), std::string::npos) << again.message;
+  reconfigure("/table", {}, {{"cue_model", "planar"}});
 }
 
 TEST_F(ResearchInterfaceTest, TheAimMarkerFiresTheShotItShows)

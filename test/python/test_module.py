@@ -226,7 +226,7 @@ def test_a_jump_shot_flies_in_the_samples_with_the_sequential_cue():
     assert pickle.loads(pickle.dumps(jumper)).models == jumper.models
     start = cue_sim.State.from_balls([0, 1], [[-0.6, 0.0], [-0.3, 0.0]])
     radius = jumper.params["ball_radius"]
-    shot = cue_sim.simulate(jumper, start, speed=4.0, theta=0.8, sample_period=0.005)
+    shot = cue_sim.simulate(jumper, start, speed=3.0, theta=0.8, sample_period=0.005)
     kinds = [cue_sim.EVENT_KINDS[int(k)] for k in shot.events["kind"]]
     assert kinds[0] == "ball_slate" and kinds.count("ball_slate") > 3
     cue_ball = 0  # row 0 of the starting State
@@ -235,10 +235,27 @@ def test_a_jump_shot_flies_in_the_samples_with_the_sequential_cue():
     airborne = [cue_sim.MOTION[int(m)] for m in shot.samples.motion[:, cue_ball]]
     assert "airborne" in airborne
     assert np.allclose(shot.final.positions[:, 2], radius, atol=1e-12)
-    level = cue_sim.simulate(cue_sim.Engine(), start, speed=4.0, theta=0.8, sample_period=0.005)
+    level = cue_sim.simulate(cue_sim.Engine(), start, speed=3.0, theta=0.8, sample_period=0.005)
     assert "ball_slate" not in [cue_sim.EVENT_KINDS[int(k)] for k in level.events["kind"]]
     assert np.all(level.samples.positions[:, :, 2] == radius)
     with pytest.raises(ValueError, match="rubber"):
         cue_sim.Engine(ball_table_model="rubber")
     with pytest.raises(ValueError, match="catapult"):
         cue_sim.Engine(cue_model="catapult")
+
+
+def test_a_ball_that_flies_over_a_cushion_leaves_the_table_and_the_state_says_so():
+    # Issue 33: too hard a jump clears the foot cushion: an "off_table" event naming where it lands,
+    # the ball out of play ("off_table", pocket -2) where it landed, and a State that goes back in.
+    jumper = cue_sim.Engine(cue_model="sequential")
+    start = cue_sim.State.from_balls([0, 1], [[-0.6, 0.0], [-0.3, 0.0]])
+    shot = cue_sim.simulate(jumper, start, speed=4.0, theta=0.8)
+    last = shot.events[-1]
+    assert cue_sim.EVENT_KINDS[int(last["kind"])] == "off_table"
+    assert int(last["ball"]) == 0 and str(last["obstacle"]) in ("rail", "floor")
+    assert cue_sim.MOTION[int(shot.final.motion[0])] == "off_table"
+    assert int(shot.final.pocket[0]) == -2
+    assert abs(shot.final.positions[0, 0]) > 0.9906  # beyond the foot cushion's nose
+    jumper.check(shot.final)  # an off-table ball is a valid part of a state
+    with pytest.raises(ValueError, match="off the table"):
+        cue_sim.simulate(jumper, shot.final, speed=1.0)

@@ -8,6 +8,7 @@
 #include <regex>
 #include <sstream>
 
+#include "cue_sim/physics/physics_params.hpp"
 #include "cue_sim/table_description/table_catalog.hpp"
 #include "cue_sim/table_description/urdf_table_loader.hpp"
 
@@ -15,6 +16,7 @@ using cue_sim::TableDescriptionError;
 using cue_sim::tableFromUrdf;
 using cue_sim::tableFromUrdfFile;
 using cue_sim::tableUrdfPath;
+using cue_sim::physics::PhysicsParams;
 using cue_sim::physics::TableModel;
 
 namespace
@@ -185,4 +187,35 @@ TEST(UrdfTable, ATableThatLetsABallOutIsRefusedWithWhereItIsOpen)
   // Joints to links that are not there: urdfdom's own words say which.
   const std::string dangling = errorOf(std::regex_replace(urdf, pocket_link, ""));
   EXPECT_NE(dangling.find("pocket_"), std::string::npos) << dangling;
+}
+
+// The rails (issue 33): their top is where a ball that clears a cushion lands, and their outer
+// edges are the table's edge. The bundled tables' rails are flush with the cushions' nose and
+// reach as far as the tables built in code assume.
+TEST(UrdfTable, TheRailsGiveTheTablesEdgeAndTheirTop)
+{
+  for (const auto& [name, built] :
+       {std::pair<std::string, TableModel>{"7ft", TableModel::pool("7ft", 1.9812, 0.9906, 0.118, 0.137)},
+        {"9ft", TableModel::pool("9ft", 2.54, 1.27, 0.118, 0.137)},
+        {"carom", TableModel::carom("carom", 2.84, 1.42)}})
+  {
+    SCOPED_TRACE(name);
+    const TableModel loaded = tableFromUrdfFile(tableUrdfPath(name));
+    EXPECT_LT((loaded.edge().low - built.edge().low).norm(), 1e-9);
+    EXPECT_LT((loaded.edge().high - built.edge().high).norm(), 1e-9);
+    EXPECT_NEAR(loaded.edge().rail_height, PhysicsParams<double>().cushion_height, 1e-9);
+    EXPECT_TRUE(std::isnan(built.edge().rail_height));  // in code: flush with the nose
+  }
+  const auto withRail = [&](const std::string& xyz, const std::string& size) {
+    const std::string rail = R"(<link name="rails_a"><collision><origin xyz=")" + xyz + R"("/><geometry><box size=")" +
+                             size + R"("/></geometry></collision></link>
+        <joint name="j_rails_a" type="fixed"><parent link="table"/><child link="rails_a"/></joint>)";
+    return closedTable("", rail);
+  };
+  EXPECT_EQ(errorOf(withRail("0 0 0.01", "3 2 0.02")), "");
+  EXPECT_NE(errorOf(withRail("0 0 -0.02", "3 2 0.02")).find("rail's top must be above the cloth"), std::string::npos);
+  EXPECT_NE(errorOf(withRail("0 0 0.01", "1 0.5 0.02")).find("must enclose link 'cloth'"), std::string::npos);
+  const TableModel railed = tableFromUrdf(withRail("0 0 0.01", "3 2 0.02"));
+  EXPECT_NEAR(railed.edge().high.x(), 1.5, 1e-12);
+  EXPECT_NEAR(railed.edge().rail_height, 0.02, 1e-12);
 }

@@ -6,8 +6,8 @@
 #include <sstream>
 
 #include "cue_sim/physics/motion.hpp"
-#include "physics/models/ball_table/slate_landing.hpp"
 #include "physics/engine/table_geometry.hpp"
+#include "physics/models/ball_table/slate_landing.hpp"
 
 namespace cue_sim
 {
@@ -59,7 +59,8 @@ std::string Engine<S>::whyNotStrikable(const TableState<S>& state, int ball_id, 
   if (index < 0)
     return "ball_id " + std::to_string(ball_id) + " is not on the table";
   if (!state.balls[index].inPlay())
-    return "ball_id " + std::to_string(ball_id) + " is pocketed";
+    return "ball_id " + std::to_string(ball_id) +
+           (state.balls[index].motion == Motion::OffTable ? " is off the table" : " is pocketed");
   if (state.balls[index].airborne())
     return "ball_id " + std::to_string(ball_id) + " is in the air: the cue strikes a ball on the cloth";
   return validateStrike(strike);

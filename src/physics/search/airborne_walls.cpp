@@ -28,6 +28,15 @@ public:
 
   void run()
   {
+    // A flight that stays in the clear box about the cloth's centre meets no wall or pocket.
+    bool clear = true;
+    for (int axis = 0; axis < 2 && clear; ++axis)
+    {
+      const Poly4<S> x = {p_.c0[axis], p_.c1[axis], p_.c2[axis], S(0), S(0)};
+      clear = lowest(x) > g_.clear_low[axis] && highest(x) < g_.clear_high[axis];
+    }
+    if (clear)
+      return;
     for (std::size_t k = 0; k < g_.segments.size(); ++k)
       segment(g_.segments[k], k);
     for (std::size_t k = 0; k < g_.circles.size(); ++k)
@@ -45,6 +54,24 @@ private:
     const S end = first_.time - base_;
     return std::isfinite(static_cast<double>(end)) ? end : kEndlessHorizon<S>;
   }
+  /// The least and the greatest of c0 + c1 tau + c2 tau^2 over [0, limit].
+  S lowest(const Poly4<S>& c) const { return extreme(c, false); }
+  S highest(const Poly4<S>& c) const { return extreme(c, true); }
+  S extreme(const Poly4<S>& c, bool greatest) const
+  {
+    const S T = limit();
+    S best = c[0];
+    const auto take = [&](S x) { best = greatest ? std::max(best, x) : std::min(best, x); };
+    take(evaluatePoly(c, T));
+    if (c[2] != S(0))
+    {
+      const S vertex = -c[1] / (S(2) * c[2]);
+      if (vertex > S(0) && vertex < T)
+        take(evaluatePoly(c, vertex));
+    }
+    return best;
+  }
+
   /// The centre's height above the walls' top at tau (the path's height is the ball's lowest
   /// point's, R below the centre).
   S aboveTop(S tau) const { return p_.heightAt(tau) + R_ - g_.nose_height; }
@@ -53,6 +80,10 @@ private:
   {
     const Vec2<S> rel = p_.c0 - seg.start;
     const Poly4<S> across = {seg.normal.dot(rel), seg.normal.dot(p_.c1), seg.normal.dot(p_.c2), S(0), S(0)};
+    const Poly4<S> along = {seg.direction.dot(rel), seg.direction.dot(p_.c1), seg.direction.dot(p_.c2), S(0), S(0)};
+    // Every meeting (face, edge, over) needs the centre within R in front of the line and beside it.
+    if (lowest(across) > R_ + S(kBoxMargin) || lowest(along) > seg.length || highest(along) < S(0))
+      return;
     const auto beside = [&](S tau) {
       const S along = seg.direction.dot(p_.at(tau) - seg.start);
       return along >= S(0) && along <= seg.length;
