@@ -69,6 +69,8 @@ int main(int argc, char** argv)
       ->check(CLI::PositiveNumber);
   app.add_option("--replay", replays, "check these scene files instead (a violation's file shows it again)");
   app.add_flag("--quiet", quiet, "no progress line");
+  app.add_flag("--airborne", options.airborne,
+               "scenes with balls in the air too: thrown, dropped onto others, struck by the sequential cue");
   CLI11_PARSE(app, argc, argv);
   try
   {

@@ -27,7 +27,8 @@ std::string ballsBucket(std::size_t count)
 std::string writeViolation(const SoakOptions& options, long k, const Scene& scene, const SceneCheck& check)
 {
   std::ostringstream comment;
-  comment << "soak --seed " << options.seed << " --first " << k << " --shots 1: shot " << k << " broke\n";
+  comment << "soak --seed " << options.seed << " --first " << k << " --shots 1"
+          << (options.airborne ? " --airborne" : "") << ": shot " << k << " broke\n";
   for (const Violation& v : check.violations)
     comment << "  " << v.kind << ": " << v.detail << "\n";
   const std::string name = "soak_" + std::to_string(options.seed) + "_" + std::to_string(k) + ".yaml";
@@ -53,7 +54,7 @@ SoakSummary runSoak(const SoakOptions& options, const std::function<void(const S
   // holds up no other.
   pool.parallelFor(static_cast<std::size_t>(options.shots), [&](std::size_t i) {
     const long k = options.first + static_cast<long>(i);
-    const Scene scene = soakScene(options.seed, k);
+    const Scene scene = soakScene(options.seed, k, options.airborne);
     const bool small = scene.state.balls.size() <= 40;
     const SceneCheck check = checkScene(scene, small || k % std::max(1L, options.full_scan_every) == 0);
     std::string written;
@@ -65,7 +66,8 @@ SoakSummary runSoak(const SoakOptions& options, const std::function<void(const S
     summary.scanned += check.scanned;
     summary.at_rest += check.at_rest;
     ++summary.by_table[scene.table_name];
-    ++summary.by_models[scene.models.ball_ball + "/" + scene.models.cushion];
+    ++summary.by_models[scene.models.ball_ball + "/" + scene.models.cushion +
+                        (options.airborne ? "/" + scene.models.ball_table + "/" + scene.models.cue : "")];
     ++summary.by_balls[ballsBucket(scene.state.balls.size())];
     for (const Violation& v : check.violations)
       ++summary.violations[v.kind];

@@ -1,12 +1,15 @@
 // The campaign's random scenes: tables, models, coefficients across their accepted ranges, racks
 // and placements that touch cushions, jaws and other balls, strikes over every speed, elevation and
 // English, and tables where everything moves at once.
+#include <algorithm>
 #include <cmath>
 #include <mutex>
 #include <random>
 
 #include "cue_sim/evaluation/soak.hpp"
+#include "cue_sim/physics/collision_models.hpp"
 #include "cue_sim/physics/engine.hpp"
+#include "cue_sim/physics/motion.hpp"
 #include "cue_sim/physics/rack.hpp"
 #include "cue_sim/table_description/table_catalog.hpp"
 #include "cue_sim/table_description/urdf_table_loader.hpp"
@@ -206,9 +209,41 @@ void drawMotion(Draws& draws, double R, physics::TableState<double>& state)
                     draws.logUniform(1e-3, 300.0) * spin, R);
     }
 }
+/// Balls in the air: a share thrown from where they stand, and perhaps one dropped onto another.
+void drawFlights(Draws& draws, const physics::TableModel& table, double R, physics::TableState<double>& state)
+{
+  const double share = draws.uniform(0.1, 1.0);
+  for (auto& b : state.balls)
+    if (draws.chance(share))
+    {
+      const double speed = draws.logUniform(1e-3, 6.0), angle = draws.uniform(-M_PI, M_PI);
+      b.r.z() = R + draws.uniform(0.0, 0.3);
+      b.v = physics::Vec3<double>(speed * std::cos(angle), speed * std::sin(angle), draws.uniform(-3.0, 3.0));
+      b.motion = physics::Motion::Airborne;
+    }
+  if (!state.balls.empty() && draws.chance(0.3))
+  {
+    // Dropped onto a ball: above it, within R of its centre, from up to 0.2 m.
+    const physics::Ball<double> below = draws.pick(state.balls);
+    int id = 0;
+    for (const auto& b : state.balls)
+      id = std::max(id, b.id + 1);
+    physics::Ball<double> dropped;
+    dropped.id = id;
+    const double off = R * std::sqrt(draws.unit()), angle = draws.uniform(-M_PI, M_PI);
+    dropped.r = below.r + physics::Vec3<double>(off * std::cos(angle), off * std::sin(angle),
+                                                2 * R + 1e-6 + draws.uniform(0.0, 0.2));
+    dropped.motion = physics::Motion::Airborne;
+    bool clear = table.whyNotPlaceable(dropped.r.head<2>(), R).empty();
+    for (const auto& b : state.balls)
+      clear = clear && (b.r - dropped.r).norm() > 2 * R + 1e-7;
+    if (clear)
+      state.balls.push_back(dropped);
+  }
+}
 }  // namespace
 
-Scene soakScene(std::uint64_t seed, long k)
+Scene soakScene(std::uint64_t seed, long k, bool airborne)
 {
   Draws draws(seed, k);
   Scene scene;
@@ -220,18 +255,33 @@ Scene soakScene(std::uint64_t seed, long k)
   scene.table = tables.at(scene.table_name);
   scene.models.ball_ball = draws.pick(physics::ballBallModelNames());
   scene.models.cushion = draws.pick(physics::cushionModelNames());
+  if (airborne)
+  {
+    scene.models.ball_table = draws.pick(physics::ballTableModelNames());
+    scene.models.cue = draws.pick(physics::cueModelNames());
+  }
   scene.params = drawParams(draws, *scene.table);
   const physics::Engine<double> engine(scene.table, scene.params, scene.models);
   scene.state = drawBalls(draws, engine);
   const bool moving = draws.chance(0.2);
   if (moving)
     drawMotion(draws, scene.params.ball_radius, scene.state);
+  if (airborne && draws.chance(0.5))
+    drawFlights(draws, *scene.table, scene.params.ball_radius, scene.state);
   if (!scene.state.balls.empty() && (!moving || draws.chance(0.5)))
   {
     Shot shot;
     shot.ball = draws.chance(0.7) && scene.state.indexOf(0) >= 0 ? 0 : draws.pick(scene.state.balls).id;
     shot.strike = drawStrike(draws);
     scene.shot = shot;
+    // The cue strikes a ball on the cloth: one thrown is put back down where it stands.
+    auto& struck = scene.state.balls[static_cast<std::size_t>(scene.state.indexOf(shot.ball))];
+    if (struck.airborne())
+    {
+      struck.r.z() = scene.params.ball_radius;
+      struck.v.z() = 0;
+      physics::settleMotion(struck, scene.params.ball_radius);
+    }
   }
   return scene;
 }

@@ -26,6 +26,7 @@ TableGeometry<S>::TableGeometry(const TableModel& table, S R, S cushion_height)
   {
     const Vec2<S> centre = c.centre.cast<S>(), reach = Vec2<S>::Constant(R + S(c.radius) + margin);
     circles.push_back({centre, S(c.radius), centre - reach, centre + reach});
+    widest_post = std::max(widest_post, S(c.radius));
   }
   for (const auto& p : table.pockets())
   {

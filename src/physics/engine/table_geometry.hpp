@@ -40,6 +40,7 @@ struct TableGeometry
   /// and the rails' top, where a ball that clears them lands.
   S nose_height, rail_height;
   Vec2<S> edge_low, edge_high;  ///< the table's outer edge: beyond it, the floor
+  S widest_post = S(0);         ///< the largest jaw's or end cap's radius [m]
 
   TableGeometry(const TableModel& table, S ball_radius, S cushion_height);
 };

@@ -28,19 +28,21 @@ public:
 
   void run()
   {
-    // A flight that stays in the clear box about the cloth's centre meets no wall or pocket.
+    // A flight that stays in the clear box about the cloth's centre meets no wall.
     bool clear = true;
     for (int axis = 0; axis < 2 && clear; ++axis)
     {
       const Poly4<S> x = {p_.c0[axis], p_.c1[axis], p_.c2[axis], S(0), S(0)};
       clear = lowest(x) > g_.clear_low[axis] && highest(x) < g_.clear_high[axis];
     }
-    if (clear)
-      return;
-    for (std::size_t k = 0; k < g_.segments.size(); ++k)
-      segment(g_.segments[k], k);
-    for (std::size_t k = 0; k < g_.circles.size(); ++k)
-      post(g_.circles[k], k);
+    // (A pocket's capture circle may reach into it: pockets are searched whatever the box.)
+    if (!clear)
+    {
+      for (std::size_t k = 0; k < g_.segments.size(); ++k)
+        segment(g_.segments[k], k);
+      for (std::size_t k = 0; k < g_.circles.size(); ++k)
+        post(g_.circles[k], k);
+    }
     for (std::size_t k = 0; k < g_.pockets.size(); ++k)
       pocket(g_.pockets[k], k);
   }
@@ -81,8 +83,10 @@ private:
     const Vec2<S> rel = p_.c0 - seg.start;
     const Poly4<S> across = {seg.normal.dot(rel), seg.normal.dot(p_.c1), seg.normal.dot(p_.c2), S(0), S(0)};
     const Poly4<S> along = {seg.direction.dot(rel), seg.direction.dot(p_.c1), seg.direction.dot(p_.c2), S(0), S(0)};
-    // Every meeting (face, edge, over) needs the centre within R in front of the line and beside it.
-    if (lowest(across) > R_ + S(kBoxMargin) || lowest(along) > seg.length || highest(along) < S(0))
+    // Every meeting (face, edge, over) needs the centre within R in front of the line and beside
+    // it, or, for a flight over the line, beside it or its jaws.
+    const S ends = R_ + g_.widest_post;
+    if (lowest(across) > R_ + S(kBoxMargin) || lowest(along) > seg.length + ends || highest(along) < -ends)
       return;
     const auto beside = [&](S tau) {
       const S along = seg.direction.dot(p_.at(tau) - seg.start);
@@ -100,8 +104,10 @@ private:
     S from = S(0);
     for (int root = 0; root < 4; ++root)
     {
-      const S tau = root == 0 ? contactTime(edge, limit(), -S(2) * R_ * zeroSpeed<S>(), touchTolerance(R_ * R_))
-                              : firstDownCrossing(edge, from, limit());
+      // Touching and pressed on by gravity, it is met now (as a ball pressed on a cushion is).
+      const S tau = root == 0
+                        ? contactTime(edge, limit(), -S(2) * R_ * zeroSpeed<S>(), touchTolerance(R_ * R_), true)
+                        : firstDownCrossing(edge, from, limit());
       if (!(tau <= limit()))
         break;
       if (evaluatePoly(across, tau) >= S(0) && aboveTop(tau) > S(0) && beside(tau))
@@ -113,11 +119,14 @@ private:
         break;
       from = tau;
     }
-    // Over the top: the centre crosses the nose's line above it.
+    // Over the top: the centre crosses the nose's line above it, beside the cushion or over the
+    // jaws and posts at its ends (where a flight over them would otherwise come down behind the
+    // cushion's line; where the ball lands, a pocket included, departureOf decides).
     if (across[0] > S(0))
     {
       const S tau = firstDownCrossing(across, S(0), limit());
-      if (tau <= limit() && beside(tau) && aboveTop(tau) > S(0))
+      const S at = evaluatePoly(along, tau);
+      if (tau <= limit() && at >= -ends && at <= seg.length + ends && aboveTop(tau) > S(0))
         keep(tau, Candidate<S>::Overboard, k);
     }
   }
@@ -139,23 +148,28 @@ private:
       return;
     const Poly4<S> within = distanceGap<S>(rel, p_.c1, p_.c2, reach);
     const S touch = touchTolerance(reach * reach);
+    // The times the centre is within reach of the post's axis: from `enter` to the next root.
     S enter = S(0);
-    if (within[0] > touch || aboveTop(S(0)) <= S(0))
+    if (within[0] > touch)
+      enter = firstDownCrossing(within, S(0), limit());
+    else if (aboveTop(S(0)) <= S(0))
     {
-      // Its side, met as on the cloth, while the centre is no higher than the post's top.
-      enter = contactTime(within, limit(), -S(2) * reach * zeroSpeed<S>(), touch, true);
-      if (!(enter <= limit()))
-        return;
-      if (aboveTop(enter) <= S(0))
+      // Touching its side now, at or below its top: pressed or closing, met now, as on the cloth.
+      const S now = contactTime(within, limit(), -S(2) * reach * zeroSpeed<S>(), touch, true);
+      if (now == S(0))
       {
-        keep(enter, Candidate<S>::Circle, k);
+        keep(now, Candidate<S>::Circle, k);
         return;
       }
     }
-    // Above the post while within its reach: its rim or its top. Out of reach again, the ball
-    // may come back within it (a flight across a corner).
-    for (int pass = 0; pass < 2; ++pass)
+    for (int pass = 0; pass < 3 && enter <= limit(); ++pass)
     {
+      if (enter > S(0) && aboveTop(enter) <= S(0))
+      {
+        keep(enter, Candidate<S>::Circle, k);  // its side, found on the gap quartic
+        return;
+      }
+      // Within reach: the side (coming down beside it), the rim or the top.
       S leave = limit();
       S roots[4];
       const int n = polyRootsIn(within, enter, limit(), roots);
@@ -172,13 +186,6 @@ private:
         return;
       }
       enter = firstDownCrossing(within, leave, limit());
-      if (!(enter <= limit()))
-        return;
-      if (aboveTop(enter) <= S(0))
-      {
-        keep(enter, Candidate<S>::Circle, k);
-        return;
-      }
     }
   }
 
@@ -202,6 +209,11 @@ private:
       else if (apart >= S(0) && gap <= S(0))
       {
         tau = bisect(post, apart, t);
+        return true;
+      }
+      else if (apart < S(0) && gap < -touch)
+      {
+        tau = lo;  // touching at lo and never apart: pressed into it, met now
         return true;
       }
     }
