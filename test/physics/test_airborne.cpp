@@ -774,3 +774,40 @@ TEST(AirborneWalls, ThrowsAtEveryWallKeepTheInvariantsAndTheScan)
   EXPECT_GT(off_table, 10);
   EXPECT_GT(walls_in_the_air, 10);
 }
+
+// A ball in the air that comes to lie on a rounded support (another ball's top, a cushion's nose)
+// has no closed-form motion round it: it goes round in hops of kSettleSpeed along the normal, its
+// speed kept, so its events stay few, no energy is made, and it comes off on the side it leans to.
+TEST(AirborneWalls, ABallDroppedOntoABallOrANoseRollsOffTheSideItLeansTo)
+{
+  const auto table = sevenFoot();
+  const Engine<double> engine(table, PhysicsParams<double>());
+  const double R = engine.params().ball_radius, h = engine.params().cushion_height, nose_y = 0.9906 / 2;
+  for (const double lean : {1e-3, -1e-3})
+  {
+    SCOPED_TRACE("lean " + std::to_string(lean));
+    // Onto a ball's top from 5 cm, a millimetre off its centre line.
+    TableState<double> s;
+    s.balls.push_back(inTheAir(0, 0.0, 0.0, 0.0));
+    s.balls.push_back(inTheAir(1, lean, 0.0, 2 * R + 0.05));
+    const std::vector<Event<double>> events = runChecked(engine, s, 2);
+    EXPECT_LT(events.size(), 5000u);
+    TableState<double> end = s;
+    simulateToRest(engine, end);
+    EXPECT_EQ(engine.whyInvalid(end), "");
+    EXPECT_GT(end.balls[1].r.x() * lean, 0.0) << "came off on the side it leaned to";
+    EXPECT_NEAR(end.balls[1].r.z(), R, 1e-12);
+
+    // Onto the nose's edge from 5 cm, its centre a millimetre to the cloth's or the rail's side.
+    TableState<double> n;
+    n.balls.push_back(inTheAir(0, 0.2, nose_y - lean, h + 0.05));
+    const std::vector<Event<double>> on_edge = runChecked(engine, n, 2);
+    EXPECT_LT(on_edge.size(), 5000u);
+    TableState<double> after = n;
+    simulateToRest(engine, after);
+    if (lean > 0)
+      EXPECT_TRUE(after.balls[0].inPlay() && after.balls[0].r.y() < nose_y - R + 1e-9) << "back on the cloth";
+    else
+      EXPECT_EQ(after.balls[0].motion, Motion::OffTable) << "over onto the rail";
+  }
+}

@@ -9,7 +9,6 @@
 #include "cue_sim/evaluation/soak.hpp"
 #include "cue_sim/physics/collision_models.hpp"
 #include "cue_sim/physics/engine.hpp"
-#include "cue_sim/physics/motion.hpp"
 #include "cue_sim/physics/rack.hpp"
 #include "cue_sim/table_description/table_catalog.hpp"
 #include "cue_sim/table_description/urdf_table_loader.hpp"
@@ -274,14 +273,9 @@ Scene soakScene(std::uint64_t seed, long k, bool airborne)
     shot.ball = draws.chance(0.7) && scene.state.indexOf(0) >= 0 ? 0 : draws.pick(scene.state.balls).id;
     shot.strike = drawStrike(draws);
     scene.shot = shot;
-    // The cue strikes a ball on the cloth: one thrown is put back down where it stands.
-    auto& struck = scene.state.balls[static_cast<std::size_t>(scene.state.indexOf(shot.ball))];
-    if (struck.airborne())
-    {
-      struck.r.z() = scene.params.ball_radius;
-      struck.v.z() = 0;
-      physics::settleMotion(struck, scene.params.ball_radius);
-    }
+    // The cue strikes a ball on the cloth: a scene whose chosen ball flies has no shot.
+    if (scene.state.balls[static_cast<std::size_t>(scene.state.indexOf(shot.ball))].airborne())
+      scene.shot.reset();
   }
   return scene;
 }

@@ -38,6 +38,8 @@ void hopOffSupport(Ball<S>& ball, const Vec3<S>& n, const Vec3<S>& support_veloc
   const Vec3<S> sent = tangential > S(0)
                            ? Vec3<S>(tangent * (std::sqrt(std::max(speed * speed - hop * hop, S(0))) / tangential))
                            : Vec3<S>::Zero();
+  // On a moving support the same relative speed can be a larger speed: then it is slowed to its
+  // speed before (no energy made).
   Vec3<S> v = support_velocity + sent + hop * n;
   const S before = ball.v.norm(), after = v.norm();
   if (after > before)

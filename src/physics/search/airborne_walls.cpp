@@ -105,9 +105,8 @@ private:
     for (int root = 0; root < 4; ++root)
     {
       // Touching and pressed on by gravity, it is met now (as a ball pressed on a cushion is).
-      const S tau = root == 0
-                        ? contactTime(edge, limit(), -S(2) * R_ * zeroSpeed<S>(), touchTolerance(R_ * R_), true)
-                        : firstDownCrossing(edge, from, limit());
+      const S tau = root == 0 ? contactTime(edge, limit(), -S(2) * R_ * zeroSpeed<S>(), touchTolerance(R_ * R_), true)
+                              : firstDownCrossing(edge, from, limit());
       if (!(tau <= limit()))
         break;
       if (evaluatePoly(across, tau) >= S(0) && aboveTop(tau) > S(0) && beside(tau))
@@ -122,7 +121,9 @@ private:
     // Over the top: the centre crosses the nose's line above it, beside the cushion or over the
     // jaws and posts at its ends (where a flight over them would otherwise come down behind the
     // cushion's line; where the ball lands, a pocket included, departureOf decides).
-    if (across[0] > S(0))
+    if (across[0] <= S(0) && aboveTop(S(0)) > S(0) && along[0] >= -ends && along[0] <= seg.length + ends)
+      keep(S(0), Candidate<S>::Overboard, k);  // over the cushion's top already (placed there)
+    else if (across[0] > S(0))
     {
       const S tau = firstDownCrossing(across, S(0), limit());
       const S at = evaluatePoly(along, tau);
@@ -161,6 +162,9 @@ private:
         keep(now, Candidate<S>::Circle, k);
         return;
       }
+      // Moving off its side: met again only once back within reach.
+      if (within[1] > S(0))
+        enter = firstDownCrossing(within, S(0), limit());
     }
     for (int pass = 0; pass < 3 && enter <= limit(); ++pass)
     {
