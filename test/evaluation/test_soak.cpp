@@ -123,3 +123,29 @@ TEST(Soak, AGroupWhoseImpulsesCircleInRoundingEndsAtItsFirstEvent)
   const Eigen::Vector2d n = (balls[1].r - balls[0].r).head<2>().normalized();
   EXPECT_LE((balls[0].v - balls[1].v).head<2>().dot(n), physics::zeroSpeed<double>()) << "still closing";
 }
+
+// Issue 33: `soak --airborne` makes scenes with balls in the air (thrown, dropped onto others)
+// and draws the ball-table and cue models; every scene it makes starts valid, and its shots strike
+// balls on the cloth. The default campaign's scenes are unchanged by the option's existence.
+TEST(Soak, AirborneScenesFlyStartValidAndStrikeBallsOnTheCloth)
+{
+  int flying = 0, sequential = 0;
+  for (long k = 0; k < 300; ++k)
+  {
+    const Scene scene = soakScene(7, k, true);
+    const physics::Engine<double> engine(scene.table, scene.params, scene.models);
+    EXPECT_EQ(engine.whyInvalid(scene.state), "") << "scene " << k;
+    bool any = false;
+    for (const auto& b : scene.state.balls)
+      any = any || b.airborne();
+    flying += any;
+    sequential += scene.models.cue == "sequential";
+    if (scene.shot)
+      EXPECT_FALSE(scene.state.balls[static_cast<std::size_t>(scene.state.indexOf(scene.shot->ball))].airborne());
+    const Scene plain = soakScene(7, k);
+    EXPECT_EQ(plain.models.cue, "planar");  // the default: nothing leaves the cloth
+    EXPECT_EQ(plain.state.balls.size(), soakScene(7, k).state.balls.size());
+  }
+  EXPECT_GT(flying, 60);
+  EXPECT_GT(sequential, 60);
+}

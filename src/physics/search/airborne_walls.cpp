@@ -174,15 +174,10 @@ private:
         return;
       }
       // Within reach: the side (coming down beside it), the rim or the top.
-      S leave = limit();
-      S roots[4];
-      const int n = polyRootsIn(within, enter, limit(), roots);
-      for (int i = 0; i < n; ++i)
-        if (roots[i] > enter)
-        {
-          leave = roots[i];
-          break;
-        }
+      // Out of reach again where the gap rises through zero (a root at `enter` itself, where it
+      // touches, is not that).
+      const Poly4<S> outside = {-within[0], -within[1], -within[2], -within[3], -within[4]};
+      const S leave = std::min(firstDownCrossing(outside, enter, limit()), limit());
       S tau;
       if (rimContact(post, enter, leave, tau))
       {
