@@ -811,3 +811,42 @@ TEST(AirborneWalls, ABallDroppedOntoABallOrANoseRollsOffTheSideItLeansTo)
       EXPECT_EQ(after.balls[0].motion, Motion::OffTable) << "over onto the rail";
   }
 }
+
+// A ball that bounced to rest keeps no height terms in the kept search's record: a ball hopping
+// into it later is met where a full scan meets it (a stale flight there once hid the pair).
+TEST(AirborneWalls, ABallThatBouncedToRestIsMetByAHopLikeAFullScanMeetsIt)
+{
+  const auto table = sevenFoot();
+  const Engine<double> engine(table, PhysicsParams<double>());
+  TableState<double> s;
+  s.balls.push_back(inTheAir(0, 0.0, 0.0, 0.02));                               // at rest after 0.19 s of bounces
+  s.balls.push_back(inTheAir(1, -0.9, 0.005, 0.0, Vec3<double>(3.0, 0, 1.5)));  // flies into it at 0.27 s
+  std::vector<Event<double>> by_scan;
+  TableState<double> scanned = s;
+  for (int n = 0; n < 5000; ++n)
+  {
+    const Event<double> e = scanStep(engine, scanned);
+    if (!e.valid())
+      break;
+    by_scan.push_back(e);
+  }
+  TableState<double> kept = s;
+  const ShotResult<double> run = simulateToRest(engine, kept);
+  ASSERT_EQ(run.events.size(), by_scan.size());
+  for (std::size_t i = 0; i < by_scan.size(); ++i)
+  {
+    EXPECT_EQ(run.events[i].kind, by_scan[i].kind) << "event " << i;
+    EXPECT_EQ(run.events[i].time, by_scan[i].time) << "event " << i;
+  }
+  bool met_in_the_air = false;
+  TableState<double> replay = s;
+  for (int n = 0; n < 5000; ++n)
+  {
+    const Event<double> e = scanNextEvent(engine, replay);
+    if (!e.valid())
+      break;
+    met_in_the_air |= e.kind == EventKind::BallBall && replay.balls[1].airborne();
+    scanStep(engine, replay);
+  }
+  EXPECT_TRUE(met_in_the_air);
+}

@@ -226,6 +226,8 @@ void CandidateFinder<S>::restingPath(const Ball<S>& ball, int index, BallRecord<
   record.path.c0 = ball.r.template head<2>();
   record.path.c1.setZero();
   record.path.c2.setZero();
+  // On the cloth: no height terms (a record kept from the ball's last flight must not lend it one).
+  record.path.h0 = record.path.h1 = record.path.h2 = S(0);
   record.time = ball.time;
   record.first = Candidate<S>();
   record.first.ball = index;
