@@ -99,6 +99,31 @@ std::vector<Event<double>> runChecked(const Engine<double>& engine, TableState<d
   return events;
 }
 
+/// The shot run by a full scan, event by event, and by the kept search: the same events bit for
+/// bit (kind, time, ball), checked; returns the scan's.
+std::vector<Event<double>> keptSearchAgreesWithScan(const Engine<double>& engine, const TableState<double>& s)
+{
+  TableState<double> scanned = s;
+  std::vector<Event<double>> by_scan;
+  for (int n = 0; n < 5000; ++n)
+  {
+    const Event<double> e = scanStep(engine, scanned);
+    if (!e.valid())
+      break;
+    by_scan.push_back(e);
+  }
+  TableState<double> kept = s;
+  const ShotResult<double> run = simulateToRest(engine, kept);
+  EXPECT_EQ(run.events.size(), by_scan.size());
+  for (std::size_t i = 0; i < std::min(by_scan.size(), run.events.size()); ++i)
+  {
+    EXPECT_EQ(run.events[i].kind, by_scan[i].kind) << "event " << i;
+    EXPECT_EQ(run.events[i].time, by_scan[i].time) << "event " << i;
+    EXPECT_EQ(run.events[i].ball, by_scan[i].ball) << "event " << i;
+  }
+  return by_scan;
+}
+
 int countKind(const std::vector<Event<double>>& events, EventKind kind)
 {
   int n = 0;
@@ -317,24 +342,7 @@ TEST(Airborne, TheKeptSearchAndAFullScanAgreeAndLongDoubleAgrees)
   s.balls.push_back(inTheAir(2, 0.3, 0.0, 0.0, Vec3<double>(0, 0, 0)));
   s.balls.push_back(inTheAir(3, 0.3 + 2 * R + 1e-4, 0.0, 0.0, Vec3<double>(0, 0, 0)));
   s.balls.push_back(inTheAir(4, 0.5, -0.3, 0.2, Vec3<double>(-0.5, 1.5, 0.0)));
-  TableState<double> scanned = s;
-  std::vector<Event<double>> by_scan;
-  for (int n = 0; n < 5000; ++n)
-  {
-    const Event<double> e = scanStep(engine, scanned);
-    if (!e.valid())
-      break;
-    by_scan.push_back(e);
-  }
-  TableState<double> kept = s;
-  const ShotResult<double> run = simulateToRest(engine, kept);
-  ASSERT_EQ(run.events.size(), by_scan.size());
-  for (std::size_t i = 0; i < by_scan.size(); ++i)
-  {
-    EXPECT_EQ(run.events[i].kind, by_scan[i].kind) << "event " << i;
-    EXPECT_EQ(run.events[i].time, by_scan[i].time) << "event " << i;
-    EXPECT_EQ(run.events[i].ball, by_scan[i].ball) << "event " << i;
-  }
+  const std::vector<Event<double>> by_scan = keptSearchAgreesWithScan(engine, s);
   EXPECT_GT(countKind(by_scan, EventKind::BallSlate), 5);
   EXPECT_GT(countKind(by_scan, EventKind::BallBall), 0);
 
@@ -821,23 +829,7 @@ TEST(AirborneWalls, ABallThatBouncedToRestIsMetByAHopLikeAFullScanMeetsIt)
   TableState<double> s;
   s.balls.push_back(inTheAir(0, 0.0, 0.0, 0.02));                               // at rest after 0.19 s of bounces
   s.balls.push_back(inTheAir(1, -0.9, 0.005, 0.0, Vec3<double>(3.0, 0, 1.5)));  // flies into it at 0.27 s
-  std::vector<Event<double>> by_scan;
-  TableState<double> scanned = s;
-  for (int n = 0; n < 5000; ++n)
-  {
-    const Event<double> e = scanStep(engine, scanned);
-    if (!e.valid())
-      break;
-    by_scan.push_back(e);
-  }
-  TableState<double> kept = s;
-  const ShotResult<double> run = simulateToRest(engine, kept);
-  ASSERT_EQ(run.events.size(), by_scan.size());
-  for (std::size_t i = 0; i < by_scan.size(); ++i)
-  {
-    EXPECT_EQ(run.events[i].kind, by_scan[i].kind) << "event " << i;
-    EXPECT_EQ(run.events[i].time, by_scan[i].time) << "event " << i;
-  }
+  const std::vector<Event<double>> by_scan = keptSearchAgreesWithScan(engine, s);
   bool met_in_the_air = false;
   TableState<double> replay = s;
   for (int n = 0; n < 5000; ++n)
