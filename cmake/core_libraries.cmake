@@ -39,6 +39,8 @@ add_library(cue_sim_physics
   ${CUE_SIM_ROOT}/src/physics/contacts/event_resolution.cpp
   ${CUE_SIM_ROOT}/src/physics/contacts/impact_group.cpp
   ${CUE_SIM_ROOT}/src/physics/contacts/sustained_contact.cpp
+  ${CUE_SIM_ROOT}/src/physics/contacts/support_hops.cpp
+  ${CUE_SIM_ROOT}/src/physics/contacts/support_slide.cpp
   # shots: aiming a cue, execution noise, batches on a thread pool
   ${CUE_SIM_ROOT}/src/physics/shots/cue_aim.cpp
   ${CUE_SIM_ROOT}/src/physics/shots/cue_sweep.cpp

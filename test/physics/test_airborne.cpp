@@ -842,3 +842,55 @@ TEST(AirborneWalls, ABallThatBouncedToRestIsMetByAHopLikeAFullScanMeetsIt)
   }
   EXPECT_TRUE(met_in_the_air);
 }
+
+// Balls left at rest on their supports in the air (doc/physics.md, "Balls in the air"). A ball
+// carried on top of a rolling ball, at rest on it, has no speed to hop round it with: it slides a
+// fraction of a micrometre down it, the height it loses paying exactly for its hop, and comes
+// off. (Before, it was met again and again at one instant, to the event limit.)
+TEST(SupportsInTheAir, ABallCarriedAtRestOnARollingBallComesOffIt)
+{
+  const auto table = sevenFoot();
+  const Engine<double> engine(table, PhysicsParams<double>());
+  const double R = engine.params().ball_radius;
+  for (const double tilt : {0.35, 0.6})
+  {
+    SCOPED_TRACE("tilt " + std::to_string(tilt));
+    const Vec3<double> v(0.5, 0.0, 0.0);
+    TableState<double> s;
+    s.balls.push_back(inTheAir(0, -0.3, 0.0, 0.0, v, Vec3<double>(0.0, v.x() / R, 0.0)));  // rolling
+    ASSERT_EQ(s.balls[0].motion, Motion::Rolling);
+    s.balls.push_back(inTheAir(1, -0.3 - 2 * R * std::sin(tilt), 0.0, 2 * R * std::cos(tilt), v));
+    const std::vector<Event<double>> events = runChecked(engine, s, 2);
+    EXPECT_LT(events.size(), 20000u);
+    TableState<double> end = s;
+    simulateToRest(engine, end);
+    EXPECT_EQ(engine.whyInvalid(end), "");
+    EXPECT_NEAR(end.balls[1].r.z(), R, 1e-12) << "on the cloth";
+    EXPECT_LT(end.balls[1].r.x(), end.balls[0].r.x()) << "off the side it leaned to";
+  }
+}
+
+// A ball at rest on three touching balls (a pyramid of four) has no way down that leaves them:
+// it comes down between them by pushing them apart, as nothing holds a ball on the cloth against
+// a push through its centre (it rolls). It ends on the cloth, with no energy made and no overlap.
+TEST(SupportsInTheAir, APyramidOfFourComesDownByPushingItsBaseApart)
+{
+  const auto table = sevenFoot();
+  const Engine<double> engine(table, PhysicsParams<double>());
+  const double R = engine.params().ball_radius, pi = std::acos(-1.0);
+  TableState<double> s;
+  const double circumradius = 2 * R / std::sqrt(3.0);
+  for (int k = 0; k < 3; ++k)
+    s.balls.push_back(
+        inTheAir(k, circumradius * std::cos(2 * pi * k / 3), circumradius * std::sin(2 * pi * k / 3), 0.0));
+  s.balls.push_back(inTheAir(3, 0.0, 0.0, 2 * R * std::sqrt(2.0 / 3.0)));
+  ASSERT_EQ(engine.whyInvalid(s), "");
+  const std::vector<Event<double>> events = runChecked(engine, s, 2);
+  EXPECT_LT(events.size(), 20000u);
+  TableState<double> end = s;
+  simulateToRest(engine, end);
+  EXPECT_EQ(engine.whyInvalid(end), "");
+  EXPECT_NEAR(end.balls[3].r.z(), R, 1e-12) << "the top ball is on the cloth";
+  for (int k = 0; k < 3; ++k)
+    EXPECT_GT(end.balls[k].r.head<2>().norm(), circumradius + 1e-3) << "base ball " << k << " pushed out";
+}

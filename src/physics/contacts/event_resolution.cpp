@@ -5,6 +5,7 @@
 
 #include "cue_sim/physics/motion.hpp"
 #include "physics/contacts/event_resolver.hpp"
+#include "physics/contacts/support_hops.hpp"
 #include "physics/engine/table_departure.hpp"
 #include "physics/models/ball_table/slate_landing.hpp"
 
@@ -12,42 +13,6 @@ namespace cue_sim
 {
 namespace physics
 {
-namespace
-{
-/// A ball in the air that an impact leaves touching a rounded support (another ball, a cushion's
-/// nose, a post's rim) and leaving it slower than kSettleSpeed along the normal `n` (from the
-/// support to the ball), while gravity presses it on, would be met again at once, and again: it is
-/// rolling or sliding round the support, which has no closed form. It is sent on round the support
-/// in hops: kSettleSpeed along the normal, the rest of its speed relative to the support along the
-/// support, so that gravity brings it back a fraction of a millisecond later a little further on
-/// (doc/physics.md, "Balls in the air"). Its speed is never raised, so no energy is made; a ball
-/// at rest on a support has no speed to hop with and stays.
-template <typename S>
-void hopOffSupport(Ball<S>& ball, const Vec3<S>& n, const Vec3<S>& support_velocity)
-{
-  if (!(n.z() > S(0)))
-    return;  // gravity does not press it on
-  const Vec3<S> relative = ball.v - support_velocity;
-  const S along_normal = relative.dot(n);
-  if (!(along_normal < S(kSettleSpeed)))
-    return;
-  const S speed = relative.norm();
-  const S hop = std::min(S(kSettleSpeed), speed);
-  const Vec3<S> tangent = relative - along_normal * n;
-  const S tangential = tangent.norm();
-  const Vec3<S> sent = tangential > S(0)
-                           ? Vec3<S>(tangent * (std::sqrt(std::max(speed * speed - hop * hop, S(0))) / tangential))
-                           : Vec3<S>::Zero();
-  // On a moving support the same relative speed can be a larger speed: then it is slowed to its
-  // speed before (no energy made).
-  Vec3<S> v = support_velocity + sent + hop * n;
-  const S before = ball.v.norm(), after = v.norm();
-  if (after > before)
-    v *= before / after;
-  ball.v = v;
-}
-}  // namespace
-
 template <typename S>
 void resolveEvent(const Engine<S>& engine, TableState<S>& state, const Event<S>& event, const EventContext<S>& context)
 {
@@ -173,7 +138,17 @@ void EventResolver<S>::resolveAirbornePair(Ball<S>& a, Ball<S>& b)
   }
   keepOnCloth();
   if (a_on_cloth != b_on_cloth)  // one resting on the other: gravity presses the flying one on
-    a_on_cloth ? hopOffSupport(b, n, a.v) : hopOffSupport(a, Vec3<S>(-n), b.v);
+  {
+    // A full hop paid by their sliding, else by a slide down the supports, else the largest hop
+    // their sliding pays for.
+    Ball<S>& flying = a_on_cloth ? b : a;
+    Ball<S>& support = a_on_cloth ? a : b;
+    const Vec3<S> up = a_on_cloth ? n : Vec3<S>(-n);
+    const bool at_rest_on_it = (flying.v - support.v).norm() < S(kSettleSpeed);
+    if (!hopOffBallOnCloth(flying, support, up, S(kSettleSpeed)) &&
+        !(at_rest_on_it && slideDownSupports(a_on_cloth ? context_.other_index : context_.index)))
+      hopOffBallOnCloth(flying, support, up, S(kSmallestHop));
+  }
   for (Ball<S>* ball : {&a, &b})
   {
     // A ball coming down from the air meets the slate anew.
@@ -228,7 +203,8 @@ bool EventResolver<S>::resolveWallTop(Ball<S>& ball, const Event<S>& event)
     ball.v -= (S(1) + params_.e_cushion) * approach * normal;
   else
     ball.v += roundingSpeed(ball.v.norm()) * normal;  // closing within rounding: moved off
-  hopOffSupport(ball, normal, Vec3<S>(Vec3<S>::Zero()));
+  if (!hopOffFixedSupport(ball, normal))
+    slideDownSupports(context_.index);
   settleMotion(ball, params_.ball_radius);
   return true;
 }

@@ -1,6 +1,6 @@
 // The parts of resolving one event (internal to src/physics/contacts/): an impact of a touching
-// group (impact_group.cpp), sustained contact of balls and walls (sustained_contact.cpp), and the
-// event itself, pocketing and neighbours (event_resolution.cpp).
+// group (impact_group.cpp), sustained contact of balls and walls (sustained_contact.cpp), a ball at rest on its
+// supports in the air (support_slide.cpp), and the event itself, pocketing and neighbours (event_resolution.cpp).
 #pragma once
 
 #include <vector>
@@ -124,6 +124,21 @@ private:
   void nearBalls(const Vec2<S>& point, S distance, std::vector<int>& out) const;
   /// True if the ball cannot be within `distance` of `point` (xy) at `time`: a cheap bound.
   bool cannotReach(const Ball<S>& ball, const Vec3<S>& point, S distance, S time) const;
+
+  // support_slide.cpp
+  /// What a ball touches: its outward normal, and the ball's index (-1: the slate or a wall).
+  struct Support
+  {
+    Vec3<S> normal;
+    int ball;
+  };
+  /// Everything the ball touches, and the smallest gap to anything else it is near.
+  void supportsOf(int index, std::vector<Support>& supports, S& nearest) const;
+  /// A ball in the air left at rest on its supports, pressed on: slid down them (hopping off) or,
+  /// held, pushing the balls on the cloth among them apart. False if neither can be done.
+  bool slideDownSupports(int index);
+  bool hopDownSupports(Ball<S>& ball, const std::vector<Support>& supports, const Vec3<S>& down, S nearest);
+  bool spreadSupports(int index, const std::vector<Support>& supports, const Vec3<S>& down, S nearest);
 
   // impact_group.cpp
   /// Resolves a ball-ball impact together with every ball touching the pair, and the cushions

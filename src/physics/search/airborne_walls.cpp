@@ -212,11 +212,27 @@ private:
       }
       else if (apart < S(0) && gap < -touch)
       {
-        tau = lo;  // touching at lo and never apart: pressed into it, met now
+        tau = backOnPost(post, lo, t, touch);
         return true;
       }
     }
     return false;
+  }
+
+  /// Touching the post at lo, moving off it (not closing), and inside it at `inside`: gravity
+  /// brings it back within the first sample. The moment it is back, found by halving towards lo
+  /// until it is seen apart; lo if it never is (pressed into it, met now).
+  S backOnPost(const Circle& post, S lo, S inside, S touch) const
+  {
+    for (;;)
+    {
+      const S mid = lo + (inside - lo) / S(2);
+      if (!(mid > lo && mid < inside))
+        return lo;
+      if (postGap(post, mid) > touch)
+        return bisect(post, mid, inside);
+      inside = mid;
+    }
   }
 
   /// Whether the ball moves into the post's rim or top at tau.

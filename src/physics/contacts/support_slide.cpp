@@ -1,0 +1,234 @@
+// A ball in the air left at rest on its supports (doc/physics.md, "Balls in the air"): gravity
+// presses it on, and it has no speed to hop with. It slides down them by a fraction of a
+// micrometre, the height it loses paying, exactly, for a hop off them.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "physics/contacts/event_resolver.hpp"
+#include "physics/contacts/support_hops.hpp"
+
+namespace cue_sim
+{
+namespace physics
+{
+namespace
+{
+/// A support touches the ball when their gap is within this [m]: the soak campaign's overlap
+/// tolerance, far below any gap a slide may close.
+constexpr double kSupportTouch = 1e-9;
+/// The longest slide [m]: a ball that would have to slide further to pay for a full hop
+/// (nearly on a support's top) hops less. The slide is a step the ball's path does not show.
+constexpr double kMaxSlide = 1e-6;
+/// Descent per unit of slide below which the supports are taken to hold the ball (a slide of
+/// kMaxSlide would pay for a hop of under a nanometre a second).
+constexpr double kLeastDescent = 1e-9;
+
+/// The direction, first order, that loses height fastest while moving away from no support
+/// (outward normals `n`), with the height lost per unit length; a descent of 0 if there is none.
+template <typename S>
+S steepestFreeDescent(const std::vector<Vec3<S>>& n, Vec3<S>& best)
+{
+  std::vector<Vec3<S>> tries{Vec3<S>(S(0), S(0), S(-1))};
+  for (std::size_t i = 0; i < n.size(); ++i)
+  {
+    tries.push_back(Vec3<S>(S(0), S(0), S(-1)) + n[i].z() * n[i]);
+    for (std::size_t j = i + 1; j < n.size(); ++j)
+    {
+      const Vec3<S> line = n[i].cross(n[j]);
+      tries.push_back(line.z() > S(0) ? Vec3<S>(-line) : line);
+    }
+  }
+  S descent = S(0);
+  for (const Vec3<S>& t : tries)
+  {
+    const S length = t.norm();
+    if (!(length > S(0)))
+      continue;
+    const Vec3<S> d = t / length;
+    const bool free = std::all_of(n.begin(), n.end(), [&](const Vec3<S>& m) { return d.dot(m) >= -S(kTouchingSlack); });
+    if (free && -d.z() > descent)
+    {
+      descent = -d.z();
+      best = d;
+    }
+  }
+  return descent;
+}
+}  // namespace
+
+template <typename S>
+void EventResolver<S>::supportsOf(int index, std::vector<Support>& supports, S& nearest) const
+{
+  const Ball<S>& ball = state_.balls[index];
+  const S R = params_.ball_radius;
+  const auto note = [&](S gap, const Vec3<S>& normal, int by) {
+    if (gap <= S(kSupportTouch))
+      supports.push_back({normal, by});
+    else
+      nearest = std::min(nearest, gap);
+  };
+  note(ball.r.z() - R, Vec3<S>(S(0), S(0), S(1)), -1);  // the slate
+  std::vector<int> near;
+  nearBalls(ball.r.template head<2>(), S(2) * R + S(kMaxSlide) + S(kSupportTouch), near);
+  for (int j : near)
+  {
+    if (j == index || !state_.balls[j].inPlay())
+      continue;
+    const Vec3<S> d = ball.r - state_.balls[j].r;
+    const S distance = d.norm();
+    note(distance - S(2) * R, d / distance, j);
+  }
+  // The walls: a cushion's face below its nose, the nose's edge above it (its whole line, which
+  // is never further than the cushion itself), a post's side, rim or top.
+  const Vec2<S> p = ball.r.template head<2>();
+  const S above = ball.r.z() - geometry_.nose_height;
+  for (const auto& seg : geometry_.segments)
+  {
+    const S out = seg.normal.dot(p - seg.start);
+    if (above <= S(0))
+      note(out - R, Vec3<S>(seg.normal.x(), seg.normal.y(), S(0)), -1);
+    else
+    {
+      const Vec3<S> d(std::max(out, S(0)) * seg.normal.x(), std::max(out, S(0)) * seg.normal.y(), above);
+      note(d.norm() - R, d.normalized(), -1);
+    }
+  }
+  for (const auto& post : geometry_.circles)
+  {
+    const Vec2<S> from = p - post.centre;
+    const S distance = from.norm();
+    const S side = std::max(distance - post.radius, S(0));
+    const Vec3<S> d(side > S(0) ? side * from.x() / distance : S(0), side > S(0) ? side * from.y() / distance : S(0),
+                    std::max(above, S(0)));
+    const S length = d.norm();
+    if (length > S(0))
+      note(length - R, d / length, -1);
+  }
+}
+
+template <typename S>
+bool EventResolver<S>::slideDownSupports(int index)
+{
+  Ball<S>& ball = state_.balls[index];
+  std::vector<Support> supports;
+  S nearest = std::numeric_limits<S>::infinity();
+  supportsOf(index, supports, nearest);
+  if (supports.empty())
+    return false;
+  std::vector<Vec3<S>> all, fixed;
+  for (const Support& s : supports)
+  {
+    all.push_back(s.normal);
+    if (s.ball < 0 || state_.balls[s.ball].airborne())
+      fixed.push_back(s.normal);
+  }
+  Vec3<S> down;
+  if (steepestFreeDescent(all, down) > S(kLeastDescent))
+    return hopDownSupports(ball, supports, down, nearest);
+  // Held by its supports: it may still come down between the balls on the cloth among them by
+  // pushing them apart (no static friction holds a ball on the cloth).
+  return steepestFreeDescent(fixed, down) > S(kLeastDescent) && spreadSupports(index, supports, down, nearest);
+}
+
+template <typename S>
+bool EventResolver<S>::hopDownSupports(Ball<S>& ball, const std::vector<Support>& supports, const Vec3<S>& down,
+                                       S nearest)
+{
+  Vec3<S> away = Vec3<S>::Zero();
+  for (const Support& s : supports)
+    away += s.normal;
+  away.normalize();
+  if (!std::all_of(supports.begin(), supports.end(), [&](const Support& s) { return away.dot(s.normal) > S(0); }))
+    return false;
+  // The hop costs (per unit mass) hop (away . v) + hop^2 / 2 of kinetic energy; the slide s
+  // down pays g s descent for it.
+  const S g = params_.gravity, descent = -down.z(), along = away.dot(ball.v);
+  // Never further than half the way to anything it does not touch: it makes no overlap.
+  const S longest = std::min(S(kMaxSlide), S(0.5) * nearest);
+  const S afforded = g * S(0.5) * longest * descent;
+  S hop = S(kSettleSpeed);
+  S cost = hop * along + S(0.5) * hop * hop;
+  if (cost > afforded)
+  {
+    hop = -along + std::sqrt(along * along + S(2) * afforded);
+    cost = hop * along + S(0.5) * hop * hop;
+  }
+  if (!(hop >= S(kSmallestHop)))
+    return false;
+  // A few ulps more height lost than the hop takes, so rounding never makes energy.
+  const S slide = std::max(cost, S(0)) / (g * descent) * (S(1) + S(64) * std::numeric_limits<S>::epsilon());
+  if (!(slide <= longest))
+    return false;
+  ball.r += slide * down;
+  ball.v += hop * away;
+  return true;
+}
+
+template <typename S>
+bool EventResolver<S>::spreadSupports(int index, const std::vector<Support>& supports, const Vec3<S>& down, S nearest)
+{
+  Ball<S>& ball = state_.balls[index];
+  const S R = params_.ball_radius, g = params_.gravity, descent = -down.z();
+  // The balls on the cloth it would come down into are pushed out, away from it, at kSettleSpeed.
+  struct Push
+  {
+    int ball;
+    Vec2<S> out;
+  };
+  std::vector<Push> pushes;
+  S cost = S(0);
+  for (const Support& s : supports)
+    if (s.ball >= 0 && down.dot(s.normal) < S(0))
+    {
+      const Ball<S>& b = state_.balls[s.ball];
+      const Vec2<S> out = (b.r - ball.r).template head<2>().normalized();
+      pushes.push_back({s.ball, out});
+      cost += S(kSettleSpeed) * out.dot(b.v.template head<2>()) + S(0.5) * S(kSettleSpeed * kSettleSpeed);
+    }
+  const S slide = std::max(cost, S(0)) / (g * descent) * (S(1) + S(64) * std::numeric_limits<S>::epsilon());
+  if (pushes.empty() || !(slide <= std::min(S(kMaxSlide), S(0.5) * nearest)))
+    return false;
+  const Vec3<S> r = ball.r + slide * down;
+  // Each pushed ball moves out just far enough to touch it again, if nothing else is in its way.
+  std::vector<S> moves;
+  for (const Push& push : pushes)
+  {
+    const Ball<S>& b = state_.balls[push.ball];
+    const Vec2<S> w = (b.r - r).template head<2>();
+    const S dz = b.r.z() - r.z(), along = w.dot(push.out);
+    const S reach = S(4) * R * R - dz * dz - w.squaredNorm() + along * along;
+    const S move = reach > S(0) ? std::max(-along + std::sqrt(reach), S(0)) * (S(1) + S(kTouchingSlack)) : S(0);
+    std::vector<Support> its;
+    S its_nearest = std::numeric_limits<S>::infinity();
+    supportsOf(push.ball, its, its_nearest);
+    const Vec3<S> step(push.out.x(), push.out.y(), S(0));
+    for (const Support& s : its)
+      if (s.ball != index && s.normal.dot(step) < S(0))
+        return false;  // something else holds it there
+    if (!(move <= S(0.5) * its_nearest))
+      return false;
+    moves.push_back(move);
+  }
+  ball.r = r;
+  for (std::size_t k = 0; k < pushes.size(); ++k)
+  {
+    Ball<S>& b = state_.balls[pushes[k].ball];
+    b.r.template head<2>() += moves[k] * pushes[k].out;
+    b.v.template head<2>() += S(kSettleSpeed) * pushes[k].out;
+    settleMotion(b, R);
+    changed(pushes[k].ball);
+  }
+  return true;
+}
+
+#define CUE_SIM_INSTANTIATE_SUPPORT_SLIDE(S)                                                                           \
+  template void EventResolver<S>::supportsOf(int, std::vector<Support>&, S&) const;                                    \
+  template bool EventResolver<S>::slideDownSupports(int);                                                              \
+  template bool EventResolver<S>::hopDownSupports(Ball<S>&, const std::vector<Support>&, const Vec3<S>&, S);           \
+  template bool EventResolver<S>::spreadSupports(int, const std::vector<Support>&, const Vec3<S>&, S);
+CUE_SIM_INSTANTIATE_SUPPORT_SLIDE(double)
+CUE_SIM_INSTANTIATE_SUPPORT_SLIDE(long double)
+
+}  // namespace physics
+}  // namespace cue_sim
