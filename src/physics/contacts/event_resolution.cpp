@@ -145,9 +145,9 @@ void EventResolver<S>::resolveAirbornePair(Ball<S>& a, Ball<S>& b)
     Ball<S>& support = a_on_cloth ? a : b;
     const Vec3<S> up = a_on_cloth ? n : Vec3<S>(-n);
     const bool at_rest_on_it = (flying.v - support.v).norm() < S(kSettleSpeed);
-    if (!hopOffBallOnCloth(flying, support, up, S(kSettleSpeed)) &&
+    if (!hopOffBallOnCloth(flying, support, up, S(kSettleSpeed), S(kSettleSpeed)) &&
         !(at_rest_on_it && slideDownSupports(a_on_cloth ? context_.other_index : context_.index)))
-      hopOffBallOnCloth(flying, support, up, S(kSmallestHop));
+      hopOffBallOnCloth(flying, support, up, S(0.5 * kSettleSpeed), S(kSmallestHop));
   }
   for (Ball<S>* ball : {&a, &b})
   {

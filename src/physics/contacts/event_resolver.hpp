@@ -1,6 +1,7 @@
 // The parts of resolving one event (internal to src/physics/contacts/): an impact of a touching
-// group (impact_group.cpp), sustained contact of balls and walls (sustained_contact.cpp), a ball at rest on its
-// supports in the air (support_slide.cpp), and the event itself, pocketing and neighbours (event_resolution.cpp).
+// group (impact_group.cpp), sustained contact of balls and walls (sustained_contact.cpp), a ball
+// at rest on its supports in the air (support_slide.cpp), and the event itself, pocketing and
+// neighbours (event_resolution.cpp).
 #pragma once
 
 #include <vector>
@@ -132,8 +133,9 @@ private:
     Vec3<S> normal;
     int ball;
   };
-  /// Everything the ball touches, and the smallest gap to anything else it is near.
-  void supportsOf(int index, std::vector<Support>& supports, S& nearest) const;
+  /// Everything `ball` (state_.balls[index] at some instant) touches then, and the smallest gap
+  /// to anything else it is near.
+  void supportsOf(const Ball<S>& ball, int index, std::vector<Support>& supports, S& nearest) const;
   /// A ball in the air left at rest on its supports, pressed on: slid down them (hopping off) or,
   /// held, pushing the balls on the cloth among them apart. False if neither can be done.
   bool slideDownSupports(int index);

@@ -87,14 +87,14 @@ bool hopOffFixedSupport(Ball<S>& ball, const Vec3<S>& n)
 }
 
 template <typename S>
-bool hopOffBallOnCloth(Ball<S>& flying, Ball<S>& support, const Vec3<S>& n, S least)
+bool hopOffBallOnCloth(Ball<S>& flying, Ball<S>& support, const Vec3<S>& n, S most, S least)
 {
   if (!(n.z() > S(0)))
     return true;  // gravity does not press it on
   PairOnCloth<S> pair{flying.v, support.v};
   if (!(pair.relative().dot(n) < S(kSettleSpeed)))
     return true;
-  for (S hop = S(kSettleSpeed); hop >= least; hop *= S(0.5))
+  for (S hop = most; hop >= least; hop *= S(0.5))
     if (pushApart(pair, n, hop))
     {
       flying.v = pair.flying;
@@ -106,7 +106,7 @@ bool hopOffBallOnCloth(Ball<S>& flying, Ball<S>& support, const Vec3<S>& n, S le
 
 #define CUE_SIM_INSTANTIATE_SUPPORT_HOPS(S)                                                                            \
   template bool hopOffFixedSupport(Ball<S>&, const Vec3<S>&);                                                          \
-  template bool hopOffBallOnCloth(Ball<S>&, Ball<S>&, const Vec3<S>&, S);
+  template bool hopOffBallOnCloth(Ball<S>&, Ball<S>&, const Vec3<S>&, S, S);
 CUE_SIM_INSTANTIATE_SUPPORT_HOPS(double)
 CUE_SIM_INSTANTIATE_SUPPORT_HOPS(long double)
 

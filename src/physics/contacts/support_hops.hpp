@@ -21,10 +21,10 @@ bool hopOffFixedSupport(Ball<S>& ball, const Vec3<S>& n);
 /// leaving it slower than kSettleSpeed along `n` (from the support to the flying ball), is pushed
 /// off by an impulse between the two (horizontal momentum kept) that gives them kSettleSpeed
 /// apart along `n`. It is paid for by the sliding between them, as friction would take it, so no
-/// energy is made; when their sliding cannot pay for it the hop is halved, down to `least`. False,
-/// and the balls unchanged, if even that cannot be paid.
+/// energy is made. The hop tried first is `most`; when their sliding cannot pay for it, it is
+/// halved, down to `least`. False, and the balls unchanged, if even that cannot be paid.
 template <typename S>
-bool hopOffBallOnCloth(Ball<S>& flying, Ball<S>& support, const Vec3<S>& n, S least);
+bool hopOffBallOnCloth(Ball<S>& flying, Ball<S>& support, const Vec3<S>& n, S most, S least);
 
 /// The smallest hop off a support [m/s]: below it, gravity brings the ball back within a few
 /// nanoseconds, and the ball is taken to be at rest on it.

@@ -58,9 +58,8 @@ S steepestFreeDescent(const std::vector<Vec3<S>>& n, Vec3<S>& best)
 }  // namespace
 
 template <typename S>
-void EventResolver<S>::supportsOf(int index, std::vector<Support>& supports, S& nearest) const
+void EventResolver<S>::supportsOf(const Ball<S>& ball, int index, std::vector<Support>& supports, S& nearest) const
 {
-  const Ball<S>& ball = state_.balls[index];
   const S R = params_.ball_radius;
   const auto note = [&](S gap, const Vec3<S>& normal, int by) {
     if (gap <= S(kSupportTouch))
@@ -75,7 +74,8 @@ void EventResolver<S>::supportsOf(int index, std::vector<Support>& supports, S& 
   {
     if (j == index || !state_.balls[j].inPlay())
       continue;
-    const Vec3<S> d = ball.r - state_.balls[j].r;
+    // Each ball is where it is at this ball's time (a ball's state is kept at its last event).
+    const Vec3<S> d = ball.r - evolve(state_.balls[j], ball.time, params_).r;
     const S distance = d.norm();
     note(distance - S(2) * R, d / distance, j);
   }
@@ -113,7 +113,7 @@ bool EventResolver<S>::slideDownSupports(int index)
   Ball<S>& ball = state_.balls[index];
   std::vector<Support> supports;
   S nearest = std::numeric_limits<S>::infinity();
-  supportsOf(index, supports, nearest);
+  supportsOf(ball, index, supports, nearest);
   if (supports.empty())
     return false;
   std::vector<Vec3<S>> all, fixed;
@@ -173,7 +173,8 @@ bool EventResolver<S>::spreadSupports(int index, const std::vector<Support>& sup
   // The balls on the cloth it would come down into are pushed out, away from it, at kSettleSpeed.
   struct Push
   {
-    int ball;
+    int index;
+    Ball<S> ball;  ///< at this instant
     Vec2<S> out;
   };
   std::vector<Push> pushes;
@@ -181,9 +182,9 @@ bool EventResolver<S>::spreadSupports(int index, const std::vector<Support>& sup
   for (const Support& s : supports)
     if (s.ball >= 0 && down.dot(s.normal) < S(0))
     {
-      const Ball<S>& b = state_.balls[s.ball];
+      const Ball<S> b = evolve(state_.balls[s.ball], ball.time, params_);
       const Vec2<S> out = (b.r - ball.r).template head<2>().normalized();
-      pushes.push_back({s.ball, out});
+      pushes.push_back({s.ball, b, out});
       cost += S(kSettleSpeed) * out.dot(b.v.template head<2>()) + S(0.5) * S(kSettleSpeed * kSettleSpeed);
     }
   const S slide = std::max(cost, S(0)) / (g * descent) * (S(1) + S(64) * std::numeric_limits<S>::epsilon());
@@ -194,14 +195,14 @@ bool EventResolver<S>::spreadSupports(int index, const std::vector<Support>& sup
   std::vector<S> moves;
   for (const Push& push : pushes)
   {
-    const Ball<S>& b = state_.balls[push.ball];
+    const Ball<S>& b = push.ball;
     const Vec2<S> w = (b.r - r).template head<2>();
     const S dz = b.r.z() - r.z(), along = w.dot(push.out);
     const S reach = S(4) * R * R - dz * dz - w.squaredNorm() + along * along;
     const S move = reach > S(0) ? std::max(-along + std::sqrt(reach), S(0)) * (S(1) + S(kTouchingSlack)) : S(0);
     std::vector<Support> its;
     S its_nearest = std::numeric_limits<S>::infinity();
-    supportsOf(push.ball, its, its_nearest);
+    supportsOf(b, push.index, its, its_nearest);
     const Vec3<S> step(push.out.x(), push.out.y(), S(0));
     for (const Support& s : its)
       if (s.ball != index && s.normal.dot(step) < S(0))
@@ -213,17 +214,18 @@ bool EventResolver<S>::spreadSupports(int index, const std::vector<Support>& sup
   ball.r = r;
   for (std::size_t k = 0; k < pushes.size(); ++k)
   {
-    Ball<S>& b = state_.balls[pushes[k].ball];
+    Ball<S> b = pushes[k].ball;
     b.r.template head<2>() += moves[k] * pushes[k].out;
     b.v.template head<2>() += S(kSettleSpeed) * pushes[k].out;
     settleMotion(b, R);
-    changed(pushes[k].ball);
+    state_.balls[pushes[k].index] = b;
+    changed(pushes[k].index);
   }
   return true;
 }
 
 #define CUE_SIM_INSTANTIATE_SUPPORT_SLIDE(S)                                                                           \
-  template void EventResolver<S>::supportsOf(int, std::vector<Support>&, S&) const;                                    \
+  template void EventResolver<S>::supportsOf(const Ball<S>&, int, std::vector<Support>&, S&) const;                    \
   template bool EventResolver<S>::slideDownSupports(int);                                                              \
   template bool EventResolver<S>::hopDownSupports(Ball<S>&, const std::vector<Support>&, const Vec3<S>&, S);           \
   template bool EventResolver<S>::spreadSupports(int, const std::vector<Support>&, const Vec3<S>&, S);
