@@ -27,6 +27,7 @@ add_library(cue_sim_physics
   ${CUE_SIM_ROOT}/src/physics/engine/engine.cpp
   ${CUE_SIM_ROOT}/src/physics/engine/table_geometry.cpp
   ${CUE_SIM_ROOT}/src/physics/engine/table_departure.cpp
+  ${CUE_SIM_ROOT}/src/physics/engine/held_balls.cpp
   # the event search: the simulation (and runs of one), its queue and grid, roots and contact
   # times, and the full scan it is checked against
   ${CUE_SIM_ROOT}/src/physics/search/simulation.cpp

@@ -13,6 +13,7 @@
 #include "cue_sim/physics/rack.hpp"
 #include "cue_sim/physics/scan.hpp"
 #include "cue_sim/physics/simulation.hpp"
+#include "physics/contacts/support_hops.hpp"
 #include "physics/models/ball_table/slate_bounce.hpp"
 #include "physics/models/ball_table/slate_landing.hpp"
 
@@ -855,6 +856,31 @@ TableState<double> checkedToRest(const Engine<double>& engine, const TableState<
   EXPECT_EQ(engine.whyInvalid(end), "");
   return end;
 }
+
+/// Four balls in a square against the far long cushion, and a fifth at rest on them.
+TableState<double> squareAgainstTheCushion(double R)
+{
+  const double nose_y = 0.9906 / 2;
+  TableState<double> s;
+  s.balls.push_back(inTheAir(0, -R, nose_y - R, 0.0));
+  s.balls.push_back(inTheAir(1, R, nose_y - R, 0.0));
+  s.balls.push_back(inTheAir(2, -R, nose_y - 3 * R, 0.0));
+  s.balls.push_back(inTheAir(3, R, nose_y - 3 * R, 0.0));
+  s.balls.push_back(inTheAir(4, 0.0, nose_y - 2 * R, std::sqrt(2.0) * R));
+  return s;
+}
+
+/// A pyramid of four: three touching balls on the cloth and a fourth at rest on them.
+TableState<double> pyramidOfFour(double R)
+{
+  const double pi = std::acos(-1.0), circumradius = 2 * R / std::sqrt(3.0);
+  TableState<double> s;
+  for (int k = 0; k < 3; ++k)
+    s.balls.push_back(
+        inTheAir(k, circumradius * std::cos(2 * pi * k / 3), circumradius * std::sin(2 * pi * k / 3), 0.0));
+  s.balls.push_back(inTheAir(3, 0.0, 0.0, 2 * R * std::sqrt(2.0 / 3.0)));
+  return s;
+}
 }  // namespace
 
 // Balls left at rest on their supports in the air (doc/physics.md, "Balls in the air"). A ball
@@ -887,16 +913,138 @@ TEST(SupportsInTheAir, APyramidOfFourComesDownByPushingItsBaseApart)
 {
   const auto table = sevenFoot();
   const Engine<double> engine(table, PhysicsParams<double>());
-  const double R = engine.params().ball_radius, pi = std::acos(-1.0);
-  TableState<double> s;
-  const double circumradius = 2 * R / std::sqrt(3.0);
-  for (int k = 0; k < 3; ++k)
-    s.balls.push_back(
-        inTheAir(k, circumradius * std::cos(2 * pi * k / 3), circumradius * std::sin(2 * pi * k / 3), 0.0));
-  s.balls.push_back(inTheAir(3, 0.0, 0.0, 2 * R * std::sqrt(2.0 / 3.0)));
+  const double R = engine.params().ball_radius, circumradius = 2 * R / std::sqrt(3.0);
+  const TableState<double> s = pyramidOfFour(R);
   ASSERT_EQ(engine.whyInvalid(s), "");
   const TableState<double> end = checkedToRest(engine, s);
   EXPECT_NEAR(end.balls[3].r.z(), R, 1e-12) << "the top ball is on the cloth";
   for (int k = 0; k < 3; ++k)
     EXPECT_GT(end.balls[k].r.head<2>().norm(), circumradius + 1e-3) << "base ball " << k << " pushed out";
+}
+
+// Resting on a support is a sustained contact: landings slower than kSustainedContactSpeed lose
+// nothing, so a ball balanced on a nose's edge (a line: its centre goes round it on a circle of
+// radius R, with no friction) leaves it where a particle leaves a frictionless circle started at
+// rest at theta0 from the top: cos(theta) = (2/3) cos(theta0), at the speed energy gives
+// (Kleppner and Kolenkow, An Introduction to Mechanics, problem 4.7). A hop that lost a part at
+// each landing made it stick to the edge and leave it later, slower, after tens of thousands of
+// events.
+TEST(SupportsInTheAir, ABallBalancedOnANoseLeavesItWhereAFrictionlessCircleIsLeft)
+{
+  const auto table = sevenFoot();
+  const Engine<double> engine(table, PhysicsParams<double>());
+  const PhysicsParams<double>& p = engine.params();
+  const double R = p.ball_radius, h = p.cushion_height, nose_y = 0.9906 / 2;
+  for (const double theta0 : {0.05, 0.2})
+  {
+    SCOPED_TRACE("theta0 " + std::to_string(theta0));
+    TableState<double> s;  // leaning to the cloth's side
+    s.balls.push_back(inTheAir(0, 0.2, nose_y - R * std::sin(theta0), h + R * std::cos(theta0) - R));
+    const std::vector<Event<double>> events = runChecked(engine, s, 2);
+    EXPECT_LT(events.size(), 5000u);
+    // The last meeting with the nose's edge from above, and the flight after it.
+    TableState<double> replay = s;
+    Ball<double> last;
+    bool met = false;
+    for (const Event<double>& e : events)
+    {
+      scanStep(engine, replay);
+      const Ball<double>& b = replay.balls[0];
+      if (e.kind == EventKind::BallCushion && b.airborne() && b.r.z() > h)
+      {
+        last = b;
+        met = true;
+      }
+    }
+    ASSERT_TRUE(met);
+    const double theta = std::atan2(nose_y - last.r.y(), last.r.z() - h);
+    const double expected = std::acos(2.0 / 3.0 * std::cos(theta0));
+    const double speed = std::sqrt(2 * p.gravity * R * (std::cos(theta0) - std::cos(expected)));
+    // It goes round in hops no faster than kSustainedContactSpeed along the normal, so where it
+    // leaves is known to the angle one such hop spans there: 2 u / (g cos theta) of flight at
+    // `speed` round a circle of radius R.
+    const double hop_span = 2 * kSustainedContactSpeed / (p.gravity * std::cos(expected)) * speed / R;
+    EXPECT_NEAR(theta, expected, hop_span) << "left the edge at " << theta << " rad";
+    EXPECT_NEAR(last.v.norm(), speed, 0.02 * speed);
+  }
+}
+
+// A ball at rest on a still ball on the cloth, a little off its top, slides off it as the
+// frictionless contact lets it (in about a quarter of a second from 0.05 rad: the unstable
+// balance grows at sqrt(g / 2R) = 13 /s), not in the seconds and 140 000 events of hops that
+// lost their speed at each landing.
+TEST(SupportsInTheAir, ABallJustOffAStillBallsTopSlidesOffItPromptly)
+{
+  const auto table = sevenFoot();
+  const Engine<double> engine(table, PhysicsParams<double>());
+  const double R = engine.params().ball_radius, tilt = 0.05;
+  TableState<double> s;
+  s.balls.push_back(inTheAir(0, 0.0, 0.0, 0.0));
+  s.balls.push_back(inTheAir(1, -2 * R * std::sin(tilt), 0.0, 2 * R * std::cos(tilt)));
+  const std::vector<Event<double>> events = runChecked(engine, s, 2);
+  EXPECT_LT(events.size(), 5000u);
+  double landed = -1;
+  for (const Event<double>& e : events)
+    if (e.kind == EventKind::BallSlate && e.ball == 1 && landed < 0)
+      landed = e.time;
+  EXPECT_GT(landed, 0.15);
+  EXPECT_LT(landed, 0.5);
+  TableState<double> end = s;
+  simulateToRest(engine, end);
+  EXPECT_LT(end.balls[1].r.x(), end.balls[0].r.x()) << "off the side it leaned to";
+}
+
+// A ball on four balls in a square against a cushion comes down between them: the two against the
+// cushion, pushed into it, slide along its face (the cushion takes the push's part into it).
+TEST(SupportsInTheAir, ABallOnASquareAgainstACushionPushesItsBaseAlongTheCushion)
+{
+  const auto table = sevenFoot();
+  const Engine<double> engine(table, PhysicsParams<double>());
+  const double R = engine.params().ball_radius, nose_y = 0.9906 / 2;
+  TableState<double> s = squareAgainstTheCushion(R);
+  ASSERT_EQ(engine.whyInvalid(s), "");
+  const TableState<double> end = checkedToRest(engine, s);
+  EXPECT_NEAR(end.balls[4].r.z(), R, 1e-12) << "on the cloth";
+  EXPECT_LT(end.balls[0].r.x(), -R - 1e-3) << "pushed along the cushion";
+  EXPECT_GT(end.balls[1].r.x(), R + 1e-3) << "pushed along the cushion";
+}
+
+// A pile is spread only when the weight's push on a base ball beats its rolling resistance: a
+// pyramid of four stands on a cloth whose rolling resistance holds its base (mu_roll 1 against a
+// push of g / (3 tan 54.7 deg) = 0.24 g per unit mass). Its top ball is held in the air
+// (Motion::Held) in a few events, not hopped in place to the event limit, and stays until a base
+// ball is struck out from under it; then it falls, with no energy made and no overlap.
+TEST(SupportsInTheAir, APyramidOnAClothThatHoldsItsBaseStandsUntilABaseBallIsStruck)
+{
+  const auto table = sevenFoot();
+  PhysicsParams<double> p;
+  p.mu_roll = 1.0;
+  const Engine<double> engine(table, p);
+  const double R = p.ball_radius, height = R + 2 * R * std::sqrt(2.0 / 3.0);
+  TableState<double> s = pyramidOfFour(R);
+  EXPECT_LT(runChecked(engine, s, 2).size(), 100u);
+  simulateToRest(engine, s);
+  ASSERT_EQ(s.balls[3].motion, Motion::Held);
+  EXPECT_STREQ(motionName(s.balls[3].motion), "held");
+  EXPECT_NEAR(s.balls[3].r.z(), height, 1e-6);
+  EXPECT_EQ(engine.whyInvalid(s), "");
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(s.balls[k].r.z(), R, 1e-12);
+
+  CueStrike<double> away;
+  away.speed = 1.0;
+  away.phi = std::atan2(s.balls[0].r.y(), s.balls[0].r.x());  // straight out from under it
+  // A live table (the kept search) lets it fall as the engine does.
+  Simulation<double> live(engine, s);
+  live.strike(0, away);
+  EXPECT_EQ(live.state().balls[3].motion, Motion::Airborne);
+  EXPECT_TRUE(live.runToRest().at_rest);
+  EXPECT_LT(live.state().balls[3].r.z(), height - 1e-3) << "it fell on the live table";
+  engine.strike(s, 0, away);
+  EXPECT_EQ(s.balls[3].motion, Motion::Airborne) << "let fall by the strike";
+  EXPECT_LT(runChecked(engine, s, 2).size(), 20000u);
+  TableState<double> end = s;
+  simulateToRest(engine, end);
+  EXPECT_EQ(engine.whyInvalid(end), "");
+  EXPECT_LT(end.balls[3].r.z(), height - 1e-3) << "it fell";
 }

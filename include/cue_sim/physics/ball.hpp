@@ -21,6 +21,7 @@ enum class Motion : std::uint8_t
   Pocketed = 4,  ///< out of play
   Airborne = 5,  ///< off the cloth: in flight under gravity (src/physics/models/flight.hpp)
   OffTable = 6,  ///< out of play: it flew over a cushion onto the rail or the floor (r: where it landed)
+  Held = 7,      ///< at rest in the air, held by its supports (balls at rest, noses, rims) until one moves
 };
 
 const char* motionName(Motion motion);
@@ -56,7 +57,9 @@ struct Ball
   {
     return motion == Motion::Sliding || motion == Motion::Rolling || motion == Motion::Airborne;
   }
-  bool airborne() const { return motion == Motion::Airborne; }
+  /// Off the cloth: in flight, or held at rest in the air.
+  bool airborne() const { return motion == Motion::Airborne || motion == Motion::Held; }
+  bool held() const { return motion == Motion::Held; }
 };
 
 }  // namespace physics

@@ -23,8 +23,9 @@ Motion classifyMotion(const Vec3<S>& v, const Vec3<S>& w, S radius);
 /// Gives the ball the motion its r, v and w imply, snapping to exact rolling/rest when the slip
 /// or speed is below zeroSpeed() so that no spurious transition follows. A ball above the cloth
 /// (by more than kOnClothHeight) or rising off it (v_z > zeroSpeed()) is Airborne and keeps its
-/// r and v; any other is put on the cloth: z = R, and v_z = 0 (a ball pressed into the cloth by
-/// a collision meets the slate first: the engine resolves that before it settles the ball).
+/// r and v (a ball held in the air stays held while it is at rest); any other is put on the cloth: z = R, and v_z = 0
+/// (a ball pressed into the cloth by a collision meets the slate first: the engine resolves that before it settles the
+/// ball).
 template <typename S>
 void settleMotion(Ball<S>& ball, S radius);
 

@@ -110,6 +110,9 @@ private:
   void advanceThrough(S t_end, std::vector<Event<S>>* events);
   /// After an edit: a new shot for the event limit, and the next event and motion found again.
   void edited();
+  /// After a placement or a removal: every ball held in the air falls, to be held again if its
+  /// supports still hold it (Engine::letHeldBallsFallOff).
+  void letHeldBallsFall();
   void refresh();
 
   std::shared_ptr<const Engine<S>> engine_;

@@ -6,6 +6,7 @@
 #include "cue_sim/physics/motion.hpp"
 #include "physics/contacts/event_resolver.hpp"
 #include "physics/contacts/support_hops.hpp"
+#include "physics/engine/held_balls.hpp"
 #include "physics/engine/table_departure.hpp"
 #include "physics/models/ball_table/slate_landing.hpp"
 
@@ -16,7 +17,9 @@ namespace physics
 template <typename S>
 void resolveEvent(const Engine<S>& engine, TableState<S>& state, const Event<S>& event, const EventContext<S>& context)
 {
-  EventResolver<S>(engine, state, context).resolve(event);
+  EventResolver<S> resolver(engine, state, context);
+  resolver.resolve(event);
+  resolver.wakeHeldBalls(event.time);
 }
 
 template <typename S>
@@ -105,6 +108,78 @@ void EventResolver<S>::resolveBallBall(const Event<S>& event)
 template <typename S>
 void EventResolver<S>::resolveAirbornePair(Ball<S>& a, Ball<S>& b)
 {
+  const Vec3<S> n = (b.r - a.r).normalized();
+  if (a.held() != b.held() &&
+      restOnHeldBall(a.held() ? b : a, a.held() ? context_.other_index : context_.index, a.held() ? n : Vec3<S>(-n)))
+    return;
+  for (Ball<S>* ball : {&a, &b})
+    if (ball->held())
+      ball->motion = Motion::Airborne;  // met by a ball: it takes part in the impact, free
+  const bool a_on_cloth = !a.airborne(), b_on_cloth = !b.airborne();
+  // One resting on the other, pressed on by gravity, closing slower than a hop: a sustained
+  // contact, met without loss (support_hops.hpp). Else an impact.
+  if (a_on_cloth == b_on_cloth)
+    impactInAir(a, b, n);
+  else
+  {
+    Ball<S>& flying = a_on_cloth ? b : a;
+    Ball<S>& support = a_on_cloth ? a : b;
+    const Vec3<S> up = a_on_cloth ? n : Vec3<S>(-n);
+    if (!bounceOffBallOnCloth(flying, support, up))
+      impactInAir(a, b, n);
+    leaveBallOnCloth(flying, support, up, a_on_cloth ? context_.other_index : context_.index);
+  }
+  for (Ball<S>* ball : {&a, &b})
+  {
+    // A ball coming down from the air meets the slate anew.
+    if (ball->r.z() - params_.ball_radius <= onClothHeight(params_.ball_radius) && ball->v.z() < S(0))
+      landOnSlate(*ball, engine_.ballTableModel(), params_);
+    else
+      settleMotion(*ball, params_.ball_radius);
+  }
+}
+
+template <typename S>
+bool EventResolver<S>::restOnHeldBall(Ball<S>& flying, int index, const Vec3<S>& up)
+{
+  // A ball held in the air is as fixed as a nose to a ball that comes to rest on it: the held
+  // ball's own supports take the weight.
+  if (flying.held() || !(up.z() > S(0)) || !(-flying.v.dot(up) < S(kSustainedContactSpeed)))
+    return false;
+  bounceOffFixedSupport(flying, up);
+  if (!hopOffFixedSupport(flying, up) && !slideDownSupports(index))
+    holdInTheAir(index);
+  settleMotion(flying, params_.ball_radius);
+  return true;
+}
+
+template <typename S>
+void EventResolver<S>::wakeHeldBalls(S time)
+{
+  // A ball set moving may have held a ball up: every held ball touching it falls (and is held
+  // again a few events later if its supports still hold it). A ball that stops, or keeps only a
+  // spin, lets none fall. Each fallen ball is looked around in turn (a stack).
+  if (std::none_of(state_.balls.begin(), state_.balls.end(), [](const Ball<S>& b) { return b.held(); }))
+    return;
+  const std::vector<int>& list = context_.changed ? *context_.changed : changed_here_;
+  std::vector<int> near, fallen;
+  for (std::size_t k = changed_from_; k < list.size(); ++k)
+  {
+    const int index = list[k];
+    if (!state_.balls[index].translating())
+      continue;
+    nearBalls(evolve(state_.balls[index], time, params_).r.template head<2>(),
+              S(2) * params_.ball_radius + S(kHeldReach), near);
+    fallen.clear();
+    letHeldBallsFall(state_, index, time, params_, near, fallen);
+    for (int j : fallen)
+      changed(j);  // appended to `list`: looked around in turn
+  }
+}
+
+template <typename S>
+void EventResolver<S>::impactInAir(Ball<S>& a, Ball<S>& b, const Vec3<S>& n)
+{
   const Vec3<S> a_before = a.v, b_before = b.v;
   const bool a_on_cloth = !a.airborne(), b_on_cloth = !b.airborne();
   // A ball on the cloth stays on it: the cloth takes the vertical part of the impulse, as it
@@ -120,7 +195,6 @@ void EventResolver<S>::resolveAirbornePair(Ball<S>& a, Ball<S>& b)
     if (b_on_cloth)
       b.v.z() = S(0);
   };
-  const Vec3<S> n = (b.r - a.r).normalized();
   for (int impulse = 0; impulse == 0 || (impulse < kMaxWallImpulses && (a.v - b.v).dot(n) > zeroSpeed<S>()); ++impulse)
   {
     engine_.ballBallModelInAir().resolve(a, b, params_);
@@ -137,26 +211,17 @@ void EventResolver<S>::resolveAirbornePair(Ball<S>& a, Ball<S>& b)
     b.v += S(0.5) * part * n;
   }
   keepOnCloth();
-  if (a_on_cloth != b_on_cloth)  // one resting on the other: gravity presses the flying one on
-  {
-    // A full hop paid by their sliding, else by a slide down the supports, else the largest hop
-    // their sliding pays for.
-    Ball<S>& flying = a_on_cloth ? b : a;
-    Ball<S>& support = a_on_cloth ? a : b;
-    const Vec3<S> up = a_on_cloth ? n : Vec3<S>(-n);
-    const bool at_rest_on_it = (flying.v - support.v).norm() < S(kSettleSpeed);
-    if (!hopOffBallOnCloth(flying, support, up, S(kSettleSpeed), S(kSettleSpeed)) &&
-        !(at_rest_on_it && slideDownSupports(a_on_cloth ? context_.other_index : context_.index)))
-      hopOffBallOnCloth(flying, support, up, S(0.5 * kSettleSpeed), S(kSmallestHop));
-  }
-  for (Ball<S>* ball : {&a, &b})
-  {
-    // A ball coming down from the air meets the slate anew.
-    if (ball->r.z() - params_.ball_radius <= onClothHeight(params_.ball_radius) && ball->v.z() < S(0))
-      landOnSlate(*ball, engine_.ballTableModel(), params_);
-    else
-      settleMotion(*ball, params_.ball_radius);
-  }
+}
+
+template <typename S>
+void EventResolver<S>::leaveBallOnCloth(Ball<S>& flying, Ball<S>& support, const Vec3<S>& up, int flying_index)
+{
+  // Gravity presses the flying ball on: a full hop paid by their sliding, else by a slide down
+  // the supports, else the largest hop their sliding pays for.
+  const bool at_rest_on_it = (flying.v - support.v).norm() < S(kSettleSpeed);
+  if (!hopOffBallOnCloth(flying, support, up, S(kSettleSpeed), S(kSettleSpeed)) &&
+      !(at_rest_on_it && (slideDownSupports(flying_index) || holdInTheAir(flying_index))))
+    hopOffBallOnCloth(flying, support, up, S(0.5 * kSettleSpeed), S(kSmallestHop));
 }
 
 template <typename S>
@@ -199,12 +264,15 @@ bool EventResolver<S>::resolveWallTop(Ball<S>& ball, const Event<S>& event)
   }
   const Vec3<S> normal = Vec3<S>(out.x(), out.y(), above).normalized();
   const S approach = ball.v.dot(normal);
-  if (approach < S(0))
-    ball.v -= (S(1) + params_.e_cushion) * approach * normal;
-  else
-    ball.v += roundingSpeed(ball.v.norm()) * normal;  // closing within rounding: moved off
-  if (!hopOffFixedSupport(ball, normal))
-    slideDownSupports(context_.index);
+  if (!bounceOffFixedSupport(ball, normal))  // resting on it, a sustained contact; else an impact
+  {
+    if (approach < S(0))
+      ball.v -= (S(1) + params_.e_cushion) * approach * normal;
+    else
+      ball.v += roundingSpeed(ball.v.norm()) * normal;  // closing within rounding: moved off
+  }
+  if (!hopOffFixedSupport(ball, normal) && !slideDownSupports(context_.index))
+    holdInTheAir(context_.index);
   settleMotion(ball, params_.ball_radius);
   return true;
 }

@@ -94,17 +94,34 @@ class EventResolver
 {
 public:
   EventResolver(const Engine<S>& engine, TableState<S>& state, const EventContext<S>& context)
-    : engine_(engine), params_(engine.params()), geometry_(engine.geometry()), state_(state), context_(context)
+    : engine_(engine),
+      params_(engine.params()),
+      geometry_(engine.geometry()),
+      state_(state),
+      context_(context),
+      changed_from_(context.changed ? context.changed->size() : 0)
   {
   }
 
   void resolve(const Event<S>& event);
+  /// Lets fall every ball held in the air that a ball this event changed touches.
+  void wakeHeldBalls(S time);
 
 private:
   void resolveBallBall(const Event<S>& event);
-  /// A pair of which at least one ball is in the air: the model's impulse along the line of
-  /// centres in three dimensions, then any ball it drives into the slate lands on it.
+  /// A pair of which at least one ball is in the air: a sustained contact or an impact, then any
+  /// ball driven into the slate lands on it.
   void resolveAirbornePair(Ball<S>& a, Ball<S>& b);
+  /// The model's impulse along the line of centres `n` (from a to b) in three dimensions, a ball
+  /// on the cloth kept on it.
+  void impactInAir(Ball<S>& a, Ball<S>& b, const Vec3<S>& n);
+  /// A flying ball left on a ball on the cloth slower than a hop along `up` (from the support to
+  /// it) hopped off it (support_hops.hpp).
+  void leaveBallOnCloth(Ball<S>& flying, Ball<S>& support, const Vec3<S>& up, int flying_index);
+  /// A ball in the air (state_.balls[index]) at rest on a held ball or coming to rest on it
+  /// (`up` from the held ball to it): met as on a fixed support, hopped off, slid down or held.
+  /// False if it meets the held ball faster (an impact, which sets the held ball free).
+  bool restOnHeldBall(Ball<S>& flying, int index, const Vec3<S>& up);
   void resolveWall(Ball<S>& ball, const Event<S>& event);
   /// A ball in the air above the wall's top meets its nose's edge or its post's rim: true if so
   /// (and resolved).
@@ -116,11 +133,7 @@ private:
   /// stops.
   void wallImpact(Ball<S>& ball, const Vec3<S>& normal) const;
   void pocketBall(Ball<S>& ball, int pocket);
-  void changed(int index)
-  {
-    if (context_.changed)
-      context_.changed->push_back(index);
-  }
+  void changed(int index) { (context_.changed ? *context_.changed : changed_here_).push_back(index); }
   /// The balls in play that may be within `distance` of `point`, ascending.
   void nearBalls(const Vec2<S>& point, S distance, std::vector<int>& out) const;
   /// True if the ball cannot be within `distance` of `point` (xy) at `time`: a cheap bound.
@@ -141,6 +154,13 @@ private:
   bool slideDownSupports(int index);
   bool hopDownSupports(Ball<S>& ball, const std::vector<Support>& supports, const Vec3<S>& down, S nearest);
   bool spreadSupports(int index, const std::vector<Support>& supports, const Vec3<S>& down, S nearest);
+  /// The way a ball on the cloth (state_.balls[pushed_index], `pushed` now) pushed along
+  /// `radial` by the ball `by` above it can go: `radial`, or along the cushion faces it is
+  /// against. False if a ball, a nose or a post holds it.
+  bool freeWayOut(const Ball<S>& pushed, int pushed_index, int by, const Vec2<S>& radial, Vec2<S>& out) const;
+  /// A ball in the air at rest (slower than kSettleSpeed) on supports that do not move, with no
+  /// way down that leaves them: held there (Motion::Held), its motion stopped. False otherwise.
+  bool holdInTheAir(int index);
 
   // impact_group.cpp
   /// Resolves a ball-ball impact together with every ball touching the pair, and the cushions
@@ -177,6 +197,9 @@ private:
   const TableGeometry<S>& geometry_;
   TableState<S>& state_;
   const EventContext<S>& context_;
+  /// The balls this resolver changed: context_.changed from changed_from_ on, else changed_here_.
+  std::size_t changed_from_;
+  std::vector<int> changed_here_;
 };
 
 template <typename S>

@@ -61,7 +61,60 @@ bool pushApart(PairOnCloth<S>& pair, const Vec3<S>& n, S hop)
   pair = pushed;
   return true;
 }
+
+/// Whether a ball closing on a support at `closing` along the normal `n` (up from the support)
+/// is held on it by gravity in a sustained contact.
+template <typename S>
+bool sustained(const Vec3<S>& n, S closing)
+{
+  return n.z() > S(0) && closing > S(0) && closing < S(kSustainedContactSpeed);
+}
 }  // namespace
+
+template <typename S>
+bool bounceOffBallOnCloth(Ball<S>& flying, Ball<S>& support, const Vec3<S>& n)
+{
+  const PairOnCloth<S> pair{flying.v, support.v};
+  const S closing = -pair.relative().dot(n);
+  if (!sustained(n, closing))
+    return false;
+  // An impulse giving `hop` apart changes the energy by (hop^2 - closing^2) / (2 k), k the
+  // relative velocity's change per unit impulse: none for hop = closing. Rounding's excess, if
+  // any, is taken off the hop.
+  const S k = S(1) + n.x() * n.x() + n.y() * n.y();
+  const S before = pair.energy();
+  S hop = closing;
+  for (int attempt = 0; attempt < 2; ++attempt)
+  {
+    PairOnCloth<S> pushed = pair;
+    pushed.push((hop - pushed.relative().dot(n)) / k * n);
+    const S excess = pushed.energy() - before;
+    if (excess <= S(0) && pushed.relative().dot(n) > S(0))
+    {
+      flying.v = pushed.flying;
+      support.v = pushed.support;
+      return true;
+    }
+    hop = std::sqrt(std::max(
+        hop * hop - S(2) * k * (std::max(excess, S(0)) + S(64) * std::numeric_limits<S>::epsilon() * before), S(0)));
+  }
+  return false;
+}
+
+template <typename S>
+bool bounceOffFixedSupport(Ball<S>& ball, const Vec3<S>& n)
+{
+  const S closing = -ball.v.dot(n);
+  if (!sustained(n, closing))
+    return false;
+  const S speed = ball.v.norm();
+  Vec3<S> v = ball.v + S(2) * closing * n;
+  const S after = v.norm();
+  if (after > speed)
+    v *= speed / after;  // rounding
+  ball.v = v;
+  return true;
+}
 
 template <typename S>
 bool hopOffFixedSupport(Ball<S>& ball, const Vec3<S>& n)
@@ -106,7 +159,9 @@ bool hopOffBallOnCloth(Ball<S>& flying, Ball<S>& support, const Vec3<S>& n, S mo
 
 #define CUE_SIM_INSTANTIATE_SUPPORT_HOPS(S)                                                                            \
   template bool hopOffFixedSupport(Ball<S>&, const Vec3<S>&);                                                          \
-  template bool hopOffBallOnCloth(Ball<S>&, Ball<S>&, const Vec3<S>&, S, S);
+  template bool hopOffBallOnCloth(Ball<S>&, Ball<S>&, const Vec3<S>&, S, S);                                           \
+  template bool bounceOffBallOnCloth(Ball<S>&, Ball<S>&, const Vec3<S>&);                                              \
+  template bool bounceOffFixedSupport(Ball<S>&, const Vec3<S>&);
 CUE_SIM_INSTANTIATE_SUPPORT_HOPS(double)
 CUE_SIM_INSTANTIATE_SUPPORT_HOPS(long double)
 

@@ -26,6 +26,25 @@ bool hopOffFixedSupport(Ball<S>& ball, const Vec3<S>& n);
 template <typename S>
 bool hopOffBallOnCloth(Ball<S>& flying, Ball<S>& support, const Vec3<S>& n, S most, S least);
 
+/// A ball in the air closing on its support slower than this [m/s] is pressed on it by gravity
+/// between hops (the hops are kSettleSpeed): a sustained contact, in which no impact loses energy.
+/// The impact is elastic and frictionless. Real spheres' restitution tends to 1 at such speeds
+/// (viscoelastic impact: 1 - e grows as the fifth root of the speed, Kuwabara and Kono 1987), and
+/// a hop that lost a part would have to be paid again from the ball's sliding down its support,
+/// which would stop it there (doc/physics.md, "Resting on a rounded support").
+constexpr double kSustainedContactSpeed = 4e-3;
+
+/// A landing on a support on the cloth slower than kSustainedContactSpeed: the flying ball and
+/// the support part along `n` (from the support to the flying ball) as fast as they closed, by an
+/// impulse along `n` whose vertical part the slate takes. No friction, energy kept (to rounding,
+/// never gained). False, and the balls unchanged, if they are not closing so slowly.
+template <typename S>
+bool bounceOffBallOnCloth(Ball<S>& flying, Ball<S>& support, const Vec3<S>& n);
+
+/// The same off a fixed support (a nose's edge, a rim): the normal velocity is reversed.
+template <typename S>
+bool bounceOffFixedSupport(Ball<S>& ball, const Vec3<S>& n);
+
 /// The smallest hop off a support [m/s]: below it, gravity brings the ball back within a few
 /// nanoseconds, and the ball is taken to be at rest on it.
 constexpr double kSmallestHop = 1e-9;

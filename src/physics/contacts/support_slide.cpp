@@ -20,6 +20,11 @@ constexpr double kSupportTouch = 1e-9;
 /// The longest slide [m]: a ball that would have to slide further to pay for a full hop
 /// (nearly on a support's top) hops less. The slide is a step the ball's path does not show.
 constexpr double kMaxSlide = 1e-6;
+/// A ball on the cloth under a ball being held that still moves slower than this [m/s] is
+/// stopped: its speed is rounding's and slides' leftovers, which the held ball's weight on it and
+/// their friction take (they would stop it as the held ball settles). A faster support would
+/// carry the ball or leave it in the air, and the ball is not held.
+constexpr double kStoppedUnderHeld = 1e-6;
 /// Descent per unit of slide below which the supports are taken to hold the ball (a slide of
 /// kMaxSlide would pay for a hop of under a nanometre a second).
 constexpr double kLeastDescent = 1e-9;
@@ -55,6 +60,7 @@ S steepestFreeDescent(const std::vector<Vec3<S>>& n, Vec3<S>& best)
   }
   return descent;
 }
+
 }  // namespace
 
 template <typename S>
@@ -75,9 +81,13 @@ void EventResolver<S>::supportsOf(const Ball<S>& ball, int index, std::vector<Su
     if (j == index || !state_.balls[j].inPlay())
       continue;
     // Each ball is where it is at this ball's time (a ball's state is kept at its last event).
-    const Vec3<S> d = ball.r - evolve(state_.balls[j], ball.time, params_).r;
+    const Ball<S> other = evolve(state_.balls[j], ball.time, params_);
+    const Vec3<S> d = ball.r - other.r;
     const S distance = d.norm();
-    note(distance - S(2) * R, d / distance, j);
+    if ((ball.v - other.v).dot(d) > S(kSustainedContactSpeed) * distance)
+      nearest = std::min(nearest, distance - S(2) * R);  // leaving it faster than a hop: no support
+    else
+      note(distance - S(2) * R, d / distance, j);
   }
   // The walls: a cushion's face below its nose, the nose's edge above it (its whole line, which
   // is never further than the cushion itself), a post's side, rim or top.
@@ -166,6 +176,37 @@ bool EventResolver<S>::hopDownSupports(Ball<S>& ball, const std::vector<Support>
 }
 
 template <typename S>
+bool EventResolver<S>::freeWayOut(const Ball<S>& pushed, int pushed_index, int by, const Vec2<S>& radial,
+                                  Vec2<S>& out) const
+{
+  // Pushed along `radial`, a ball on the cloth against a cushion's face slides along the face (the
+  // cushion takes the push's part into it); anything else in the way holds it.
+  std::vector<Support> its;
+  S its_nearest = std::numeric_limits<S>::infinity();
+  supportsOf(pushed, pushed_index, its, its_nearest);
+  out = radial;
+  for (const Support& s : its)
+  {
+    if (s.ball == by || s.normal.z() > S(0.5))
+      continue;  // the ball above it, or the slate
+    const Vec2<S> n = s.normal.template head<2>();
+    if (out.dot(n) >= S(0))
+      continue;
+    if (s.ball >= 0 || std::abs(s.normal.z()) > S(kTouchingSlack))
+      return false;  // a ball, a nose's edge or a post: it holds it there
+    out -= out.dot(n) * n;
+  }
+  const S length = out.norm();
+  if (!(length > S(kLeastDescent)))
+    return false;
+  out /= length;
+  // Faces met in turn: what is left must leave them all.
+  return std::all_of(its.begin(), its.end(), [&](const Support& s) {
+    return s.ball == by || s.normal.z() > S(0.5) || out.dot(s.normal.template head<2>()) >= -S(kTouchingSlack);
+  });
+}
+
+template <typename S>
 bool EventResolver<S>::spreadSupports(int index, const std::vector<Support>& supports, const Vec3<S>& down, S nearest)
 {
   Ball<S>& ball = state_.balls[index];
@@ -179,11 +220,23 @@ bool EventResolver<S>::spreadSupports(int index, const std::vector<Support>& sup
   };
   std::vector<Push> pushes;
   S cost = S(0);
+  // The weight, shared evenly over the supports' vertical parts, pushes each ball on the cloth
+  // out with share * |n_xy| per unit mass: a ball its rolling resistance holds against that
+  // (mu_roll g) is not pushed, and the ball is held (an even share is exact for a symmetric pile,
+  // such as a pyramid; a pile whose supports share unevenly is statically indeterminate).
+  S lift = S(0);
+  for (const Support& s : supports)
+    lift += std::max(s.normal.z(), S(0));
+  const S share = g / lift;
   for (const Support& s : supports)
     if (s.ball >= 0 && down.dot(s.normal) < S(0))
     {
       const Ball<S> b = evolve(state_.balls[s.ball], ball.time, params_);
-      const Vec2<S> out = (b.r - ball.r).template head<2>().normalized();
+      const Vec2<S> radial = (b.r - ball.r).template head<2>().normalized();
+      Vec2<S> out;
+      if (!freeWayOut(b, s.ball, index, radial, out) ||
+          !(share * s.normal.template head<2>().norm() * out.dot(radial) > params_.rollDecel()))
+        return false;
       pushes.push_back({s.ball, b, out});
       cost += S(kSettleSpeed) * out.dot(b.v.template head<2>()) + S(0.5) * S(kSettleSpeed * kSettleSpeed);
     }
@@ -203,10 +256,6 @@ bool EventResolver<S>::spreadSupports(int index, const std::vector<Support>& sup
     std::vector<Support> its;
     S its_nearest = std::numeric_limits<S>::infinity();
     supportsOf(b, push.index, its, its_nearest);
-    const Vec3<S> step(push.out.x(), push.out.y(), S(0));
-    for (const Support& s : its)
-      if (s.ball != index && s.normal.dot(step) < S(0))
-        return false;  // something else holds it there
     if (!(move <= S(0.5) * its_nearest))
       return false;
     moves.push_back(move);
@@ -224,11 +273,54 @@ bool EventResolver<S>::spreadSupports(int index, const std::vector<Support>& sup
   return true;
 }
 
+template <typename S>
+bool EventResolver<S>::holdInTheAir(int index)
+{
+  Ball<S>& ball = state_.balls[index];
+  if (!ball.airborne() || !(ball.v.norm() < S(kSettleSpeed)))
+    return false;
+  std::vector<Support> supports;
+  S nearest = std::numeric_limits<S>::infinity();
+  supportsOf(ball, index, supports, nearest);
+  std::vector<Vec3<S>> normals;
+  std::vector<int> to_stop;
+  for (const Support& s : supports)
+  {
+    normals.push_back(s.normal);
+    if (s.ball < 0 || !state_.balls[s.ball].translating())
+      continue;
+    const Ball<S> support = evolve(state_.balls[s.ball], ball.time, params_);
+    if (support.airborne() || !(support.v.norm() < S(kStoppedUnderHeld)))
+      return false;
+    to_stop.push_back(s.ball);
+  }
+  Vec3<S> down;
+  if (supports.empty() || steepestFreeDescent(normals, down) > S(kLeastDescent))
+    return false;
+  for (int j : to_stop)
+  {
+    Ball<S> support = evolve(state_.balls[j], ball.time, params_);
+    support.v.setZero();
+    support.w.x() = support.w.y() = S(0);
+    settleMotion(support, params_.ball_radius);
+    state_.balls[j] = support;
+    changed(j);
+  }
+  // The kinetic energy it had (under that of kSettleSpeed, and its spin) its supports' friction
+  // takes.
+  ball.v.setZero();
+  ball.w.setZero();
+  ball.motion = Motion::Held;
+  return true;
+}
+
 #define CUE_SIM_INSTANTIATE_SUPPORT_SLIDE(S)                                                                           \
   template void EventResolver<S>::supportsOf(const Ball<S>&, int, std::vector<Support>&, S&) const;                    \
   template bool EventResolver<S>::slideDownSupports(int);                                                              \
   template bool EventResolver<S>::hopDownSupports(Ball<S>&, const std::vector<Support>&, const Vec3<S>&, S);           \
-  template bool EventResolver<S>::spreadSupports(int, const std::vector<Support>&, const Vec3<S>&, S);
+  template bool EventResolver<S>::spreadSupports(int, const std::vector<Support>&, const Vec3<S>&, S);                 \
+  template bool EventResolver<S>::holdInTheAir(int);                                                                   \
+  template bool EventResolver<S>::freeWayOut(const Ball<S>&, int, int, const Vec2<S>&, Vec2<S>&) const;
 CUE_SIM_INSTANTIATE_SUPPORT_SLIDE(double)
 CUE_SIM_INSTANTIATE_SUPPORT_SLIDE(long double)
 

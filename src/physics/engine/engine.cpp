@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "cue_sim/physics/motion.hpp"
+#include "physics/engine/held_balls.hpp"
 #include "physics/engine/table_geometry.hpp"
 #include "physics/models/ball_table/slate_landing.hpp"
 
@@ -76,16 +77,41 @@ void Engine<S>::strike(TableState<S>& state, int ball_id, const CueStrike<S>& st
   ball = evolve(ball, state.time, params_);
   cue_->strike(ball, strike, params_);
   landOnSlate(ball, *ball_table_, params_);  // settles it too: on the cloth, or in the air
+  letHeldBallsFallOff(state, state.indexOf(ball_id));
   // The strike is an event: predictions restart from it.
   state.event_time = state.time;
   state.events_this_instant = 0;
+}
+
+template <typename S>
+std::vector<int> Engine<S>::letHeldBallsFallOff(TableState<S>& state, int index) const
+{
+  std::vector<int> all, fallen;
+  for (std::size_t j = 0; j < state.balls.size(); ++j)
+  {
+    all.push_back(static_cast<int>(j));
+    Ball<S>& ball = state.balls[j];
+    if (index < 0 && ball.held())
+    {
+      ball.motion = Motion::Airborne;
+      ball.time = std::max(ball.time, state.time);
+      fallen.push_back(static_cast<int>(j));
+    }
+  }
+  if (index < 0)
+    return fallen;
+  // Each ball that falls may hold others up in turn (a stack).
+  letHeldBallsFall(state, index, state.time, params_, all, fallen);
+  for (std::size_t k = 0; k < fallen.size(); ++k)
+    letHeldBallsFall(state, fallen[k], state.time, params_, all, fallen);
+  return fallen;
 }
 
 namespace
 {
 /// Empty if the ball on its own is valid on the table: finite, and if in play on the cloth.
 template <typename S>
-std::string whyBallInvalid(const TableModel& table, const Ball<S>& b, S R, double tolerance)
+std::string whyBallInvalid(const TableModel& table, const Ball<S>& b, S R, S nose_height, double tolerance)
 {
   const std::string label = "ball " + std::to_string(b.id);
   if (b.id < 0)
@@ -106,9 +132,13 @@ std::string whyBallInvalid(const TableModel& table, const Ball<S>& b, S R, doubl
   {
     if (static_cast<double>(b.r.z() - R) < -tolerance)
       return label + ": a ball in the air has z >= R = " + std::to_string(static_cast<double>(R)) + " m";
+    if (b.held() && (b.v != Vec3<S>::Zero() || b.w != Vec3<S>::Zero()))
+      return label + ": a ball held in the air is at rest (velocity and angular_velocity 0)";
   }
   else if (std::abs(static_cast<double>(b.r.z() - R)) > tolerance)
     return label + ": a ball on the cloth has z = R = " + std::to_string(static_cast<double>(R)) + " m";
+  if (b.airborne() && b.r.z() > nose_height)
+    return {};  // above the cushions' noses: over the rails is a place it may be
   const std::string where =
       table.whyNotPlaceable(b.r.template head<2>().template cast<double>(), static_cast<double>(R), tolerance);
   return where.empty() ? where : label + ": " + where;
@@ -138,7 +168,7 @@ std::string Engine<S>::whyInvalid(const TableState<S>& state, double tolerance) 
   {
     if (b.id >= 0 && !ids.insert(b.id).second)
       return "ball " + std::to_string(b.id) + ": id appears twice";
-    const std::string why = whyBallInvalid(*table_, b, params_.ball_radius, tolerance);
+    const std::string why = whyBallInvalid(*table_, b, params_.ball_radius, geometry_->nose_height, tolerance);
     if (!why.empty())
       return why;
   }
@@ -156,7 +186,7 @@ std::string Engine<S>::whyInvalid(const TableState<S>& state, double tolerance) 
 template <typename S>
 std::string Engine<S>::whyNotPlaceable(const TableState<S>& state, const Ball<S>& ball, double tolerance) const
 {
-  const std::string why = whyBallInvalid(*table_, ball, params_.ball_radius, tolerance);
+  const std::string why = whyBallInvalid(*table_, ball, params_.ball_radius, geometry_->nose_height, tolerance);
   if (!why.empty())
     return why;
   const Ball<S> placed = evolve(ball, std::max(ball.time, state.time), params_);

@@ -27,6 +27,8 @@ const char* motionName(Motion motion)
       return "airborne";
     case Motion::OffTable:
       return "off_table";
+    case Motion::Held:
+      return "held";
   }
   return "unknown";
 }
@@ -53,7 +55,7 @@ Motion classifyMotion(const Vec3<S>& v, const Vec3<S>& w, S radius)
 template <typename S>
 void settleMotion(Ball<S>& ball, S radius)
 {
-  if (!ball.inPlay())
+  if (!ball.inPlay() || (ball.held() && ball.v == Vec3<S>::Zero() && ball.w == Vec3<S>::Zero()))
     return;
   if (ball.r.z() - radius > onClothHeight(radius) || ball.v.z() > zeroSpeed<S>())
   {
@@ -188,6 +190,8 @@ Trajectory<S> trajectoryFrom(const Ball<S>& ball, S t_base, const PhysicsParams<
     traj.h1 = now.v.z();
     traj.h2 = S(-0.5) * p.gravity;
   }
+  else if (now.motion == Motion::Held)
+    traj.h0 = now.r.z() - p.ball_radius;
   return traj;
 }
 

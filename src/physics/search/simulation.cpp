@@ -124,8 +124,15 @@ std::string Simulation<S>::whyNotStrikable(int ball_id, const CueStrike<S>& stri
 template <typename S>
 void Simulation<S>::strike(int ball_id, const CueStrike<S>& strike)
 {
+  std::vector<int> held;
+  for (std::size_t j = 0; j < state_.balls.size(); ++j)
+    if (state_.balls[j].held())
+      held.push_back(static_cast<int>(j));
   engine_->strike(state_, ball_id, strike);  // throws, changing nothing, if it may not
   search_->ballChanged(state_, state_.indexOf(ball_id));
+  for (int j : held)
+    if (!state_.balls[j].held())  // it fell off the struck ball
+      search_->ballChanged(state_, j);
   edited();
 }
 
@@ -156,6 +163,7 @@ void Simulation<S>::place(Ball<S> ball)
     state_.balls.push_back(ball);
     search_->ballAdded(state_);
   }
+  letHeldBallsFall();
   state_.event_time = state_.time;
   state_.events_this_instant = 0;
   edited();
@@ -171,14 +179,23 @@ void Simulation<S>::remove(int ball_id)
   state_.balls[index] = state_.balls[last];
   state_.balls.pop_back();
   search_->ballRemoved(state_, index, last);
+  letHeldBallsFall();
   state_.event_time = state_.time;
   state_.events_this_instant = 0;
   edited();
 }
 
 template <typename S>
+void Simulation<S>::letHeldBallsFall()
+{
+  for (int j : engine_->letHeldBallsFallOff(state_, -1))
+    search_->ballChanged(state_, j);
+}
+
+template <typename S>
 void Simulation<S>::setEngine(std::shared_ptr<const Engine<S>> engine)
 {
+  engine->letHeldBallsFallOff(state_, -1);  // what holds a ball may not hold it under new parameters
   search_ = std::make_unique<EventSearch<S>>(*engine, state_);
   engine_ = std::move(engine);
   edited();

@@ -1,0 +1,28 @@
+// Balls held at rest in the air (Motion::Held) on supports that do not move: a ball that moves
+// under one lets it fall, to be held again if its supports still hold it (doc/physics.md,
+// "Resting on a rounded support"). Internal to the physics core: the engine lets them fall at a
+// strike, the event resolution (src/physics/contacts/) when a ball moves under one.
+#pragma once
+
+#include <vector>
+
+#include "cue_sim/physics/physics_params.hpp"
+#include "cue_sim/physics/table_state.hpp"
+
+namespace cue_sim
+{
+namespace physics
+{
+/// A held ball within this [m] of touching a ball that moves falls: a support's gap, plus the
+/// longest slide down the supports (support_slide.cpp) that may have opened it.
+constexpr double kHeldReach = 4e-6;
+
+/// Lets every held ball among `candidates` (indices into `state.balls`) that touches
+/// state.balls[mover], as it is at `time`, fall: in the air at rest, from `time`. Appends their
+/// indices to `fallen`.
+template <typename S>
+void letHeldBallsFall(TableState<S>& state, int mover, S time, const PhysicsParams<S>& params,
+                      const std::vector<int>& candidates, std::vector<int>& fallen);
+
+}  // namespace physics
+}  // namespace cue_sim
