@@ -1013,7 +1013,8 @@ TEST(SupportsInTheAir, ABallOnASquareAgainstACushionPushesItsBaseAlongTheCushion
 // pyramid of four stands on a cloth whose rolling resistance holds its base (mu_roll 1 against a
 // push of g / (3 tan 54.7 deg) = 0.24 g per unit mass). Its top ball is held in the air
 // (Motion::Held) in a few events, not hopped in place to the event limit, and stays until a base
-// ball is struck out from under it; then it falls, with no energy made and no overlap.
+// ball is struck out from under it; then it falls, with no energy made and no overlap. Dropped
+// onto the pile, it comes to rest on it the same way.
 TEST(SupportsInTheAir, APyramidOnAClothThatHoldsItsBaseStandsUntilABaseBallIsStruck)
 {
   const auto table = sevenFoot();
@@ -1031,6 +1032,19 @@ TEST(SupportsInTheAir, APyramidOnAClothThatHoldsItsBaseStandsUntilABaseBallIsStr
   for (int k = 0; k < 3; ++k)
     EXPECT_NEAR(s.balls[k].r.z(), R, 1e-12);
 
+  // Dropped a millimetre onto the held pile, the top ball bounces down to a sustained contact and
+  // is held again (elastic landings alone would keep it bouncing for ever).
+  TableState<double> dropped = pyramidOfFour(R);
+  dropped.balls[3].r.z() += 1e-3;
+  settleMotion(dropped.balls[3], R);
+  EXPECT_LT(runChecked(engine, dropped, 2).size(), 2000u);
+  simulateToRest(engine, dropped);
+  EXPECT_EQ(dropped.balls[3].motion, Motion::Held);
+  // Its landing pushed the base out a little (rolling resistance holds a ball against a steady
+  // push, not against an impulse), so it rests a little lower.
+  EXPECT_LT(dropped.balls[3].r.z(), height);
+  EXPECT_GT(dropped.balls[3].r.z(), height - 0.005);
+
   CueStrike<double> away;
   away.speed = 1.0;
   away.phi = std::atan2(s.balls[0].r.y(), s.balls[0].r.x());  // straight out from under it
@@ -1040,6 +1054,13 @@ TEST(SupportsInTheAir, APyramidOnAClothThatHoldsItsBaseStandsUntilABaseBallIsStr
   EXPECT_EQ(live.state().balls[3].motion, Motion::Airborne);
   EXPECT_TRUE(live.runToRest().at_rest);
   EXPECT_LT(live.state().balls[3].r.z(), height - 1e-3) << "it fell on the live table";
+  // A base ball taken off a live table lets it fall too.
+  Simulation<double> taken(engine, s);
+  taken.remove(1);
+  const int top = taken.state().indexOf(3);
+  EXPECT_EQ(taken.state().balls[top].motion, Motion::Airborne);
+  EXPECT_TRUE(taken.runToRest().at_rest);
+  EXPECT_LT(taken.state().balls[top].r.z(), height - 1e-3) << "it fell when a base ball was taken away";
   engine.strike(s, 0, away);
   EXPECT_EQ(s.balls[3].motion, Motion::Airborne) << "let fall by the strike";
   EXPECT_LT(runChecked(engine, s, 2).size(), 20000u);
