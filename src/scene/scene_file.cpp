@@ -71,6 +71,17 @@ Eigen::Matrix<double, N, 1> vector(const YAML::Node& node, const std::string& ke
   return v;
 }
 
+/// A list of two numbers (on the cloth: the height part is `height`) or three (in space).
+Eigen::Vector3d planarOrSpatial(const YAML::Node& node, const std::string& key, double height)
+{
+  if (!node.IsSequence() || (node.size() != 2 && node.size() != 3))
+    throw SceneError("'" + key + "' must be a list of 2 numbers (on the cloth) or 3 (in space)");
+  Eigen::Vector3d v(0, 0, height);
+  for (std::size_t i = 0; i < node.size(); ++i)
+    v[static_cast<int>(i)] = number(node[i], key);
+  return v;
+}
+
 /// Every key of the map known, and each once.
 void onlyKeys(const YAML::Node& map, const std::string& where, const std::set<std::string>& known)
 {
@@ -122,18 +133,6 @@ void applyPhysicsNode(const YAML::Node& node, physics::PhysicsParams<double>& pa
     throw SceneError("physics: " + why);
 }
 
-physics::Ball<double> ballFrom(const YAML::Node& node, const std::string& where, double radius)
-{
-  onlyKeys(node, where, {"id", "position", "velocity", "angular_velocity"});
-  if (!node["id"] || !node["position"])
-    throw SceneError(where + " needs 'id' and 'position' ([x, y] in metres)");
-  return sceneBall(integer(node["id"], where + ".id"), vector<2>(node["position"], where + ".position"),
-                   node["velocity"] ? vector<2>(node["velocity"], where + ".velocity") : Eigen::Vector2d::Zero(),
-                   node["angular_velocity"] ? vector<3>(node["angular_velocity"], where + ".angular_velocity")
-                                            : Eigen::Vector3d::Zero(),
-                   radius);
-}
-
 /// A number written so that reading it back gives it exactly.
 std::string exact(double x)
 {
@@ -150,6 +149,24 @@ std::string exactList(const Vector& v)
     out += (i ? ", " : "") + exact(v[i]);
   return out + "]";
 }
+
+physics::Ball<double> ballFrom(const YAML::Node& node, const std::string& where, double radius)
+{
+  onlyKeys(node, where, {"id", "position", "velocity", "angular_velocity"});
+  if (!node["id"] || !node["position"])
+    throw SceneError(where + " needs 'id' and 'position' ([x, y] in metres, or [x, y, z] off the cloth)");
+  const Eigen::Vector3d position = planarOrSpatial(node["position"], where + ".position", radius);
+  if (!(position.z() >= radius))
+    throw SceneError(where + ".position: the centre's height z = " + exact(position.z()) +
+                     " m is below the cloth's ball_radius = " + exact(radius) + " m");
+  return sceneBallInSpace(
+      integer(node["id"], where + ".id"), position,
+      node["velocity"] ? planarOrSpatial(node["velocity"], where + ".velocity", 0.0) : Eigen::Vector3d::Zero(),
+      node["angular_velocity"] ? vector<3>(node["angular_velocity"], where + ".angular_velocity")
+                               : Eigen::Vector3d::Zero(),
+      radius);
+}
+
 }  // namespace
 
 void applyPhysicsYaml(const std::string& yaml_text, physics::PhysicsParams<double>& params,
@@ -382,10 +399,17 @@ Scene loadScene(const std::string& yaml_text)
 physics::Ball<double> sceneBall(int id, const Eigen::Vector2d& position, const Eigen::Vector2d& velocity,
                                 const Eigen::Vector3d& angular_velocity, double radius)
 {
+  return sceneBallInSpace(id, Eigen::Vector3d(position.x(), position.y(), radius),
+                          Eigen::Vector3d(velocity.x(), velocity.y(), 0.0), angular_velocity, radius);
+}
+
+physics::Ball<double> sceneBallInSpace(int id, const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
+                                       const Eigen::Vector3d& angular_velocity, double radius)
+{
   physics::Ball<double> b;
   b.id = id;
-  b.r = Eigen::Vector3d(position.x(), position.y(), radius);
-  b.v.head<2>() = velocity;
+  b.r = position;
+  b.v = velocity;
   b.w = angular_velocity;
   physics::settleMotion(b, radius);
   return b;
@@ -407,8 +431,13 @@ std::string sceneYaml(const Scene& scene, const std::string& comment)
   out << "  cue_model: " << scene.models.cue << "\n";
   out << "balls:\n";
   for (const auto& b : scene.state.balls)
-    out << "  - {id: " << b.id << ", position: " << exactList(b.r.head<2>())
-        << ", velocity: " << exactList(b.v.head<2>()) << ", angular_velocity: " << exactList(b.w) << "}\n";
+  {
+    // A ball off the cloth is written with its height and vertical speed; one on it as [x, y].
+    out << "  - {id: " << b.id
+        << ", position: " << (b.airborne() ? exactList(b.r) : exactList(Eigen::Vector2d(b.r.head<2>())))
+        << ", velocity: " << (b.airborne() ? exactList(b.v) : exactList(Eigen::Vector2d(b.v.head<2>())))
+        << ", angular_velocity: " << exactList(b.w) << "}\n";
+  }
   if (scene.shot)
   {
     const auto& s = scene.shot->strike;

@@ -44,9 +44,14 @@ std::string ballFromInput(const BallInput& input, const std::string& field, cons
     out = b;
     return "";
   }
-  if (input.velocity.z() != 0)
+  // Above the cloth the ball is in the air at its height; at or below it (a request's default
+  // z = 0 included) it is on the cloth, where it may leave the slate but not press into it.
+  const bool in_the_air = input.position.z() > ball_radius;
+  if (!in_the_air && input.velocity.z() < 0)
   {
-    why << field << ".velocity.z must be 0 (balls stay on the cloth), got " << input.velocity.z();
+    why << field << ".velocity.z = " << input.velocity.z()
+        << " m/s drives a ball on the cloth into the slate: it must be >= 0 there (a ball in the air, position.z > "
+        << ball_radius << " m, may fall)";
     return why.str();
   }
   const double speed = input.velocity.norm(), spin = input.angular_velocity.norm();
@@ -60,7 +65,7 @@ std::string ballFromInput(const BallInput& input, const std::string& field, cons
     why << field << ".angular_velocity: " << spin << " rad/s is not in [0, " << physics::BallLimits::max_spin << "]";
     return why.str();
   }
-  b.r = physics::Vec3<double>(input.position.x(), input.position.y(), ball_radius);  // on the cloth
+  b.r = physics::Vec3<double>(input.position.x(), input.position.y(), in_the_air ? input.position.z() : ball_radius);
   b.v = input.velocity;
   b.w = input.angular_velocity;
   physics::settleMotion(b, ball_radius);

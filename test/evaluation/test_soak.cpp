@@ -57,12 +57,19 @@ void expectSameScene(const Scene& a, const Scene& b, long k)
 
 TEST(Soak, EveryShotIsMadeAgainAndItsSceneFileLoadsBackExactly)
 {
-  for (long k = 0; k < 200; ++k)
-  {
-    const Scene scene = soakScene(4, k);
-    expectSameScene(soakScene(4, k), scene, k);
-    expectSameScene(loadScene(sceneYaml(scene, "shot " + std::to_string(k) + "\nsecond line")), scene, k);
-  }
+  // The airborne campaign's scenes too: their balls in the air are written with their height
+  // and vertical speed, and read back there.
+  int off_the_cloth = 0;
+  for (const bool airborne : {false, true})
+    for (long k = 0; k < 200; ++k)
+    {
+      const Scene scene = soakScene(4, k, airborne);
+      expectSameScene(soakScene(4, k, airborne), scene, k);
+      expectSameScene(loadScene(sceneYaml(scene, "shot " + std::to_string(k) + "\nsecond line")), scene, k);
+      for (const auto& b : scene.state.balls)
+        off_the_cloth += b.airborne();
+    }
+  EXPECT_GT(off_the_cloth, 100);
   // Another seed, other scenes.
   EXPECT_NE(sceneYaml(soakScene(4, 0)), sceneYaml(soakScene(5, 0)));
 }

@@ -267,10 +267,10 @@ TEST_F(ResearchInterfaceTest, BadPredictionsAreRefusedByFieldAndChangeNothing)
   EXPECT_FALSE(p.success);
   EXPECT_NE(p.message.find("balls[1].id"), std::string::npos) << p.message;
   b.id = 1;
-  b.velocity.z = 0.1;
+  b.velocity.z = -0.1;  // into the slate
   p = table_.predict(fine, {a, b});
   EXPECT_FALSE(p.success);
-  EXPECT_NE(p.message.find("balls[1].velocity.z"), std::string::npos) << p.message;
+  EXPECT_NE(p.message.find("balls[1].velocity.z = -0.1"), std::string::npos) << p.message;
   b.velocity.z = 0;
   b.position.x = 5;  // off the table
   p = table_.predict(fine, {a, b});

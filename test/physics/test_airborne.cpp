@@ -94,6 +94,8 @@ std::vector<Event<double>> runChecked(const Engine<double>& engine, TableState<d
     EXPECT_LE(after, before * (1 + 1e-12) + 1e-15)
         << eventKindName(next.kind) << " of ball " << next.ball << " gained energy at t = " << next.time;
     check(next.time);
+    // Nowhere a ball on the table may not be (inside a cushion, under a rail), ever.
+    EXPECT_EQ(engine.whyInvalid(s), "") << "after " << eventKindName(next.kind) << " at t = " << next.time;
     last_time = next.time;
     last_energy = after;
   }
@@ -670,6 +672,31 @@ TEST(AirborneWalls, ABallJustAboveTheNoseBouncesOffItsEdge)
       EXPECT_LT(after.v.y(), 0.0);  // thrown back; higher up, it glances on over the top
     EXPECT_GT(after.v.z(), before.v.z());
     EXPECT_TRUE(after.airborne());
+  }
+}
+
+// A ball hopping high out of a side pocket's mouth, its centre nearer the nose line than R,
+// drifting along the rail: beside the cushion it comes down onto the nose's edge, never through
+// it into the cushion (found by the soak, seed 8, shot 663).
+TEST(AirborneWalls, ABallHoppingOutOfAPocketsMouthComesDownOnTheNoseNotInTheCushion)
+{
+  const auto table = sevenFoot();
+  const Engine<double> engine(table, PhysicsParams<double>());
+  const double R = engine.params().ball_radius, h = engine.params().cushion_height, nose_y = 0.9906 / 2;
+  for (const double inside : {0.9 * R, 0.95 * R})
+  {
+    SCOPED_TRACE("centre " + std::to_string(inside) + " m from the nose line");
+    TableState<double> s;
+    s.balls.push_back(inTheAir<double>(0, -0.02, -(nose_y - inside), 0.0, Vec3<double>(0.75, -0.04, 2.4)));
+    ASSERT_EQ(engine.whyInvalid(s), "");
+    const std::vector<Event<double>> events = runChecked(engine, s, 2);
+    ASSERT_FALSE(events.empty());
+    const Event<double>& first = events[0];
+    EXPECT_EQ(first.kind, EventKind::BallCushion);
+    TableState<double> at = s;
+    scanStep(engine, at);
+    EXPECT_GT(at.balls[0].r.z(), h);          // on the edge, above the nose
+    EXPECT_GT(at.balls[0].r.x(), 0.137 / 2);  // beside the cushion, past the pocket's mouth
   }
 }
 

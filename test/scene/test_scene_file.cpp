@@ -77,6 +77,44 @@ duration: 1.5
   EXPECT_DOUBLE_EQ(*s.duration, 1.5);
 }
 
+// A ball off the cloth: [x, y, z] places its centre z above the slate, [vx, vy, vz] throws it;
+// written back with its height, and a ball on the cloth still as [x, y].
+TEST(SceneFile, ABallInTheAirIsReadWithItsHeightAndWrittenBackSo)
+{
+  const Scene s = loadScene(R"(
+table: 7ft
+balls:
+  - {id: 0, position: [-0.5, 0.1]}
+  - {id: 1, position: [0.2, -0.3, 0.25], velocity: [0.5, 0, 1.5]}
+  - {id: 2, position: [0.4, 0.3, 0.028575], velocity: [0, 0, 2]}
+)");
+  const physics::Ball<double>&cloth = s.state.balls[0], &high = s.state.balls[1], &rising = s.state.balls[2];
+  EXPECT_EQ(cloth.motion, physics::Motion::Stationary);
+  EXPECT_EQ(cloth.r.z(), s.params.ball_radius);
+  EXPECT_EQ(high.motion, physics::Motion::Airborne);
+  EXPECT_EQ(high.r, physics::Vec3<double>(0.2, -0.3, 0.25));
+  EXPECT_EQ(high.v, physics::Vec3<double>(0.5, 0, 1.5));
+  EXPECT_EQ(rising.motion, physics::Motion::Airborne);  // on the slate, leaving it
+  const std::string yaml = sceneYaml(s);
+  EXPECT_NE(yaml.find("{id: 0, position: [-0.5, 0.10000000000000001], velocity: [0, 0]"), std::string::npos) << yaml;
+  EXPECT_NE(yaml.find("{id: 1, position: [0.20000000000000001, -0.29999999999999999, 0.25], velocity: [0.5, 0, 1.5]"),
+            std::string::npos)
+      << yaml;
+  const Scene back = loadScene(yaml);
+  for (std::size_t i = 0; i < s.state.balls.size(); ++i)
+  {
+    EXPECT_EQ(back.state.balls[i].r, s.state.balls[i].r) << i;
+    EXPECT_EQ(back.state.balls[i].v, s.state.balls[i].v) << i;
+    EXPECT_EQ(back.state.balls[i].motion, s.state.balls[i].motion) << i;
+  }
+  EXPECT_NE(errorOf("balls: [{id: 0, position: [0, 0, 0.01]}]\n")
+                .find("balls[0].position: the centre's height z = 0.01 m is below the cloth's ball_radius"),
+            std::string::npos);
+  EXPECT_NE(
+      errorOf("balls: [{id: 0, position: [0, 0, 0.1, 2]}]\n").find("must be a list of 2 numbers (on the cloth) or 3"),
+      std::string::npos);
+}
+
 TEST(SceneFile, BadScenesNameTheProblem)
 {
   EXPECT_NE(errorOf("table: 7ft\nfoo: 1\n").find("unknown key 'foo'"), std::string::npos);

@@ -162,6 +162,13 @@ TEST_F(LiveTableTest, RefusedRequestsNameTheFieldAndChangeNothing)
   EXPECT_NE(set.message.find("balls[1].id = 1 appears twice"), std::string::npos) << set.message;
   EXPECT_FALSE(table_.setState({}, kStart).success);
   EXPECT_FALSE(table_.setState({ballAt(0, 5, 0)}, kStart).success) << "off the table";
+  BallInput down = ballAt(0, 0, 0);
+  down.velocity = physics::Vec3<double>(0, 0, -1);
+  set = table_.setState({down}, kStart);
+  EXPECT_FALSE(set.success);
+  EXPECT_NE(set.message.find("balls[0].velocity.z = -1 m/s drives a ball on the cloth into the slate"),
+            std::string::npos)
+      << set.message;
 
   PhysicsParams<double> params;
   params.gravity = inf;
@@ -203,6 +210,60 @@ TEST_F(LiveTableTest, RefusedRequestsNameTheFieldAndChangeNothing)
   EXPECT_EQ(table_.motion().layoutVersion(), layout);
   expectSameBalls(table_.motion().balls(), before);
   EXPECT_TRUE(table_.motion().atRest());
+}
+
+// A ball given above the cloth is in the air there: it falls, bounces and comes to rest on the
+// cloth; one over another ball falls onto it. A state read back from the table, heights and all,
+// is taken again as it is.
+TEST_F(LiveTableTest, ABallSetInTheAirFallsFromThere)
+{
+  const double R = PhysicsParams<double>().ball_radius;
+  BallInput high = ballAt(0, -0.3, 0.1), over = ballAt(2, 0.3 + 0.3 * R, 0.1);
+  high.position.z() = R + 0.2;
+  high.velocity = physics::Vec3<double>(-0.5, 0, 1);  // away from the others
+  over.position.z() = 5 * R;                          // above ball 1, off its top, with 2R between them
+  const Outcome set = table_.setState({high, ballAt(1, 0.3, 0.1), over}, kStart);
+  ASSERT_TRUE(set.success) << set.message;
+  const auto at = [&](int id) {
+    for (const auto& b : table_.motion().balls())
+      if (b.id == id)
+        return b;
+    return Ball<double>();
+  };
+  EXPECT_EQ(at(0).motion, physics::Motion::Airborne);
+  EXPECT_EQ(at(0).r, physics::Vec3<double>(-0.3, 0.1, R + 0.2));
+  EXPECT_EQ(at(0).v, physics::Vec3<double>(-0.5, 0, 1));
+  EXPECT_EQ(at(1).motion, physics::Motion::Stationary);
+  EXPECT_EQ(at(2).motion, physics::Motion::Airborne);
+
+  // Its state taken from the table mid-flight and set again: the same balls, bit for bit.
+  table_.advanceTo(kStart + kSecond / 20);
+  ASSERT_GT(at(0).r.z(), R);
+  std::vector<BallInput> read_back;
+  for (const auto& b : table_.motion().balls())
+  {
+    BallInput in;
+    in.id = b.id;
+    in.position = b.r;
+    in.velocity = b.v;
+    in.angular_velocity = b.w;
+    read_back.push_back(in);
+  }
+  const std::vector<Ball<double>> mid_flight = table_.motion().balls();
+  ASSERT_TRUE(table_.setState(read_back, kStart + kSecond / 20).success);
+  expectSameBalls(table_.motion().balls(), mid_flight);
+
+  table_.advanceTo(kStart + 20 * kSecond);
+  EXPECT_TRUE(table_.motion().atRest());
+  for (const auto& b : table_.motion().balls())
+  {
+    EXPECT_FALSE(b.airborne()) << "ball " << b.id;
+    EXPECT_EQ(b.r.z(), R) << "ball " << b.id;
+  }
+  // Ball 2 came down on ball 1's side and knocked it from where it stood, away from itself.
+  EXPECT_GT((at(1).r.head<2>() - Eigen::Vector2d(0.3, 0.1)).norm(), 1e-3);
+  EXPECT_LT(at(1).r.x(), 0.3);
+  EXPECT_GT(at(2).r.x(), 0.3 + 0.3 * R);
 }
 
 TEST_F(LiveTableTest, ALargeBallOnAnEmptyTableStillLetsTheTableBeRackedAgain)

@@ -56,6 +56,11 @@ Scene loadSceneFile(const std::string& path);
 physics::Ball<double> sceneBall(int id, const Eigen::Vector2d& position, const Eigen::Vector2d& velocity,
                                 const Eigen::Vector3d& angular_velocity, double radius);
 
+/// A ball anywhere: its centre at `position` (z from the slate; z = radius is on the cloth,
+/// higher is in the air), moving at `velocity`; its motion state follows from them.
+physics::Ball<double> sceneBallInSpace(int id, const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
+                                       const Eigen::Vector3d& angular_velocity, double radius);
+
 /// The scene as a scene file that loads back to exactly this scene: the table by its name, every
 /// coefficient and model, every ball and the shot, each number to 17 significant digits (the
 /// rack, if any, written out ball by ball). `comment` heads it, each line after '# '.

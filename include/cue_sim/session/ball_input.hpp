@@ -18,16 +18,18 @@ constexpr int kMaxBallId = 15;
 struct BallInput
 {
   int id = 0;
-  physics::Vec3<double> position = physics::Vec3<double>::Zero();          ///< [m]; z is ignored for a ball in play
-  physics::Vec3<double> velocity = physics::Vec3<double>::Zero();          ///< [m/s]; z must be 0
+  /// [m]; a ball in play with z above the ball's radius is in the air there, else on the cloth
+  physics::Vec3<double> position = physics::Vec3<double>::Zero();
+  physics::Vec3<double> velocity = physics::Vec3<double>::Zero();          ///< [m/s]; z >= 0 on the cloth
   physics::Vec3<double> angular_velocity = physics::Vec3<double>::Zero();  ///< [rad/s]
   bool pocketed = false;
   std::string pocket;  ///< the pocket's name, when pocketed
 };
 
-/// The ball as a physics ball at time 0 on the cloth (its motion state follows from its velocity
-/// and spin), or why it cannot be: `field` names it in the reason ("balls[3]"). Checks the id,
-/// finite values, speeds (physics::BallLimits), a velocity off the cloth and the pocket's name;
+/// The ball as a physics ball at time 0, on the cloth or in the air (its motion state follows from
+/// its height, velocity and spin), or why it cannot be: `field` names it in the reason
+/// ("balls[3]"). Checks the id, finite values, speeds (physics::BallLimits), a velocity into the
+/// slate and the pocket's name;
 /// where it is on the table is the engine's to check.
 std::string ballFromInput(const BallInput& input, const std::string& field, const physics::TableModel& table,
                           double ball_radius, physics::Ball<double>& out);

@@ -109,9 +109,14 @@ template <typename S>
 void EventResolver<S>::resolveAirbornePair(Ball<S>& a, Ball<S>& b)
 {
   const Vec3<S> n = (b.r - a.r).normalized();
-  if (a.held() != b.held() &&
-      restOnHeldBall(a.held() ? b : a, a.held() ? context_.other_index : context_.index, a.held() ? n : Vec3<S>(-n)))
-    return;
+  if (a.held() != b.held())
+  {
+    Ball<S>& other = a.held() ? b : a;
+    const Vec3<S> up = a.held() ? n : Vec3<S>(-n);  // from the held ball to the other
+    if (other.airborne() ? restOnHeldBall(other, a.held() ? context_.other_index : context_.index, up)
+                         : pressOnHeldBall(other, Vec3<S>(-up)))
+      return;
+  }
   for (Ball<S>* ball : {&a, &b})
     if (ball->held())
       ball->motion = Motion::Airborne;  // met by a ball: it takes part in the impact, free
@@ -150,6 +155,28 @@ bool EventResolver<S>::restOnHeldBall(Ball<S>& flying, int index, const Vec3<S>&
   if (!hopOffFixedSupport(flying, up) && !slideDownSupports(index))
     holdInTheAir(index);
   settleMotion(flying, params_.ball_radius);
+  return true;
+}
+
+template <typename S>
+bool EventResolver<S>::pressOnHeldBall(Ball<S>& on_cloth, const Vec3<S>& up)
+{
+  // As at a cushion's face (resolveWall): the closing stopped, a slip into it turned into spin,
+  // and a pressing within rounding parted by a few ulps. The slate takes the vertical part.
+  const Vec3<S> into = Vec3<S>(up.x(), up.y(), S(0)).normalized();
+  const S closing = on_cloth.v.dot(into);
+  if (!(closing < S(kSustainedContactSpeed)) || !(into.squaredNorm() > S(0)))
+    return false;
+  const Vec3<S> v_before = on_cloth.v, w_before = on_cloth.w;
+  if (closing > S(0))
+    on_cloth.v -= closing * into;
+  settleMotion(on_cloth, params_.ball_radius);
+  holdAgainstWall(on_cloth, Vec3<S>(-into));
+  if (on_cloth.v == v_before && on_cloth.w == w_before)
+  {
+    on_cloth.v -= roundingSpeed(on_cloth.v.norm()) * into;
+    settleMotion(on_cloth, params_.ball_radius);
+  }
   return true;
 }
 

@@ -122,6 +122,10 @@ private:
   /// (`up` from the held ball to it): met as on a fixed support, hopped off, slid down or held.
   /// False if it meets the held ball faster (an impact, which sets the held ball free).
   bool restOnHeldBall(Ball<S>& flying, int index, const Vec3<S>& up);
+  /// A ball on the cloth meeting a held ball (`up` from it to the held ball) slower than
+  /// kSustainedContactSpeed: the held ball stands as a wall would, its supports taking the push.
+  /// False if it meets it faster (an impact, which sets the held ball free).
+  bool pressOnHeldBall(Ball<S>& on_cloth, const Vec3<S>& up);
   void resolveWall(Ball<S>& ball, const Event<S>& event);
   /// A ball in the air above the wall's top meets its nose's edge or its post's rim: true if so
   /// (and resolved).
@@ -154,12 +158,19 @@ private:
   bool slideDownSupports(int index);
   bool hopDownSupports(Ball<S>& ball, const std::vector<Support>& supports, const Vec3<S>& down, S nearest);
   bool spreadSupports(int index, const std::vector<Support>& supports, const Vec3<S>& down, S nearest);
+  /// Whether `support` is a ball on the cloth moving out from under `ball` (moving, and not
+  /// closing on it).
+  bool movingAway(const Support& support, const Ball<S>& ball) const;
+  /// Held by its supports only with those moving away among them: slid down after them.
+  bool slideAfterMovingSupports(int index, const std::vector<Support>& supports, S nearest);
   /// The way a ball on the cloth (state_.balls[pushed_index], `pushed` now) pushed along
   /// `radial` by the ball `by` above it can go: `radial`, or along the cushion faces it is
   /// against. False if a ball, a nose or a post holds it.
   bool freeWayOut(const Ball<S>& pushed, int pushed_index, int by, const Vec2<S>& radial, Vec2<S>& out) const;
-  /// A ball in the air at rest (slower than kSettleSpeed) on supports that do not move, with no
-  /// way down that leaves them: held there (Motion::Held), its motion stopped. False otherwise.
+  /// A ball in the air at rest (slower than kSettleSpeed) with no way down that leaves its
+  /// supports (the slate, walls, balls in the air, balls on the cloth at rest or closing on it;
+  /// not those moving out from under it): held there (Motion::Held), its motion stopped. False
+  /// otherwise.
   bool holdInTheAir(int index);
 
   // impact_group.cpp

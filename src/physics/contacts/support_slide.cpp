@@ -22,8 +22,9 @@ constexpr double kSupportTouch = 1e-9;
 constexpr double kMaxSlide = 1e-6;
 /// A ball on the cloth under a ball being held that still moves slower than this [m/s] is
 /// stopped: its speed is rounding's and slides' leftovers, which the held ball's weight on it and
-/// their friction take (they would stop it as the held ball settles). A faster support would
-/// carry the ball or leave it in the air, and the ball is not held.
+/// their friction take (they would stop it as the held ball settles). A faster support moving
+/// away does not hold the ball (it comes down after it); one closing on it holds it until it
+/// strikes it.
 constexpr double kStoppedUnderHeld = 1e-6;
 /// Descent per unit of slide below which the supports are taken to hold the ball (a slide of
 /// kMaxSlide would pay for a hop of under a nanometre a second).
@@ -68,9 +69,14 @@ void EventResolver<S>::supportsOf(const Ball<S>& ball, int index, std::vector<Su
 {
   const S R = params_.ball_radius;
   const auto note = [&](S gap, const Vec3<S>& normal, int by) {
-    if (gap <= S(kSupportTouch))
+    // The same wall met twice (a nose's line runs on past the pocket to the next cushion's) is
+    // one support: counted twice, it would weigh the ball's hop off them.
+    const bool again = std::any_of(supports.begin(), supports.end(), [&](const Support& s) {
+      return s.ball < 0 && by < 0 && s.normal.dot(normal) > S(1) - S(kTouchingSlack);
+    });
+    if (gap <= S(kSupportTouch) && !again)
       supports.push_back({normal, by});
-    else
+    else if (gap > S(kSupportTouch))
       nearest = std::min(nearest, gap);
   };
   note(ball.r.z() - R, Vec3<S>(S(0), S(0), S(1)), -1);  // the slate
@@ -138,7 +144,48 @@ bool EventResolver<S>::slideDownSupports(int index)
     return hopDownSupports(ball, supports, down, nearest);
   // Held by its supports: it may still come down between the balls on the cloth among them by
   // pushing them apart (no static friction holds a ball on the cloth).
-  return steepestFreeDescent(fixed, down) > S(kLeastDescent) && spreadSupports(index, supports, down, nearest);
+  if (steepestFreeDescent(fixed, down) > S(kLeastDescent) && spreadSupports(index, supports, down, nearest))
+    return true;
+  return slideAfterMovingSupports(index, supports, nearest);
+}
+
+template <typename S>
+bool EventResolver<S>::movingAway(const Support& support, const Ball<S>& ball) const
+{
+  if (support.ball < 0)
+    return false;
+  const Ball<S> b = evolve(state_.balls[support.ball], ball.time, params_);
+  return !b.airborne() && b.v.norm() >= S(kStoppedUnderHeld) && !(b.v.dot(support.normal) > zeroSpeed<S>());
+}
+
+template <typename S>
+bool EventResolver<S>::slideAfterMovingSupports(int index, const std::vector<Support>& supports, S nearest)
+{
+  // A ball on the cloth that moves and does not close on the ball is on its way out from under
+  // it: the ball comes down after it, never nearer to it than half their gap (each landing on
+  // the others finds it further off).
+  Ball<S>& ball = state_.balls[index];
+  std::vector<Support> staying, leaving;
+  std::vector<Vec3<S>> normals;
+  for (const Support& s : supports)
+  {
+    (movingAway(s, ball) ? leaving : staying).push_back(s);
+    if (!movingAway(s, ball))
+      normals.push_back(s.normal);
+  }
+  Vec3<S> down;
+  if (leaving.empty() || staying.empty() || !(steepestFreeDescent(normals, down) > S(kLeastDescent)))
+    return false;
+  for (const Support& s : leaving)
+  {
+    const S toward = -down.dot(s.normal);
+    if (toward > S(0))
+    {
+      const Ball<S> b = evolve(state_.balls[s.ball], ball.time, params_);
+      nearest = std::min(nearest, std::max((ball.r - b.r).norm() - S(2) * params_.ball_radius, S(0)) / toward);
+    }
+  }
+  return hopDownSupports(ball, staying, down, nearest);
 }
 
 template <typename S>
@@ -286,13 +333,18 @@ bool EventResolver<S>::holdInTheAir(int index)
   std::vector<int> to_stop;
   for (const Support& s : supports)
   {
+    // A ball on the cloth moving out from under it does not hold it; one closing on it holds it
+    // until it strikes it (an impact with a held ball frees it).
+    if (movingAway(s, ball))
+      continue;
     normals.push_back(s.normal);
     if (s.ball < 0 || !state_.balls[s.ball].translating())
       continue;
     const Ball<S> support = evolve(state_.balls[s.ball], ball.time, params_);
-    if (support.airborne() || !(support.v.norm() < S(kStoppedUnderHeld)))
+    if (support.airborne())
       return false;
-    to_stop.push_back(s.ball);
+    if (support.v.norm() < S(kStoppedUnderHeld))
+      to_stop.push_back(s.ball);
   }
   Vec3<S> down;
   if (supports.empty() || steepestFreeDescent(normals, down) > S(kLeastDescent))
@@ -320,6 +372,8 @@ bool EventResolver<S>::holdInTheAir(int index)
   template bool EventResolver<S>::hopDownSupports(Ball<S>&, const std::vector<Support>&, const Vec3<S>&, S);           \
   template bool EventResolver<S>::spreadSupports(int, const std::vector<Support>&, const Vec3<S>&, S);                 \
   template bool EventResolver<S>::holdInTheAir(int);                                                                   \
+  template bool EventResolver<S>::movingAway(const Support&, const Ball<S>&) const;                                    \
+  template bool EventResolver<S>::slideAfterMovingSupports(int, const std::vector<Support>&, S);                       \
   template bool EventResolver<S>::freeWayOut(const Ball<S>&, int, int, const Vec2<S>&, Vec2<S>&) const;
 CUE_SIM_INSTANTIATE_SUPPORT_SLIDE(double)
 CUE_SIM_INSTANTIATE_SUPPORT_SLIDE(long double)

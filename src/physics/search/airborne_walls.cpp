@@ -101,11 +101,12 @@ private:
     // face and above its top: across^2 + above^2 - R^2, a quartic.
     const Poly4<S> edge = distanceGap<S>(Vec2<S>(across[0], S(0)), Vec2<S>(across[1], S(0)), Vec2<S>(across[2], S(0)),
                                          p_.h0 + R_ - g_.nose_height, p_.h1, p_.h2, R_);
+    const S edge_touch = touchTolerance(R_ * R_);
     S from = S(0);
     for (int root = 0; root < 4; ++root)
     {
       // Touching and pressed on by gravity, it is met now (as a ball pressed on a cushion is).
-      const S tau = root == 0 ? contactTime(edge, limit(), -S(2) * R_ * zeroSpeed<S>(), touchTolerance(R_ * R_), true)
+      const S tau = root == 0 ? contactTime(edge, limit(), -S(2) * R_ * zeroSpeed<S>(), edge_touch, true)
                               : firstDownCrossing(edge, from, limit());
       if (!(tau <= limit()))
         break;
@@ -114,6 +115,12 @@ private:
         keep(tau, Candidate<S>::Segment, k);
         break;
       }
+      // Inside the edge's reach at the start and not met there (low beside a pocket's mouth,
+      // where the jaw is met instead): the first root found may be the gap's return to its start,
+      // not its crossing. The search starts again from the start for the ball coming down onto
+      // the edge once beside the cushion.
+      if (root == 0 && edge[0] <= edge_touch)
+        continue;
       if (!(tau > from))
         break;
       from = tau;
