@@ -1036,6 +1036,36 @@ TEST(SupportsInTheAir, ABallOnASquareAgainstACushionPushesItsBaseAlongTheCushion
   EXPECT_GT(end.balls[1].r.x(), R + 1e-3) << "pushed along the cushion";
 }
 
+// A base ball rolling slowly under a pyramid's top ball (the soak, seed 8, shots 106 and 2587):
+// moving out from under it, it does not hold it, and the top ball comes down after it; rolling
+// along under it, it is stopped against it as against a wall. Before, the top ball was met by its
+// supports again and again at one instant, to the event limit. On a cloth whose rolling
+// resistance holds the base (mu_roll 0.3 against a push of 0.24 g), it ends held a little lower
+// or on the cloth, at rest, with no energy made and no overlap at any event.
+TEST(SupportsInTheAir, APyramidWhoseBaseBallRollsUnderItsTopComesToRest)
+{
+  const auto table = sevenFoot();
+  PhysicsParams<double> p;
+  p.mu_roll = 0.3;
+  const Engine<double> engine(table, p);
+  const double R = p.ball_radius, height = R + 2 * R * std::sqrt(2.0 / 3.0);
+  for (const auto& [speed, direction] : {std::pair<double, double>{0.002, 1.5707963267948966}, {0.05, 0.0}})
+  {
+    SCOPED_TRACE("base ball rolling at " + std::to_string(speed) + " m/s at " + std::to_string(direction) + " rad");
+    TableState<double> s = pyramidOfFour(R);
+    const Vec3<double> v = speed * Vec3<double>(std::cos(direction), std::sin(direction), 0);
+    s.balls[0] = inTheAir(0, s.balls[0].r.x(), s.balls[0].r.y(), 0.0, v, Vec3<double>(-v.y() / R, v.x() / R, 0));
+    ASSERT_EQ(s.balls[0].motion, Motion::Rolling);
+    const TableState<double> end = checkedToRest(engine, s);
+    EXPECT_GT(end.time, 1e-3) << "time went on";
+    const Ball<double>& top = end.balls[3];
+    EXPECT_TRUE(top.motion == Motion::Held || top.r.z() == R) << motionName(top.motion) << " at " << top.r.z();
+    EXPECT_LE(top.r.z(), height);
+    for (const Ball<double>& b : end.balls)
+      EXPECT_FALSE(b.translating()) << "ball " << b.id;
+  }
+}
+
 // A pile is spread only when the weight's push on a base ball beats its rolling resistance: a
 // pyramid of four stands on a cloth whose rolling resistance holds its base (mu_roll 1 against a
 // push of g / (3 tan 54.7 deg) = 0.24 g per unit mass). Its top ball is held in the air
