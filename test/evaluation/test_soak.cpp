@@ -148,7 +148,9 @@ TEST(Soak, AirborneScenesFlyStartValidAndStrikeBallsOnTheCloth)
     flying += any;
     sequential += scene.models.cue == "sequential";
     if (scene.shot)
+    {
       EXPECT_FALSE(scene.state.balls[static_cast<std::size_t>(scene.state.indexOf(scene.shot->ball))].airborne());
+    }
     const Scene plain = soakScene(7, k);
     EXPECT_EQ(plain.models.cue, "planar");  // the default: nothing leaves the cloth
     EXPECT_EQ(plain.state.balls.size(), soakScene(7, k).state.balls.size());

@@ -67,9 +67,13 @@ std::vector<Event<double>> runChecked(const Engine<double>& engine, TableState<d
       EXPECT_TRUE(isFinite(a.r) && isFinite(a.v) && isFinite(a.w)) << "ball " << a.id << " at " << t;
       EXPECT_GE(a.r.z(), R - 1e-12) << "ball " << a.id << " below the slate at t = " << t;
       for (std::size_t j = i + 1; j < s.balls.size(); ++j)
+      {
         if (s.balls[j].inPlay())
+        {
           EXPECT_GE((a.r - engine.ballAt(s, j, t).r).norm(), 2 * R - 1e-9)
               << "balls " << a.id << " and " << s.balls[j].id << " overlap at t = " << t;
+        }
+      }
     }
   };
   std::vector<Event<double>> events;
@@ -669,7 +673,9 @@ TEST(AirborneWalls, ABallJustAboveTheNoseBouncesOffItsEdge)
     EXPECT_LT(((after.v - vn_after * unit) - (before.v - vn_before * unit)).norm(), 1e-12);
     EXPECT_EQ(after.w, before.w);
     if (above <= 0.5)
+    {
       EXPECT_LT(after.v.y(), 0.0);  // thrown back; higher up, it glances on over the top
+    }
     EXPECT_GT(after.v.z(), before.v.z());
     EXPECT_TRUE(after.airborne());
   }
@@ -1027,7 +1033,7 @@ TEST(SupportsInTheAir, ABallOnASquareAgainstACushionPushesItsBaseAlongTheCushion
 {
   const auto table = sevenFoot();
   const Engine<double> engine(table, PhysicsParams<double>());
-  const double R = engine.params().ball_radius, nose_y = 0.9906 / 2;
+  const double R = engine.params().ball_radius;
   TableState<double> s = squareAgainstTheCushion(R);
   ASSERT_EQ(engine.whyInvalid(s), "");
   const TableState<double> end = checkedToRest(engine, s);
