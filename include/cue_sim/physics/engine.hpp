@@ -98,10 +98,12 @@ public:
   /// the cloth).
   void strike(TableState<S>& state, int ball_id, const CueStrike<S>& strike) const;
   /// Lets fall the balls held in the air (Motion::Held) on state.balls[index], and any held on
-  /// them in turn, at state.time; with index -1, every held ball (after an edit that may have
-  /// moved or taken away their supports). They are held again, a few events later, if their
-  /// supports still hold them. Returns their indices. strike calls it for the struck ball.
+  /// them in turn, at state.time. They are held again, a few events later, if their supports
+  /// still hold them. Returns their indices. strike calls it for the struck ball.
   std::vector<int> letHeldBallsFallOff(TableState<S>& state, int index) const;
+  /// Lets every held ball fall at state.time (after an edit that may have moved or taken away
+  /// their supports, or new parameters). Returns their indices.
+  std::vector<int> letAllHeldBallsFall(TableState<S>& state) const;
 
   /// Empty if the state is valid on this table: finite numbers, unique ids, balls in play on
   /// the cloth, clear of cushions and pockets, and no two overlapping (tolerance in metres).

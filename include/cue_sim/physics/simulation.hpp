@@ -111,7 +111,7 @@ private:
   /// After an edit: a new shot for the event limit, and the next event and motion found again.
   void edited();
   /// After a placement or a removal: every ball held in the air falls, to be held again if its
-  /// supports still hold it (Engine::letHeldBallsFallOff).
+  /// supports still hold it (Engine::letAllHeldBallsFall).
   void letHeldBallsFall();
   void refresh();
 

@@ -86,24 +86,30 @@ void Engine<S>::strike(TableState<S>& state, int ball_id, const CueStrike<S>& st
 template <typename S>
 std::vector<int> Engine<S>::letHeldBallsFallOff(TableState<S>& state, int index) const
 {
-  std::vector<int> all, fallen;
+  std::vector<int> all(state.balls.size()), fallen;
+  for (std::size_t j = 0; j < all.size(); ++j)
+    all[j] = static_cast<int>(j);
+  // Each ball that falls may hold others up in turn (a stack).
+  letHeldBallsFall(state, index, state.time, params_, all, fallen);
+  for (std::size_t k = 0; k < fallen.size(); ++k)
+    letHeldBallsFall(state, fallen[k], state.time, params_, all, fallen);
+  return fallen;
+}
+
+template <typename S>
+std::vector<int> Engine<S>::letAllHeldBallsFall(TableState<S>& state) const
+{
+  std::vector<int> fallen;
   for (std::size_t j = 0; j < state.balls.size(); ++j)
   {
-    all.push_back(static_cast<int>(j));
     Ball<S>& ball = state.balls[j];
-    if (index < 0 && ball.held())
+    if (ball.held())
     {
       ball.motion = Motion::Airborne;
       ball.time = std::max(ball.time, state.time);
       fallen.push_back(static_cast<int>(j));
     }
   }
-  if (index < 0)
-    return fallen;
-  // Each ball that falls may hold others up in turn (a stack).
-  letHeldBallsFall(state, index, state.time, params_, all, fallen);
-  for (std::size_t k = 0; k < fallen.size(); ++k)
-    letHeldBallsFall(state, fallen[k], state.time, params_, all, fallen);
   return fallen;
 }
 

@@ -188,14 +188,14 @@ void Simulation<S>::remove(int ball_id)
 template <typename S>
 void Simulation<S>::letHeldBallsFall()
 {
-  for (int j : engine_->letHeldBallsFallOff(state_, -1))
+  for (int j : engine_->letAllHeldBallsFall(state_))
     search_->ballChanged(state_, j);
 }
 
 template <typename S>
 void Simulation<S>::setEngine(std::shared_ptr<const Engine<S>> engine)
 {
-  engine->letHeldBallsFallOff(state_, -1);  // what holds a ball may not hold it under new parameters
+  engine->letAllHeldBallsFall(state_);  // what holds a ball may not hold it under new parameters
   search_ = std::make_unique<EventSearch<S>>(*engine, state_);
   engine_ = std::move(engine);
   edited();
