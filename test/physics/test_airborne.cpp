@@ -914,6 +914,14 @@ TableState<double> pyramidOfFour(double R)
   s.balls.push_back(inTheAir(3, 0.0, 0.0, 2 * R * std::sqrt(2.0 / 3.0)));
   return s;
 }
+
+/// The default physics on the seven-foot table with the cloth's rolling resistance `mu_roll`.
+Engine<double> sevenFootWithRollingResistance(double mu_roll)
+{
+  PhysicsParams<double> p;
+  p.mu_roll = mu_roll;
+  return Engine<double>(sevenFoot(), p);
+}
 }  // namespace
 
 // Balls left at rest on their supports in the air (doc/physics.md, "Balls in the air"). A ball
@@ -1050,11 +1058,8 @@ TEST(SupportsInTheAir, ABallOnASquareAgainstACushionPushesItsBaseAlongTheCushion
 // or on the cloth, at rest, with no energy made and no overlap at any event.
 TEST(SupportsInTheAir, APyramidWhoseBaseBallRollsUnderItsTopComesToRest)
 {
-  const auto table = sevenFoot();
-  PhysicsParams<double> p;
-  p.mu_roll = 0.3;
-  const Engine<double> engine(table, p);
-  const double R = p.ball_radius, height = R + 2 * R * std::sqrt(2.0 / 3.0);
+  const Engine<double> engine = sevenFootWithRollingResistance(0.3);
+  const double R = engine.params().ball_radius, height = R + 2 * R * std::sqrt(2.0 / 3.0);
   for (const auto& [speed, direction] : {std::pair<double, double>{0.002, 1.5707963267948966}, {0.05, 0.0}})
   {
     SCOPED_TRACE("base ball rolling at " + std::to_string(speed) + " m/s at " + std::to_string(direction) + " rad");
@@ -1080,11 +1085,8 @@ TEST(SupportsInTheAir, APyramidWhoseBaseBallRollsUnderItsTopComesToRest)
 // onto the pile, it comes to rest on it the same way.
 TEST(SupportsInTheAir, APyramidOnAClothThatHoldsItsBaseStandsUntilABaseBallIsStruck)
 {
-  const auto table = sevenFoot();
-  PhysicsParams<double> p;
-  p.mu_roll = 1.0;
-  const Engine<double> engine(table, p);
-  const double R = p.ball_radius, height = R + 2 * R * std::sqrt(2.0 / 3.0);
+  const Engine<double> engine = sevenFootWithRollingResistance(1.0);
+  const double R = engine.params().ball_radius, height = R + 2 * R * std::sqrt(2.0 / 3.0);
   TableState<double> s = pyramidOfFour(R);
   EXPECT_LT(runChecked(engine, s, 2).size(), 100u);
   simulateToRest(engine, s);

@@ -169,8 +169,9 @@ bool EventResolver<S>::slideAfterMovingSupports(int index, const std::vector<Sup
   std::vector<Vec3<S>> normals;
   for (const Support& s : supports)
   {
-    (movingAway(s, ball) ? leaving : staying).push_back(s);
-    if (!movingAway(s, ball))
+    const bool away = movingAway(s, ball);
+    (away ? leaving : staying).push_back(s);
+    if (!away)
       normals.push_back(s.normal);
   }
   Vec3<S> down;
