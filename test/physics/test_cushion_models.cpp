@@ -266,6 +266,60 @@ TEST(CushionModels, ARigidCushionsReboundScalesWithTheSpeed)
   }
 }
 
+TEST(CushionModels, ARigidCushionsReboundScalesDownToSpeedsNearRounding)
+{
+  // The same down to a ball pressed on a cushion at a picometre a second, which a held ball's
+  // rounding makes: no threshold of the models may stand in for the impact's own scale.
+  for (const std::string& name : cushionModelNames())
+    for (const double scale : {1e-6, 1e-9, 1e-12})
+    {
+      const PhysicsParams<double> p = papersBall();
+      const auto model = makeCushionModel<double>(name);
+      Ball<double> unit = incoming(1.0, 35 * kDeg, 1.5, -0.7, p), small = incoming(scale, 35 * kDeg, 1.5, -0.7, p);
+      model->resolve(unit, kIntoPlay, p);
+      model->resolve(small, kIntoPlay, p);
+      EXPECT_NEAR((small.v / scale - unit.v).norm(), 0, 1e-6) << name << " at " << scale;
+      EXPECT_NEAR(p.ball_radius * (small.w / scale - unit.w).norm(), 0, 1e-6) << name << " at " << scale;
+    }
+}
+
+TEST(MathavanCushion, FrictionsCoupledTooStronglyToSweepAreStillCoulombs)
+{
+  // A big ball (R = 0.24 m) with a nose at 1.36 R, mu = 2.15 at the nose and 0.99 on the cloth,
+  // from the soak (seed 8): the nose's sticking friction loads the cloth's sliding one so hard
+  // that sweeping the two in turn never settles. The impact must still be Coulomb's: within
+  // its tolerance of the long-double impact at 1e-10, and the same at every speed scale.
+  PhysicsParams<double> p = papersBall();
+  p.ball_radius = 0.24142832520196955;
+  p.ball_mass = 0.170097;
+  p.cushion_height = 0.32821915014929853;
+  p.e_cushion_work = 0.00025078668085709485;
+  p.mu_cushion = 2.1540814331818101;
+  p.mu_slide = 0.99199058548346786;
+  p.cushion_impact_tolerance = 1e-5;
+  PhysicsParams<long double> pl = p.cast<long double>();
+  pl.cushion_impact_tolerance = 1e-10;
+  const Vec3<double> v(0.2014, -0.4331, 0), w(1.79, 0.834, 0.25), into_play(0, 1, 0);
+  Ball<long double> reference;
+  reference.r = Vec3<long double>(0, 0, pl.ball_radius);
+  reference.v = v.cast<long double>();
+  reference.w = w.cast<long double>();
+  makeCushionModel<long double>("mathavan2010")->resolve(reference, into_play.cast<long double>(), pl);
+  const double speed_scale = v.norm() + p.ball_radius * w.norm();
+  for (const double scale : {1.0, 1e-12})
+  {
+    Ball<double> b;
+    b.r = Vec3<double>(0, 0, p.ball_radius);
+    b.v = scale * v;
+    b.w = scale * w;
+    makeCushionModel<double>("mathavan2010")->resolve(b, into_play, p);
+    EXPECT_LT((b.v / scale - reference.v.cast<double>()).norm(), 2 * p.cushion_impact_tolerance * speed_scale);
+    EXPECT_LT(p.ball_radius * (b.w / scale - reference.w.cast<double>()).norm(),
+              2 * p.cushion_impact_tolerance * speed_scale);
+    EXPECT_GE(b.v.dot(into_play) / scale, -1e-15);  // it does not close on the cushion beyond rounding
+  }
+}
+
 TEST(CushionModels, AMirroredShotReboundsMirrored)
 {
   // Reflecting the shot in the plane through the cushion's normal (x -> -x) reflects the

@@ -29,7 +29,7 @@ FrictionalImpact<S, Contacts, Bodies>::FrictionalImpact(const Setup& setup)
 template <typename S, int Contacts, int Bodies>
 typename FrictionalImpact<S, Contacts, Bodies>::Vec2 FrictionalImpact<S, Contacts, Bodies>::friction(
     const Eigen::Matrix<S, 2, 2>& stop_per_slip, const Vec2& slip_from, const Vec2& slip_without, const Vec2& sliding,
-    S limit, bool& sticks)
+    S limit, bool& sticks) const
 {
   // It sticks if friction within its limit can stop the slip by the step's end and then hold
   // it against what drives it; a slip friction stops but cannot hold turns (reversalFraction
@@ -40,10 +40,13 @@ typename FrictionalImpact<S, Contacts, Bodies>::Vec2 FrictionalImpact<S, Contact
   if (sticks)
     return stopping;
   // A slip that starts from (nearly) nothing heads where it would go without friction; any
-  // direction it has now is rounding.
+  // direction it has now is rounding. A slip without a direction is one within rounding of
+  // zeroSpeed, or of the impact's own speed scale when that is itself near rounding (a ball
+  // pressed on a cushion at 1e-12 m/s): a fixed floor there would stop friction half way
+  // through every step and the step would be halved to nothing.
   const Vec2& heading = sliding.norm() > S(kUnsettledSlip) * slip_without.norm() ? sliding : slip_without;
   const S speed = heading.norm();
-  if (!(speed > zeroSpeed<S>()))
+  if (!(speed > std::min(zeroSpeed<S>(), S(kWorkRounding) * speed_scale_)))
     return Vec2::Zero();
   return -(limit / speed) * heading;
 }
@@ -75,9 +78,79 @@ typename FrictionalImpact<S, Contacts, Bodies>::Impulses FrictionalImpact<S, Con
       any_sticks = any_sticks || sticks;
     }
     if (!any_sticks || (add - before).norm() <= S(kSweepSettled) * add.norm())
-      break;
+      return add;
   }
-  return add;
+  // The sweeps did not settle: the frictions are coupled too strongly for them to contract
+  // (a sticking contact whose friction loads a sliding one that feeds back into it). Which
+  // contacts stick, slide or are unloaded is then found by trying each, as below.
+  Impulses exact;
+  return solvedContactByContact(start, dp, sliding, exact) ? exact : add;
+}
+
+template <typename S, int Contacts, int Bodies>
+bool FrictionalImpact<S, Contacts, Bodies>::solvedContactByContact(const Slips& start, S dp, const Slips& sliding,
+                                                                   Impulses& solved) const
+{
+  // Given what each contact does, its friction is linear in the step's impulses: a sticking
+  // contact's slip ends at zero, a sliding one's friction is mu times its load against its
+  // heading, an unloaded one has none. Each assignment is one linear system; the first whose
+  // answer friction() gives back, contact by contact, is Coulomb's.
+  constexpr int kFrictions = 2 * Contacts;
+  int assignments = 1;
+  for (int c = 0; c < Contacts; ++c)
+    assignments *= 3;
+  for (int assignment = 0; assignment < assignments; ++assignment)
+  {
+    Eigen::Matrix<S, kFrictions, kFrictions> a = Eigen::Matrix<S, kFrictions, kFrictions>::Zero();
+    Eigen::Matrix<S, kFrictions, 1> b = Eigen::Matrix<S, kFrictions, 1>::Zero();
+    std::array<ContactDoes, Contacts> does{};
+    for (int c = 0, code = assignment; c < Contacts; ++c, code /= 3)
+    {
+      does[c] = static_cast<ContactDoes>(code % 3);
+      const auto rows = slip_per_impulse_.template middleRows<2>(2 * c);
+      if (does[c] == ContactDoes::kStick)
+      {
+        a.template middleRows<2>(2 * c) = rows.template rightCols<kFrictions>();
+        b.template segment<2>(2 * c) = -start.template segment<2>(2 * c) - dp * rows.col(0);
+        continue;
+      }
+      a.template block<2, 2>(2 * c, 2 * c).setIdentity();
+      const Vec2 heading = sliding.template segment<2>(2 * c);
+      if (does[c] == ContactDoes::kUnloaded || !(heading.norm() > zeroSpeed<S>()))
+        continue;
+      const Vec2 against = (mu_[c] / heading.norm()) * heading;
+      a.template middleRows<2>(2 * c) += against * load_.row(c).template rightCols<kFrictions>();
+      b.template segment<2>(2 * c) = -dp * load_(c, 0) * against;
+    }
+    const Eigen::FullPivLU<Eigen::Matrix<S, kFrictions, kFrictions>> lu(a);
+    if (!lu.isInvertible())
+      continue;
+    solved(0) = dp;
+    solved.template tail<kFrictions>() = lu.solve(b);
+    if (isCoulomb(start, solved, sliding))
+      return true;
+  }
+  return false;
+}
+
+template <typename S, int Contacts, int Bodies>
+bool FrictionalImpact<S, Contacts, Bodies>::isCoulomb(const Slips& start, const Impulses& add,
+                                                      const Slips& sliding) const
+{
+  const S scale = add.norm();
+  for (int c = 0; c < Contacts; ++c)
+  {
+    const auto rows = slip_per_impulse_.template middleRows<2>(2 * c);
+    const Vec2 own = add.template segment<2>(1 + 2 * c);
+    const Vec2 without = start.template segment<2>(2 * c) + rows * add - rows.template middleCols<2>(1 + 2 * c) * own;
+    const S limit = mu_[c] * std::max(S(0), load_.row(c).dot(add));
+    bool sticks = false;
+    const Vec2 coulomb = friction(stop_[c], start.template segment<2>(2 * c), without,
+                                  sliding.template segment<2>(2 * c), limit, sticks);
+    if ((coulomb - own).norm() > S(kCoulombAgreement) * scale)
+      return false;
+  }
+  return true;
 }
 
 template <typename S, int Contacts, int Bodies>

@@ -82,6 +82,9 @@ private:
   /// contract, a few tens reach rounding).
   static constexpr int kMaxFrictionSweeps = 64;
   static constexpr double kSweepSettled = 1e-15;
+  /// A linear solution of a step agrees with Coulomb's law when friction() gives back each of
+  /// its frictions within this share of the step's impulses (rounding of a small solve).
+  static constexpr double kCoulombAgreement = 1e-12;
   /// The first step: this share of the frictionless impulse.
   static constexpr int kFirstSteps = 16;
   /// Steps an impact may take.
@@ -102,6 +105,19 @@ private:
   S frictionlessRate() const { return -approach_per_impulse_(0); }
   /// The impulses one step of normal impulse dp adds, the frictions sliding against `sliding`.
   Impulses pushed(const Impulses& from, S dp, const Slips& sliding) const;
+  /// What a contact's friction does over a step, as solvedContactByContact tries them.
+  enum class ContactDoes
+  {
+    kStick,
+    kSlide,
+    kUnloaded
+  };
+  /// The step's impulses found exactly when the Gauss-Seidel sweeps of pushed() do not settle:
+  /// each assignment of sticking, sliding and unloaded contacts is solved as a linear system and
+  /// kept if friction() agrees with it at every contact. False if none does.
+  bool solvedContactByContact(const Slips& start, S dp, const Slips& sliding, Impulses& solved) const;
+  /// Whether friction() gives back `add`'s frictions at every contact, within kCoulombAgreement.
+  bool isCoulomb(const Slips& start, const Impulses& add, const Slips& sliding) const;
   /// One midpoint step.
   Impulses step(const Impulses& from, S dp) const;
   /// Whether no friction does positive work on the straight way from `from` to `to`.
@@ -115,8 +131,8 @@ private:
   /// Coulomb friction at one contact over a step that starts with `slip_from` and would end with
   /// `slip_without` with no friction there: the impulse that stops the slip if friction within
   /// `limit` can stop it and then hold it, else `limit` against `sliding`. Sets `sticks`.
-  static Vec2 friction(const Eigen::Matrix<S, 2, 2>& stop_per_slip, const Vec2& slip_from, const Vec2& slip_without,
-                       const Vec2& sliding, S limit, bool& sticks);
+  Vec2 friction(const Eigen::Matrix<S, 2, 2>& stop_per_slip, const Vec2& slip_from, const Vec2& slip_without,
+                const Vec2& sliding, S limit, bool& sticks) const;
   /// Whether the closing speed, from `before` to `after` over normal impulse dp, fell slower than
   /// kJammedRate of its frictionless rate.
   bool closingStalls(S before, S after, S dp) const;
