@@ -131,7 +131,11 @@ void EventResolver<S>::resolveAirbornePair(Ball<S>& a, Ball<S>& b)
     Ball<S>& support = a_on_cloth ? a : b;
     const Vec3<S> up = a_on_cloth ? n : Vec3<S>(-n);
     if (!bounceOffBallOnCloth(flying, support, up))
+    {
       impactInAir(a, b, n);
+      const int flying_index = a_on_cloth ? context_.other_index : context_.index;
+      passImpactOnThroughCloth(state_.event_time, flying_index, a_on_cloth ? context_.index : context_.other_index);
+    }
     leaveBallOnCloth(flying, support, up, a_on_cloth ? context_.other_index : context_.index);
   }
   for (Ball<S>* ball : {&a, &b})

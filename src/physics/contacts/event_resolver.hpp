@@ -181,6 +181,10 @@ private:
   /// (brought to it), the pair first.
   std::vector<int> touchingGroup(S time, int first, int second);
   bool resolveLonePair(int first, int second);
+  /// A ball on the cloth (`support`) just struck from the air by `flying` and driven into the
+  /// balls and walls it touches: their impact, then the flying ball's on it again, in turn until
+  /// neither closes (kImpactSweeps); what the flying ball still closes then, it loses.
+  void passImpactOnThroughCloth(S time, int flying, int support);
 
   // sustained_contact.cpp
   bool inSustainedContact(const Ball<S>& a, const Ball<S>& b) const;
