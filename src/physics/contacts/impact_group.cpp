@@ -193,7 +193,10 @@ void EventResolver<S>::passImpactOnThroughCloth(S time, int flying, int support)
   for (int sweep = 0; sweep < kImpactSweeps; ++sweep)
   {
     bool pushed_on = false;
-    for (int j : touchingGroup(time, support, -1))
+    const std::vector<int> group = touchingGroup(time, support, -1);
+    for (int j : group)
+      changed(j);  // brought to `time`: its record is renewed, as a full scan sees it
+    for (int j : group)
     {
       const Ball<S>& on = state_.balls[support];
       if (j != support && (state_.balls[j].r - on.r).template head<2>().norm() <= touching &&
