@@ -182,8 +182,9 @@ private:
   std::vector<int> touchingGroup(S time, int first, int second);
   bool resolveLonePair(int first, int second);
   /// A ball on the cloth (`support`) just struck from the air by `flying` and driven into the
-  /// balls and walls it touches: their impact, then the flying ball's on it again, in turn until
-  /// neither closes (kImpactSweeps); what the flying ball still closes then, it loses.
+  /// balls it touches: their group's impact (and the walls it then still drives it into), then
+  /// the flying ball's on it again, in turn until neither closes (kImpactSweeps); what the
+  /// flying ball still closes then, it loses.
   void passImpactOnThroughCloth(S time, int flying, int support);
 
   // sustained_contact.cpp
