@@ -52,6 +52,19 @@ typename FrictionalImpact<S, Contacts, Bodies>::Vec2 FrictionalImpact<S, Contact
 }
 
 template <typename S, int Contacts, int Bodies>
+typename FrictionalImpact<S, Contacts, Bodies>::Vec2 FrictionalImpact<S, Contacts, Bodies>::frictionAt(
+    int c, const Slips& start, const Impulses& add, const Slips& sliding, bool& sticks) const
+{
+  // The slip at c by the step's end with everything but c's own friction.
+  const auto rows = slip_per_impulse_.template middleRows<2>(2 * c);
+  const Vec2 own = add.template segment<2>(1 + 2 * c);
+  const Vec2 without = start.template segment<2>(2 * c) + rows * add - rows.template middleCols<2>(1 + 2 * c) * own;
+  const S limit = mu_[c] * std::max(S(0), load_.row(c).dot(add));
+  return friction(stop_[c], start.template segment<2>(2 * c), without, sliding.template segment<2>(2 * c), limit,
+                  sticks);
+}
+
+template <typename S, int Contacts, int Bodies>
 typename FrictionalImpact<S, Contacts, Bodies>::Impulses FrictionalImpact<S, Contacts, Bodies>::pushed(
     const Impulses& from, S dp, const Slips& sliding) const
 {
@@ -67,14 +80,8 @@ typename FrictionalImpact<S, Contacts, Bodies>::Impulses FrictionalImpact<S, Con
     bool any_sticks = false;
     for (int c = 0; c < Contacts; ++c)
     {
-      // The slip at c by the step's end with everything but c's own friction.
-      const auto rows = slip_per_impulse_.template middleRows<2>(2 * c);
-      const Vec2 own = add.template segment<2>(1 + 2 * c);
-      const Vec2 without = start.template segment<2>(2 * c) + rows * add - rows.template middleCols<2>(1 + 2 * c) * own;
-      const S limit = mu_[c] * std::max(S(0), load_.row(c).dot(add));
       bool sticks = false;
-      add.template segment<2>(1 + 2 * c) = friction(stop_[c], start.template segment<2>(2 * c), without,
-                                                    sliding.template segment<2>(2 * c), limit, sticks);
+      add.template segment<2>(1 + 2 * c) = frictionAt(c, start, add, sliding, sticks);
       any_sticks = any_sticks || sticks;
     }
     if (!any_sticks || (add - before).norm() <= S(kSweepSettled) * add.norm())
@@ -140,14 +147,9 @@ bool FrictionalImpact<S, Contacts, Bodies>::isCoulomb(const Slips& start, const 
   const S scale = add.norm();
   for (int c = 0; c < Contacts; ++c)
   {
-    const auto rows = slip_per_impulse_.template middleRows<2>(2 * c);
-    const Vec2 own = add.template segment<2>(1 + 2 * c);
-    const Vec2 without = start.template segment<2>(2 * c) + rows * add - rows.template middleCols<2>(1 + 2 * c) * own;
-    const S limit = mu_[c] * std::max(S(0), load_.row(c).dot(add));
     bool sticks = false;
-    const Vec2 coulomb = friction(stop_[c], start.template segment<2>(2 * c), without,
-                                  sliding.template segment<2>(2 * c), limit, sticks);
-    if ((coulomb - own).norm() > S(kCoulombAgreement) * scale)
+    if ((frictionAt(c, start, add, sliding, sticks) - add.template segment<2>(1 + 2 * c)).norm() >
+        S(kCoulombAgreement) * scale)
       return false;
   }
   return true;

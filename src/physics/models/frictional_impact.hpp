@@ -118,6 +118,9 @@ private:
   bool solvedContactByContact(const Slips& start, S dp, const Slips& sliding, Impulses& solved) const;
   /// Whether friction() gives back `add`'s frictions at every contact, within kCoulombAgreement.
   bool isCoulomb(const Slips& start, const Impulses& add, const Slips& sliding) const;
+  /// Contact c's Coulomb friction (friction()) over a step that starts from slips `start` and
+  /// takes impulses `add`, with the other contacts' frictions as `add` has them.
+  Vec2 frictionAt(int c, const Slips& start, const Impulses& add, const Slips& sliding, bool& sticks) const;
   /// One midpoint step.
   Impulses step(const Impulses& from, S dp) const;
   /// Whether no friction does positive work on the straight way from `from` to `to`.
