@@ -4,6 +4,7 @@
 // position and in velocity), the step is then redone exactly to the event, and the event is
 // resolved with the engine's own models.
 #include <array>
+#include <limits>
 
 #include "evaluation/stepper_model.hpp"
 
@@ -13,30 +14,31 @@ namespace physics
 {
 namespace
 {
-/// One ball's state for the integrator: r_xy, v_xy, w.
-using BallVector = Eigen::Matrix<double, 7, 1>;
+/// One ball's state for the integrator: r, v, w. A ball on the cloth keeps z = R and v_z = 0, and
+/// those two do not count in its error (a ball in the air's do).
+using BallVector = Eigen::Matrix<double, 9, 1>;
+constexpr int kHeight = 2, kVerticalSpeed = 5;
 
 BallVector pack(const Ball<double>& b)
 {
   BallVector y;
-  y << b.r.x(), b.r.y(), b.v.x(), b.v.y(), b.w.x(), b.w.y(), b.w.z();
+  y << b.r, b.v, b.w;
   return y;
 }
 
 void unpack(const BallVector& y, Ball<double>& b)
 {
-  b.r.x() = y[0];
-  b.r.y() = y[1];
-  b.v = Vec3<double>(y[2], y[3], 0);
-  b.w = Vec3<double>(y[4], y[5], y[6]);
+  b.r = y.segment<3>(0);
+  b.v = y.segment<3>(3);
+  b.w = y.segment<3>(6);
 }
 
 BallVector rate(const StepperModel& m, Motion motion, const BallVector& y)
 {
   Vec3<double> dv, dw;
-  m.derivative(motion, Vec3<double>(y[2], y[3], 0), Vec3<double>(y[4], y[5], y[6]), dv, dw);
+  m.derivative(motion, y.segment<3>(3), y.segment<3>(6), dv, dw);
   BallVector f;
-  f << y[2], y[3], dv.x(), dv.y(), dw.x(), dw.y(), dw.z();
+  f << y.segment<3>(3), dv, dw;
   return f;
 }
 
@@ -84,8 +86,10 @@ Step takeStep(const StepperModel& m, const std::vector<Ball<double>>& balls, dou
       error += h * e[s] * k[s];
     }
     if (b.moving())
-      for (int i = 0; i < 7; ++i)
+      for (int i = 0; i < 9; ++i)
       {
+        if (!b.airborne() && (i == kHeight || i == kVerticalSpeed))
+          continue;
         const double scale = tolerance * (1 + std::max(std::abs(y0[i]), std::abs(y1[i])));
         sum += (error[i] / scale) * (error[i] / scale);
         ++count;
@@ -108,8 +112,18 @@ BallVector denseOutput(const BallVector& y0, const BallVector& y1, const BallVec
   return h00 * y0 + h10 * h * f0 + h01 * y1 + h11 * h * f1;
 }
 
+/// The landing's event function: the centre's height above R, a ball at R and rising counting as
+/// just above it. A hop that begins at a step's start and ends within its first probe is then
+/// bracketed from the start, and found.
+double heightAboveSlate(const BallVector& y, double R)
+{
+  const double above = y[kHeight] - R;
+  return above == 0 && y[kVerticalSpeed] > 0 ? std::numeric_limits<double>::denorm_min() : above;
+}
+
 /// Event functions at one instant, each positive until its event happens: slip, roll and spin
-/// reversals, and every gap to a cushion, jaw, pocket or ball. Each is watched on its own: one
+/// reversals, a landing on the slate, and every gap to a cushion, jaw, pocket or ball (in three
+/// dimensions). Each is watched on its own: one
 /// just resolved (a gap a rounding below zero) must not hide another.
 std::vector<double> eventFunctions(const StepperModel& m, const std::vector<Ball<double>>& start,
                                    const std::vector<BallVector>& y)
@@ -122,10 +136,11 @@ std::vector<double> eventFunctions(const StepperModel& m, const std::vector<Ball
     if (!b0.inPlay())
       continue;
     const Vec2<double> r(y[i][0], y[i][1]);
-    const Vec3<double> v(y[i][2], y[i][3], 0), w(y[i][4], y[i][5], y[i][6]);
+    const Vec3<double> v = y[i].segment<3>(3), w = y[i].segment<3>(6);
     g.push_back(b0.motion == Motion::Sliding ? slipVelocity(v, w, R).dot(slipVelocity(b0.v, b0.w, R)) : 1.0);
     g.push_back(b0.motion == Motion::Rolling ? v.dot(b0.v) : 1.0);
     g.push_back(b0.moving() && b0.w.z() != 0 ? w.z() * b0.w.z() : 1.0);
+    g.push_back(b0.airborne() ? heightAboveSlate(y[i], R) : 1.0);
     if (!b0.translating())
       continue;
     for (const auto& seg : m.table->segments())
@@ -139,7 +154,7 @@ std::vector<double> eventFunctions(const StepperModel& m, const std::vector<Ball
       g.push_back((r - pocket.centre).norm() - pocket.radius);
     for (std::size_t j = 0; j < start.size(); ++j)
       if (j != i && start[j].inPlay())
-        g.push_back((r - Vec2<double>(y[j][0], y[j][1])).norm() - 2 * R);
+        g.push_back((y[i].segment<3>(0) - y[j].segment<3>(0)).norm() - 2 * R);
   }
   return g;
 }
@@ -216,7 +231,11 @@ StepperReport runDormandPrince(const StepperModel& m, const StepperOptions& opti
         unpack(
             event_fraction > 0 ? denseOutput(y0[i], step.y1[i], step.f0[i], step.f1[i], h, event_fraction) : step.y1[i],
             balls[i]);
-        balls[i].r.z() = m.p.ball_radius;
+        if (!balls[i].airborne())
+        {
+          balls[i].r.z() = m.p.ball_radius;
+          balls[i].v.z() = 0;
+        }
       }
     t += taken;
     m.switchStates(balls, before, report);

@@ -6,10 +6,11 @@
 #include <memory>
 #include <vector>
 
+#include "cue_sim/evaluation/time_stepping.hpp"
 #include "cue_sim/physics/collision_models.hpp"
 #include "cue_sim/physics/motion.hpp"
 #include "cue_sim/physics/table_model.hpp"
-#include "cue_sim/evaluation/time_stepping.hpp"
+#include "physics/models/ball_table/slate_landing.hpp"
 
 namespace cue_sim
 {
@@ -21,6 +22,8 @@ struct StepperModel
   PhysicsParams<double> p;
   std::unique_ptr<BallBallModel<double>> ball_ball;
   std::unique_ptr<CushionModel<double>> cushion;
+  std::unique_ptr<BallTableModel<double>> ball_table;
+  std::unique_ptr<BallBallModel<double>> ball_ball_in_air;  ///< set when ball_ball needs both balls on the cloth
 
   /// dv/dt and dw/dt of one ball in the given motion state, with the friction direction taken
   /// from this very velocity and spin: the non-smooth force law itself.
@@ -29,6 +32,11 @@ struct StepperModel
     dv.setZero();
     dw.setZero();
     const double R = p.ball_radius;
+    if (motion == Motion::Airborne)
+    {
+      dv.z() = -p.gravity;  // flight: gravity alone, the spin carried (src/physics/models/flight.hpp)
+      return;
+    }
     if (motion == Motion::Sliding)
     {
       const Vec3<double> u = slipVelocity(v, w, R);
@@ -116,8 +124,11 @@ struct StepperModel
         b.v += h / 6 * (k_v[0] + 2 * k_v[1] + 2 * k_v[2] + k_v[3]);
         b.w += h / 6 * (k_w[0] + 2 * k_w[1] + 2 * k_w[2] + k_w[3]);
       }
-      b.r.z() = p.ball_radius;
-      b.v.z() = 0;
+      if (!b.airborne())
+      {
+        b.r.z() = p.ball_radius;
+        b.v.z() = 0;
+      }
     }
   }
 
@@ -151,6 +162,9 @@ struct StepperModel
   }
 
   /// Contacts found by overlap at the end of the step, resolved there with the engine's models.
+  /// A ball in the air meets the slate and other balls (in three dimensions); it meets cushions,
+  /// jaws and pockets as a ball on the cloth does, so a scene with flight keeps its flights over
+  /// open cloth.
   void resolveContacts(std::vector<Ball<double>>& balls, const std::vector<Ball<double>>& before,
                        StepperReport& report) const
   {
@@ -160,6 +174,12 @@ struct StepperModel
       Ball<double>& b = balls[i];
       if (!b.inPlay())
         continue;
+      if (b.airborne() && b.r.z() <= R && b.v.z() < 0)
+      {
+        report.max_overlap = std::max(report.max_overlap, R - b.r.z());
+        landOnSlate(b, *ball_table, p);  // the engine's impact and its rule that ends the bounces
+        ++report.collisions;
+      }
       const Vec2<double> c = b.r.head<2>();
       for (std::size_t k = 0; k < table->pockets().size(); ++k)
         if ((c - table->pockets()[k].centre).norm() < table->pockets()[k].radius)
@@ -209,12 +229,19 @@ struct StepperModel
         Ball<double>& b = balls[j];
         if (!a.inPlay() || !b.inPlay() || (!a.moving() && !b.moving()))
           continue;
-        const Vec2<double> d = b.r.head<2>() - a.r.head<2>();
+        const Vec3<double> d = b.r - a.r;
         const double distance = d.norm();
-        if (distance < 2 * R && (a.v - b.v).head<2>().dot(d) > 0)
+        if (distance < 2 * R && (a.v - b.v).dot(d) > 0)
         {
           report.max_overlap = std::max(report.max_overlap, 2 * R - distance);
-          ball_ball->resolve(a, b, p);
+          const bool a_on_cloth = !a.airborne(), b_on_cloth = !b.airborne();
+          (ball_ball_in_air && !(a_on_cloth && b_on_cloth) ? *ball_ball_in_air : *ball_ball).resolve(a, b, p);
+          // The cloth takes the vertical part of the impulse on a ball that is on it, as in the
+          // engine (whose further impulses of a tilted meeting these steppers leave out).
+          if (a_on_cloth)
+            a.v.z() = 0;
+          if (b_on_cloth)
+            b.v.z() = 0;
           settleMotion(a, R);
           settleMotion(b, R);
           ++report.collisions;
@@ -223,8 +250,8 @@ struct StepperModel
         {
           // Passed through each other within the step: closest approach of the straight
           // chord between the two step ends.
-          const Vec2<double> d0 = before[j].r.head<2>() - before[i].r.head<2>();
-          const Vec2<double> e = d - d0;
+          const Vec3<double> d0 = before[j].r - before[i].r;
+          const Vec3<double> e = d - d0;
           const double s = e.squaredNorm() > 0 ? std::clamp(-d0.dot(e) / e.squaredNorm(), 0.0, 1.0) : 0.0;
           if ((d0 + s * e).norm() < 2 * R && d0.norm() >= 2 * R)
             report.tunnelled = true;
@@ -236,7 +263,11 @@ struct StepperModel
   {
     double e = 0;
     for (const auto& b : balls)
+    {
       e += kineticEnergy(b, p);
+      if (b.airborne())  // and its height's: a falling ball gains speed, not energy
+        e += p.ball_mass * p.gravity * (b.r.z() - p.ball_radius);
+    }
     return e;
   }
 };

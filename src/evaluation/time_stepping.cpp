@@ -38,6 +38,9 @@ TimeStepper::TimeStepper(std::shared_ptr<const TableModel> table, const PhysicsP
   impl->model.p = params;
   impl->model.ball_ball = makeBallBallModel<double>(models.ball_ball);
   impl->model.cushion = makeCushionModel<double>(models.cushion);
+  impl->model.ball_table = makeBallTableModel<double>(models.ball_table);
+  if (impl->model.ball_ball->needsCloth())  // as the engine does: a pair in the air meets by the default model
+    impl->model.ball_ball_in_air = makeBallBallModel<double>(ballBallModelNames().front());
   impl->options = options;
   if (!(options.step > 0))
     throw std::invalid_argument("StepperOptions::step must be > 0");

@@ -1,10 +1,27 @@
 // The accuracy criteria of the work-precision report, checked quickly in CI (no timings).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <limits>
+
 #include "cue_sim/evaluation/work_precision.hpp"
+#include "cue_sim/physics/motion.hpp"
 
 using namespace cue_sim::evaluation;
 using cue_sim::physics::Integrator;
+
+namespace
+{
+/// The balls' kinetic energy, and the potential of those in the air above the cloth [J].
+double startingEnergy(const ShotScene& scene)
+{
+  double energy = 0;
+  for (const auto& b : scene.state.balls)
+    energy += cue_sim::physics::kineticEnergy(b, scene.params) +
+              scene.params.ball_mass * scene.params.gravity * (b.r.z() - scene.params.ball_radius);
+  return energy;
+}
+}  // namespace
 
 TEST(Accuracy, EventEngineIsWithinOneNanometreOfTheLongDoubleReferenceOnSingleShots)
 {
@@ -48,7 +65,13 @@ TEST(Accuracy, DormandPrinceWithLocatedEventsConvergesWithItsTolerance)
     EXPECT_LT(tight.max_error, 1e-6) << scene.name;
     EXPECT_LT(tight.max_error, loose.max_error / 100) << scene.name;
     EXPECT_LT(tight.stepper.max_overlap, 1e-12) << scene.name;
-    EXPECT_LE(tight.stepper.energy_gain, 0.0) << scene.name;
+    // Friction only takes energy: on the cloth none is gained at all. Flight keeps it exactly, so
+    // there the kinetic and potential energy's sum may round up by a few ulps of it.
+    if (std::none_of(scene.state.balls.begin(), scene.state.balls.end(), [](const auto& b) { return b.airborne(); }))
+      EXPECT_LE(tight.stepper.energy_gain, 0.0) << scene.name;
+    else
+      EXPECT_LE(tight.stepper.energy_gain, 16 * std::numeric_limits<double>::epsilon() * startingEnergy(scene))
+          << scene.name;
   }
 }
 

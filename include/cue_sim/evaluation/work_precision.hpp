@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "cue_sim/physics/engine.hpp"
 #include "cue_sim/evaluation/time_stepping.hpp"
+#include "cue_sim/physics/engine.hpp"
 
 namespace cue_sim
 {
@@ -24,8 +24,9 @@ struct ShotScene
   physics::TableState<double> state;
 };
 
-/// single ball sliding to rest, stun cut shot, draw shot off a cushion, 9-ball break, 8-ball
-/// break; all on the 7-ft table with the default models.
+/// single ball sliding to rest, stun cut shot, draw shot off a cushion, a jump shot with draw over a
+/// ball (the sequential cue: it flies and bounces on the slate), 9-ball break, 8-ball break; all on
+/// the 7-ft table with the default contact models.
 std::vector<ShotScene> workPrecisionScenes();
 
 /// The extreme cases of the stability report, for the time-steppers: stiff friction (mu_s =
@@ -34,12 +35,12 @@ std::vector<ShotScene> workPrecisionScenes();
 /// Newton's cradle, a ball at 1e-9 m/s.
 std::vector<ShotScene> stabilityScenes();
 
-/// Ball centres (xy) at each sample time, in the order of the scene's balls. Pocketed balls
-/// are at their pocket's centre.
+/// Ball centres (x, y, z) at each sample time, in the order of the scene's balls. Pocketed balls
+/// are at their pocket's centre, z = 0.
 struct Samples
 {
   std::vector<double> times;
-  std::vector<std::vector<Eigen::Vector2d>> positions;
+  std::vector<std::vector<Eigen::Vector3d>> positions;
 };
 
 /// The same shot in the long-double event engine, sampled every `interval` seconds until every
