@@ -17,6 +17,8 @@ set title 'stun cut shot' noenhanced
 plot for [m in 'event symplectic_euler rk4 dopri54'] 'doc/work_precision/results.csv' using (strcol(1) eq 'stun cut shot' && strcol(2) eq m ? $4 : 1/0):($5 > 0 ? $5 : 1e-17) with linespoints pointsize 1.5 title m
 set title 'draw shot off a cushion' noenhanced
 plot for [m in 'event symplectic_euler rk4 dopri54'] 'doc/work_precision/results.csv' using (strcol(1) eq 'draw shot off a cushion' && strcol(2) eq m ? $4 : 1/0):($5 > 0 ? $5 : 1e-17) with linespoints pointsize 1.5 title m
+set title 'jump shot with draw over a ball' noenhanced
+plot for [m in 'event symplectic_euler rk4 dopri54'] 'doc/work_precision/results.csv' using (strcol(1) eq 'jump shot with draw over a ball' && strcol(2) eq m ? $4 : 1/0):($5 > 0 ? $5 : 1e-17) with linespoints pointsize 1.5 title m
 set title '9-ball break' noenhanced
 plot for [m in 'event symplectic_euler rk4 dopri54'] 'doc/work_precision/results.csv' using (strcol(1) eq '9-ball break' && strcol(2) eq m ? $4 : 1/0):($5 > 0 ? $5 : 1e-17) with linespoints pointsize 1.5 title m
 set title '8-ball break' noenhanced
