@@ -190,12 +190,13 @@ void EventResolver<S>::passImpactOnThroughCloth(S time, int flying, int support)
   // shot 1794: hundreds of thousands of events). As in an impact group, the push goes on at
   // once; the flying ball is no part of the group, so the two impacts take turns.
   const S touching = S(2) * params_.ball_radius + S(kTouchingSlack);
+  // The balls on the cloth touching the support: the impulses move none of them, nor lift any.
+  const std::vector<int> group = touchingGroup(time, support, -1);
+  for (int j : group)
+    changed(j);  // brought to `time`: its record is renewed, as a full scan sees it
   for (int sweep = 0; sweep < kImpactSweeps; ++sweep)
   {
     bool pushed_on = false;
-    const std::vector<int> group = touchingGroup(time, support, -1);
-    for (int j : group)
-      changed(j);  // brought to `time`: its record is renewed, as a full scan sees it
     for (int j : group)
     {
       const Ball<S>& on = state_.balls[support];
