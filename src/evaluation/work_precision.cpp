@@ -50,14 +50,15 @@ double median(std::vector<double> v)
   return v[v.size() / 2];
 }
 
-/// A ball's centre for comparison: pocketed balls count as at their pocket's centre on the cloth.
+/// A ball's centre for comparison: pocketed balls count as at their pocket's centre on the cloth
+/// (z = R), so that a shot on the cloth is compared in the plane alone.
 template <typename S>
-Eigen::Vector3d where(const Ball<S>& b, const TableModel& table)
+Eigen::Vector3d where(const Ball<S>& b, const ShotScene& scene)
 {
   if (b.motion == Motion::Pocketed && b.pocket >= 0)
   {
-    const Vec2<double>& centre = table.pockets()[b.pocket].centre;
-    return Eigen::Vector3d(centre.x(), centre.y(), 0.0);
+    const Vec2<double>& centre = scene.table->pockets()[b.pocket].centre;
+    return Eigen::Vector3d(centre.x(), centre.y(), scene.params.ball_radius);
   }
   return b.r.template cast<double>();
 }
@@ -204,7 +205,7 @@ Samples referenceRun(const ShotScene& scene, double interval, double max_time)
     out.times.push_back(t);
     std::vector<Eigen::Vector3d> row;
     for (std::size_t i = 0; i < state.balls.size(); ++i)
-      row.push_back(where(engine.ballAt(state, i, static_cast<long double>(t)), *scene.table));
+      row.push_back(where(engine.ballAt(state, i, static_cast<long double>(t)), scene));
     out.positions.push_back(row);
   }
   return out;
@@ -249,7 +250,7 @@ MethodResult runEventEngine(const ShotScene& scene, const Samples& reference, in
     advance(engine, state, t);
     std::vector<Eigen::Vector3d> row;
     for (std::size_t i = 0; i < state.balls.size(); ++i)
-      row.push_back(where(engine.ballAt(state, i, t), *scene.table));
+      row.push_back(where(engine.ballAt(state, i, t), scene));
     run.times.push_back(t);
     run.positions.push_back(row);
   }
@@ -284,7 +285,7 @@ MethodResult runStepper(const ShotScene& scene, const Samples& reference, Integr
     result.stepper = stepper.run(scene.state, reference.times, [&](double t, const std::vector<Ball<double>>& balls) {
       std::vector<Eigen::Vector3d> row;
       for (const auto& b : balls)
-        row.push_back(where(b, *scene.table));
+        row.push_back(where(b, scene));
       this_run.times.push_back(t);
       this_run.positions.push_back(std::move(row));
     });

@@ -36,7 +36,7 @@ std::vector<ShotScene> workPrecisionScenes();
 std::vector<ShotScene> stabilityScenes();
 
 /// Ball centres (x, y, z) at each sample time, in the order of the scene's balls. Pocketed balls
-/// are at their pocket's centre, z = 0.
+/// are at their pocket's centre on the cloth (z = R).
 struct Samples
 {
   std::vector<double> times;
