@@ -26,11 +26,15 @@ public:
   explicit TableClient(const std::string& node = "/table") : node_(node)
   {
     EXPECT_TRUE(ros::service::waitForService(node + "/predict_batch", ros::Duration(kGenerousWait))) << node;
-    strike_ = nh_.serviceClient<cue_sim::Strike>(node + "/strike");
-    predict_ = nh_.serviceClient<cue_sim::Predict>(node + "/predict");
-    predict_batch_ = nh_.serviceClient<cue_sim::PredictBatch>(node + "/predict_batch");
-    rack_ = nh_.serviceClient<cue_sim::Rack>(node + "/rack");
-    strike_cue_ = nh_.serviceClient<cue_sim::StrikeCue>(node + "/strike_cue");
+    // Persistent: each is looked up at the master once, at its first call. A call on a plain
+    // client looks the service up every time, in a single try (roscpp's lookupService does not
+    // retry the master), so any failed exchange with the master on a loaded machine fails the
+    // call at once, with nothing logged: so ~rack failed once in CI (FollowedCueTest, 2026-11-28).
+    strike_ = nh_.serviceClient<cue_sim::Strike>(node + "/strike", true);
+    predict_ = nh_.serviceClient<cue_sim::Predict>(node + "/predict", true);
+    predict_batch_ = nh_.serviceClient<cue_sim::PredictBatch>(node + "/predict_batch", true);
+    rack_ = nh_.serviceClient<cue_sim::Rack>(node + "/rack", true);
+    strike_cue_ = nh_.serviceClient<cue_sim::StrikeCue>(node + "/strike_cue", true);
     state_sub_ = nh_.subscribe<cue_sim::TableState>(node + "/state", 10, [this](const cue_sim::TableStateConstPtr& m) {
       std::lock_guard<std::mutex> lock(mutex_);
       last_state_ = m;
