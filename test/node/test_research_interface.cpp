@@ -620,7 +620,9 @@ TEST_F(ResearchInterfaceTest, AJumpShotFliesInTfWhenTheSequentialCueIsChosen)
   {
     landings += e.kind == cue_sim::Event::BALL_SLATE && e.ball_id == 0;
     if (e.kind == cue_sim::Event::BALL_SLATE)
+    {
       EXPECT_EQ(e.kind_name, "ball_slate");
+    }
   }
   EXPECT_GT(landings, 3);
   // Its first event is its landing, and before it the samples have it beyond the other ball, in
