@@ -263,11 +263,7 @@ struct StepperModel
   {
     double e = 0;
     for (const auto& b : balls)
-    {
-      e += kineticEnergy(b, p);
-      if (b.airborne())  // and its height's: a falling ball gains speed, not energy
-        e += p.ball_mass * p.gravity * (b.r.z() - p.ball_radius);
-    }
+      e += mechanicalEnergy(b, p);  // a falling ball gains speed, not energy
     return e;
   }
 };

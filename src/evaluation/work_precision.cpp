@@ -15,9 +15,14 @@ using namespace physics;
 
 namespace
 {
+/// The bundled 7 ft pool table's playing area, cushion and pocket sizes [m].
+TableModel sevenFoot()
+{
+  return TableModel::pool("7ft", 1.9812, 0.9906, 0.118, 0.137);
+}
+
 ShotScene strikeScene(std::string name, bool single, TableState<double> state, int ball, const CueStrike<double>& cue,
-                      const TableModel& table = TableModel::pool("7ft", 1.9812, 0.9906, 0.118, 0.137),
-                      const ModelChoice& models = ModelChoice())
+                      const TableModel& table = sevenFoot(), const ModelChoice& models = ModelChoice())
 {
   ShotScene scene;
   scene.name = std::move(name);
@@ -105,11 +110,10 @@ std::vector<ShotScene> workPrecisionScenes()
     cue.speed = 2.5;
     cue.theta = M_PI / 4;
     cue.b = -0.3;
-    const TableModel table = TableModel::pool("7ft", 1.9812, 0.9906, 0.118, 0.137);
-    scenes.push_back(
-        strikeScene("jump shot with draw over a ball", true, s, 0, cue, table, ModelChoice("", "", "", "sequential")));
+    scenes.push_back(strikeScene("jump shot with draw over a ball", true, s, 0, cue, sevenFoot(),
+                                 ModelChoice("", "", "", "sequential")));
   }
-  const TableModel table = TableModel::pool("7ft", 1.9812, 0.9906, 0.118, 0.137);
+  const TableModel table = sevenFoot();
   CueStrike<double> cue;
   cue.speed = 8.0;
   scenes.push_back(strikeScene("9-ball break", false, rackLayout<double>("nine", table, R), 0, cue));
@@ -120,7 +124,7 @@ std::vector<ShotScene> workPrecisionScenes()
 std::vector<ShotScene> stabilityScenes()
 {
   const double R = PhysicsParams<double>().ball_radius;
-  const TableModel table = TableModel::pool("7ft", 1.9812, 0.9906, 0.118, 0.137);
+  const TableModel table = sevenFoot();
   std::vector<ShotScene> scenes;
   CueStrike<double> cue;
   cue.speed = 3.0;

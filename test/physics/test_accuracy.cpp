@@ -12,13 +12,11 @@ using cue_sim::physics::Integrator;
 
 namespace
 {
-/// The balls' kinetic energy, and the potential of those in the air above the cloth [J].
 double startingEnergy(const ShotScene& scene)
 {
   double energy = 0;
   for (const auto& b : scene.state.balls)
-    energy += cue_sim::physics::kineticEnergy(b, scene.params) +
-              scene.params.ball_mass * scene.params.gravity * (b.r.z() - scene.params.ball_radius);
+    energy += cue_sim::physics::mechanicalEnergy(b, scene.params);
   return energy;
 }
 }  // namespace

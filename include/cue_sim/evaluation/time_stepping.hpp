@@ -12,7 +12,8 @@
 // ball-table model and its rule that ends a bounce sequence (a rebound slower than kSettleSpeed
 // stays on the cloth). A fixed stepper finds a landing by the ball being below the slate at the
 // end of a step, so a rebound slower than about e g h / (1 + e) comes down again within the next
-// step, faster than it left: at steps above about 0.3 ms (e_table 0.5) its bounces never end.
+// step, faster than it left: its bounces may never end (on the work-precision jump shot, e_table
+// 0.5: at steps of 0.5 ms and more for Euler, 0.2 ms and more for RK4).
 #pragma once
 
 #include <functional>

@@ -73,5 +73,10 @@ EventKind applyTransition(Ball<S>& ball, const PhysicsParams<S>& p);
 template <typename S>
 S kineticEnergy(const Ball<S>& ball, const PhysicsParams<S>& p);
 
+/// Kinetic energy [J], and for a ball in the air (flying or held) the potential of its height
+/// above the cloth, m g (z - R): a falling ball gains speed, not energy.
+template <typename S>
+S mechanicalEnergy(const Ball<S>& ball, const PhysicsParams<S>& p);
+
 }  // namespace physics
 }  // namespace cue_sim

@@ -46,9 +46,7 @@ public:
     {
       balls_.push_back(engine_.ballAt(state, i, t));
       const Ball<double>& b = balls_.back();
-      energy += physics::kineticEnergy(b, engine_.params());
-      if (b.airborne())
-        energy += engine_.params().ball_mass * engine_.params().gravity * (b.r.z() - engine_.params().ball_radius);
+      energy += physics::mechanicalEnergy(b, engine_.params());
     }
     for (const Ball<double>& b : balls_)
       if (!physics::isFinite(b.r) || !physics::isFinite(b.v) || !physics::isFinite(b.w))

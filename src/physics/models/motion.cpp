@@ -249,6 +249,13 @@ S kineticEnergy(const Ball<S>& ball, const PhysicsParams<S>& p)
   return S(0.5) * p.ball_mass * ball.v.squaredNorm() + S(0.5) * inertia * ball.w.squaredNorm();
 }
 
+template <typename S>
+S mechanicalEnergy(const Ball<S>& ball, const PhysicsParams<S>& p)
+{
+  const S kinetic = kineticEnergy(ball, p);
+  return ball.airborne() ? kinetic + p.ball_mass * p.gravity * (ball.r.z() - p.ball_radius) : kinetic;
+}
+
 #define CUE_SIM_INSTANTIATE_MOTION(S)                                                                                  \
   template Vec3<S> slipVelocity(const Vec3<S>&, const Vec3<S>&, S);                                                    \
   template Motion classifyMotion(const Vec3<S>&, const Vec3<S>&, S);                                                   \
@@ -257,7 +264,8 @@ S kineticEnergy(const Ball<S>& ball, const PhysicsParams<S>& p)
   template Ball<S> evolve(const Ball<S>&, S, const PhysicsParams<S>&);                                                 \
   template Trajectory<S> trajectoryFrom(const Ball<S>&, S, const PhysicsParams<S>&);                                   \
   template EventKind applyTransition(Ball<S>&, const PhysicsParams<S>&);                                               \
-  template S kineticEnergy(const Ball<S>&, const PhysicsParams<S>&);
+  template S kineticEnergy(const Ball<S>&, const PhysicsParams<S>&);                                                   \
+  template S mechanicalEnergy(const Ball<S>&, const PhysicsParams<S>&);
 CUE_SIM_INSTANTIATE_MOTION(double)
 CUE_SIM_INSTANTIATE_MOTION(long double)
 
