@@ -15,7 +15,7 @@ node must rule on every shot as the record says, and leave the cue ball where th
 it stops, exit code 1, at the first shot that differs. The node must run the record's table and
 physics, with execution noise off (~noise/enabled false).
 
-Usage: rosrun cue_sim play_game.py [--rules eight_ball|nine_ball] [--shots N] [--seed S] [--preview]
+Usage: rosrun cue_sim play_game.py [--rules eight_ball|nine_ball|ten_ball] [--shots N] [--seed S] [--preview]
        rosrun cue_sim play_game.py --replay RECORD_DIR
 """
 import argparse
@@ -96,15 +96,38 @@ def score(ruling, shooter, speed):
     return value - speed
 
 
-def best_shot(game, balls, pockets, radius, predict_batch):
+def predicted_rulings(game, tried, predict_batch, call_shot):
+    """The node's prediction of each (shot, ball, pocket). Where only a called pot counts
+    (game.must_call, 10-ball), each aim is predicted under its own call."""
+    if not game.must_call or game.break_shot:
+        batch = predict_batch(shots=[shot for shot, _, _ in tried])
+        return batch.predictions, batch.message
+    predictions, message = [None] * len(tried), ""
+    for aim in sorted({(ball, pocket) for _, ball, pocket in tried}):
+        called = call_shot(ball=aim[0] if aim[1] else -1, pocket=aim[1])
+        if not called.success:
+            raise RuntimeError("the call of ball %d in '%s' is refused: %s" % (aim[0], aim[1], called.message))
+        chosen = [i for i, (_, ball, pocket) in enumerate(tried) if (ball, pocket) == aim]
+        batch = predict_batch(shots=[tried[i][0] for i in chosen])
+        message = message or batch.message
+        for i, p in zip(chosen, batch.predictions):
+            predictions[i] = p
+    return [p for p in predictions if p is not None], message
+
+
+def best_shot(game, balls, pockets, radius, predict_batch, call_shot):
+    """The best (shot, ball, pocket) by its predicted ruling; where only called pots count, the
+    game is left with its call made."""
     tried = candidates(game, balls, pockets, radius)
-    batch = predict_batch(shots=[shot for shot, _, _ in tried])
-    predictions = batch.predictions
-    if not any(p.success for p in predictions):
-        raise RuntimeError("no shot could be predicted: " + (predictions[0].message if predictions else batch.message))
+    predictions, message = predicted_rulings(game, tried, predict_batch, call_shot)
+    if len(predictions) != len(tried) or not any(p.success for p in predictions):
+        raise RuntimeError("no shot could be predicted: " + (predictions[0].message if predictions else message))
     scored = [(score(p.ruling, game.turn, shot.speed), i) for i, (p, (shot, _, _)) in enumerate(zip(predictions, tried))
               if p.success]
-    return tried[max(scored)[1]]
+    chosen = tried[max(scored)[1]]
+    if game.must_call and not game.break_shot:
+        call_shot(ball=chosen[1] if chosen[2] else -1, pocket=chosen[2])
+    return chosen
 
 
 def same_ruling(node, recorded):
@@ -162,7 +185,8 @@ def replay(record_dir, services, game_state, table_state):
 
 def main():
     parser = argparse.ArgumentParser(description="Plays a game of pool on table_node through its services.")
-    parser.add_argument("--rules", default="eight_ball", choices=["eight_ball", "nine_ball"])
+    parser.add_argument("--rules", default="eight_ball",
+                        help="a ruleset the node knows: eight_ball, nine_ball, ten_ball (~start_game refuses others)")
     parser.add_argument("--shots", type=int, default=-1, help="stop after this many shots (default: at the game's end)")
     parser.add_argument("--seed", type=int, default=0, help="the rack's jitter")
     parser.add_argument("--preview", action="store_true", help="at the end, call and preview the next shot")
@@ -192,7 +216,7 @@ def main():
     game = game_state.when(lambda g: g.active and g.rules == args.rules and g.shots == 0 and not g.over)
     while not game.over and (args.shots < 0 or game.shots < args.shots):
         balls = table_state.when(lambda s: not s.moving and s.header.stamp >= game.header.stamp)
-        shot, ball, pocket = best_shot(game, balls, pockets, radius, predict_batch)
+        shot, ball, pocket = best_shot(game, balls, pockets, radius, predict_batch, call_shot)
         shooter = game.players[game.turn]
         struck = strike(ball_id=0, speed=shot.speed, phi=shot.phi)
         if not struck.success:
@@ -208,7 +232,7 @@ def main():
         print(f"game over after {game.shots} shots: {winner} won", flush=True)
     elif args.preview:
         balls = table_state.when(lambda s: not s.moving and s.header.stamp >= game.header.stamp)
-        shot, ball, pocket = best_shot(game, balls, pockets, radius, predict_batch)
+        shot, ball, pocket = best_shot(game, balls, pockets, radius, predict_batch, call_shot)
         # Call what the shot pots first (the aim may pot another ball), except on a break (WPA 3.3).
         pots = [(e.ball_id, e.obstacle) for e in predict(shot=shot).prediction.events
                 if e.kind == Event.POCKETED and e.ball_id != 0]

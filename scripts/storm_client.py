@@ -123,7 +123,7 @@ class Storm:
         if kind == "remove":
             return s["remove_ball"](ball_id=rng.randrange(17)).success
         if kind == "rack":
-            return s["rack"](layout=rng.choice(["eight", "nine", "empty", "ten"]), ids=[], positions=[],
+            return s["rack"](layout=rng.choice(["eight", "nine", "ten", "empty", "eleven"]), ids=[], positions=[],
                              jitter=rng.choice([0.0, 5e-6, 1.0]), seed=rng.randrange(100)).success
         if kind == "reset":
             return s["reset"]().success
@@ -131,7 +131,7 @@ class Storm:
             if rng.random() < 0.4:
                 return s["end_game"]().success
             balls = [] if rng.random() < 0.7 else [ball(rng, i, rng.random() < 0.3) for i in rng.sample(range(16), 4)]
-            return s["start_game"](rules=rng.choice(["eight_ball", "nine_ball", "snooker"]),
+            return s["start_game"](rules=rng.choice(["eight_ball", "nine_ball", "ten_ball", "straight_pool"]),
                                    players=rng.choice([[], ["a", "b"], ["a"], ["", "b"]]),
                                    first_player=rng.choice([0, 1, 7]), seed=rng.randrange(100), balls=balls).success
         if kind == "place_cue":

@@ -176,7 +176,7 @@ class Engine:
                 "ball_table": self._engine.ball_table_model, "cue": self._engine.cue_model}
 
     def rack(self, layout: str = "eight", gap: float = 1e-5, jitter: float = 0.0, seed: int = 0) -> State:
-        """A standard rack ("eight", "nine" or "empty": the cue ball only) with `gap` [m] between
+        """A standard rack ("eight", "nine", "ten" or "empty": the cue ball only) with `gap` [m] between
         neighbouring balls and each ball but the apex moved by up to `jitter` [m] (from `seed`)."""
         return State._of(self._engine.rack(layout, gap, jitter, seed))
 

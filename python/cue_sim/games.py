@@ -1,4 +1,4 @@
-"""Games of 8-ball and 9-ball under the WPA rules, refereed as on the node and in `simulate`."""
+"""Games under the WPA rules (8-ball, 9-ball, 10-ball: rules()), refereed as on the node and in `simulate`."""
 from __future__ import annotations
 
 import json
@@ -38,7 +38,7 @@ class Game:
     """A game on an engine's table: racked for `first_player`'s break (0 or 1), the rack's jitter
     from `seed`, the cue ball in hand behind the head string. Copy it to try shots (copy()).
 
-    rules: "eight_ball" or "nine_ball". The table must have pockets.
+    rules: one of rules() ("eight_ball", "nine_ball", "ten_ball"). The table must have pockets.
     """
 
     def __init__(self, engine: Engine, rules: str = "eight_ball", players: Tuple[str, str] = ("player 1", "player 2"),
@@ -99,5 +99,5 @@ class Game:
 
 
 def rules() -> List[str]:
-    """The rulesets: "eight_ball", "nine_ball"."""
+    """The rulesets (the referee's registry): "eight_ball", "nine_ball", "ten_ball"."""
     return list(_core.rules_names())

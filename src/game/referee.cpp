@@ -51,6 +51,16 @@ std::vector<std::string> rulesNames()
   };
 }
 
+std::string rulesTitle(const std::string& name)
+{
+#define CUE_SIM_RULES(rules_name, title, ...)                                                                          \
+  if (name == #rules_name)                                                                                             \
+    return title;
+#include "cue_sim/game/rulesets.def"
+#undef CUE_SIM_RULES
+  return name;
+}
+
 std::unique_ptr<Rules> makeRules(const std::string& name)
 {
 #define CUE_SIM_RULES(rules_name, ...)                                                                                 \

@@ -117,7 +117,7 @@ Choice PottingPlanner::choose(const GamePlay& game) const
   const auto& table = game.engine().table();
   const double R = game.engine().params().ball_radius;
   const bool in_hand = game.state().ball_in_hand != BallInHand::None;
-  const bool calls = game.state().rules == "eight_ball";
+  const bool calls = game.rules().callsShots();
   const int shooter = game.state().turn;
   Choice best;  // none yet while best_score is -inf
   double best_score = -std::numeric_limits<double>::infinity();

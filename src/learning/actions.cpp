@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "cue_sim/game/referee.hpp"
+
 namespace cue_sim
 {
 namespace learning
@@ -12,7 +14,7 @@ ActionLayout::ActionLayout(const EnvOptions& options)
   : relative_(options.action == "relative"),
     spin_(options.spin),
     place_(isGameTask(options.task)),
-    push_out_(options.task == "nine_ball")
+    push_out_(place_ && game::makeRules(options.task)->pushOutAfterBreak())
 {
   const auto add = [this](const char* name, double low, double high) {
     box_.names.emplace_back(name);

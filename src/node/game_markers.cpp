@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "cue_sim/game/referee.hpp"
 #include "node/table_markers.hpp"
 
 namespace cue_sim
@@ -18,21 +19,17 @@ constexpr double kTextGap = 0.42;
 /// Radius of the ring drawn round a called pocket's centre [m], and its line's width.
 constexpr double kCallRing = 0.08, kCallLine = 0.008;
 
-std::string gameName(const std::string& rules)
-{
-  return rules == "eight_ball" ? "8-ball" : rules == "nine_ball" ? "9-ball" : rules;
-}
-
 std::string statusText(const GameState& s)
 {
   std::ostringstream text;
-  text << gameName(s.rules) << ", shot " << s.shots + 1;
+  text << game::rulesTitle(s.rules) << ", shot " << s.shots + 1;
+  const bool groups = game::makeRules(s.rules)->playsGroups();
   if (s.over)
     text << ": over, " << (s.winner >= 0 ? s.players[static_cast<std::size_t>(s.winner)] + " won" : "no winner");
   for (std::size_t i = 0; i < 2; ++i)
   {
     text << "\n" << (!s.over && s.turn == static_cast<int>(i) ? "> " : "   ") << s.players[i];
-    if (s.rules == "eight_ball")
+    if (groups)
       text << ", " << s.groups[i];
     text << ", fouls " << s.consecutive_fouls[i];
   }

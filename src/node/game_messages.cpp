@@ -64,6 +64,7 @@ GameState toGameStateMsg(const session::LiveTable& table, const ros::Time& stamp
   msg.push_out_called = table.game().pushOutCalled();
   const std::vector<int> legal = play->legalFirst();
   msg.legal_first.assign(legal.begin(), legal.end());
+  msg.must_call = play->rules().mustCall();
   msg.called_ball = state.called_ball;
   if (state.called_pocket >= 0)
     msg.called_pocket = table.table().pockets()[static_cast<std::size_t>(state.called_pocket)].name;

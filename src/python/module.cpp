@@ -101,7 +101,7 @@ StateArrays rack(const Engine<double>& engine, const std::string& layout, double
 {
   const std::vector<std::string> names = physics::rackNames();
   if (std::find(names.begin(), names.end(), layout) == names.end())
-    throw std::invalid_argument("layout must be one of eight, nine, empty; got '" + layout + "'");
+    throw std::invalid_argument("layout must be one of " + physics::rackNamesText() + "; got '" + layout + "'");
   physics::RackOptions options;
   options.gap = gap;
   options.jitter = jitter;

@@ -253,7 +253,12 @@ game::GameState gameFrom(const YAML::Node& node)
             "push_out_allowed"});
   game::GameState g;
   if (!node["rules"])
-    throw SceneError("game needs 'rules' (one of eight_ball, nine_ball)");
+  {
+    std::string known;
+    for (const std::string& n : game::rulesNames())
+      known += (known.empty() ? "" : ", ") + n;
+    throw SceneError("game needs 'rules' (one of " + known + ")");
+  }
   g.rules = text(node["rules"], "game.rules");
   try
   {

@@ -106,7 +106,8 @@ std::string LiveGame::call(const GameCall& call, const physics::TableModel& tabl
   if (const std::string why = table.whyNoPocket(call.pocket, pocket); !why.empty())
     return why;
   if (call.push_out && !game_->state().push_out_allowed)
-    return "push_out: a push-out may be declared only on the shot right after a legal 9-ball break (WPA 9-ball 2.4)";
+    return "push_out: a push-out may be declared only on the shot right after a legal break, in a game that has "
+           "them (9-ball WPA 2.4, 10-ball WPA 9.4)";
   if (const std::string why = game_->call(call.ball, pocket); !why.empty())
     return why;
   push_out_called_ = call.push_out;

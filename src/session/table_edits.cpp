@@ -59,7 +59,7 @@ std::string TableEdits::whyNotRack(const RackRequest& request, const physics::En
       return "ids and positions are for layout 'custom' only";
     const std::vector<std::string> names = physics::rackNames();
     if (std::find(names.begin(), names.end(), request.layout) == names.end())
-      return "layout must be one of eight, nine, empty, custom; got '" + request.layout + "'";
+      return "layout must be one of " + physics::rackNamesText() + ", custom; got '" + request.layout + "'";
     physics::RackOptions options;
     options.gap = rack_gap_;
     options.jitter = request.jitter;

@@ -10,6 +10,7 @@
 
 #include "cue_sim/camera/calibration_file.hpp"
 #include "cue_sim/camera/exposure.hpp"
+#include "cue_sim/physics/rack.hpp"
 #include "cue_sim/session/live_table.hpp"
 #include "cue_sim/table_description/table_catalog.hpp"
 #include "cue_sim/table_description/urdf_table_loader.hpp"
@@ -24,7 +25,7 @@ int main(int argc, char** argv)
   int width = 0, image_height = 0;
   std::string calibration;  // empty: the package's default
   app.add_option("--table", table_name, "a bundled table (7ft, 9ft, carom) or a URDF file");
-  app.add_option("--rack", rack, "eight, nine or empty");
+  app.add_option("--rack", rack, cue_sim::physics::rackNamesText());
   app.add_option("--after-ms", after_ms, "photograph this long after the break's strike; 0: the rack, not struck")
       ->check(CLI::Range(0.0, 60000.0));
   app.add_option("--speed", speed, "the break's cue speed [m/s]")->check(CLI::Range(0.01, 12.0));

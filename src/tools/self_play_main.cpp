@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "cue_sim/game/referee.hpp"
 #include "cue_sim/game/self_play.hpp"
 #include "cue_sim/scene/game_record.hpp"
 #include "cue_sim/table_description/table_catalog.hpp"
@@ -14,13 +15,13 @@
 
 int main(int argc, char** argv)
 {
-  CLI::App app{"Self-play: whole games of 8-ball or 9-ball between two shot planners, refereed."};
-  std::vector<std::string> rules{"eight_ball", "nine_ball"};
+  CLI::App app{"Self-play: whole games of every ruleset between two shot planners, refereed."};
+  std::vector<std::string> rules = cue_sim::game::rulesNames();
   int games = 10, max_shots = 150;
   std::uint64_t seed = 0;
   bool no_noise = false;
   std::string table_name = "7ft", out_dir;
-  app.add_option("--rules", rules, "rulesets to play, each N games")->check(CLI::IsMember({"eight_ball", "nine_ball"}));
+  app.add_option("--rules", rules, "rulesets to play, each N games")->check(CLI::IsMember(cue_sim::game::rulesNames()));
   app.add_option("--games", games, "games of each ruleset")->check(CLI::Range(1, 1000000));
   app.add_option("--seed", seed, "seed of the racks and the execution noise");
   app.add_option("--max-shots", max_shots, "the shot cap: a game not over by then ends without a winner")

@@ -11,69 +11,14 @@
 #include "cue_sim/game/self_play.hpp"
 #include "cue_sim/physics/motion.hpp"
 #include "cue_sim/physics/simulation.hpp"
+#include "game_test_support.hpp"
 
 using namespace cue_sim;
 using namespace cue_sim::game;
-using physics::Ball;
-using physics::CueStrike;
-using physics::Engine;
-using physics::PhysicsParams;
-using physics::TableModel;
-using physics::TableState;
-using physics::Vec3;
+using namespace cue_sim::game::test;
 
 namespace
 {
-std::shared_ptr<const TableModel> sevenFoot()
-{
-  static const auto table = std::make_shared<const TableModel>(TableModel::pool("7ft", 1.9812, 0.9906, 0.118, 0.137));
-  return table;
-}
-
-const Engine<double>& engine()
-{
-  static const Engine<double> e(sevenFoot(), PhysicsParams<double>());
-  return e;
-}
-
-double R()
-{
-  return engine().params().ball_radius;
-}
-
-Ball<double> ball(int id, double x, double y)
-{
-  Ball<double> b;
-  b.id = id;
-  b.r = Vec3<double>(x, y, R());
-  return b;
-}
-
-/// The pocket nearest to p.
-int pocketNear(const Eigen::Vector2d& p)
-{
-  const auto& pockets = engine().table().pockets();
-  int best = 0;
-  for (std::size_t k = 1; k < pockets.size(); ++k)
-    if ((pockets[k].centre - p).norm() < (pockets[static_cast<std::size_t>(best)].centre - p).norm())
-      best = static_cast<int>(k);
-  return best;
-}
-
-/// Plays `balls` (the cue ball among them) with a level centre-ball strike at `speed` towards
-/// `target`, and reads the shot.
-ShotFacts play(const std::vector<Ball<double>>& balls, const Eigen::Vector2d& target, double speed)
-{
-  TableState<double> s;
-  s.balls = balls;
-  const Eigen::Vector2d from = balls.front().r.head<2>();
-  CueStrike<double> cue;
-  cue.speed = speed;
-  cue.phi = std::atan2(target.y() - from.y(), target.x() - from.x());
-  engine().strike(s, 0, cue);
-  return readShot(simulateToRest(engine(), s).events, &engine().table());
-}
-
 GameState eightBallAfterBreak(Group shooter_group)
 {
   GameState s;
@@ -84,11 +29,6 @@ GameState eightBallAfterBreak(Group shooter_group)
                              : shooter_group == Group::Solids ? Group::Stripes
                                                               : Group::Solids};
   return s;
-}
-
-Ruling judge(const GameState& state, const std::vector<int>& on_table, const ShotFacts& facts, bool push_out = false)
-{
-  return judgeShot(*makeRules(state.rules), state, on_table, Shot{facts, push_out});
 }
 }  // namespace
 
@@ -298,7 +238,7 @@ TEST(Referee, NineBallWinsOnTheNineAndSpotsItAfterAFoul)
 
 TEST(Referee, AThirdFoulInARowLoses)
 {
-  for (const std::string rules : {"eight_ball", "nine_ball"})
+  for (const std::string& rules : rulesNames())
   {
     GameState s;
     s.rules = rules;
@@ -366,7 +306,7 @@ TEST(Referee, UnknownRulesAreRefusedWithTheKnownOnes)
   }
   catch (const std::invalid_argument& e)
   {
-    EXPECT_NE(std::string(e.what()).find("eight_ball, nine_ball"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("eight_ball, nine_ball, ten_ball"), std::string::npos) << e.what();
   }
   EXPECT_THROW(GamePlay(Engine<double>(std::make_shared<const TableModel>(TableModel::carom("carom", 2.84, 1.42)),
                                        PhysicsParams<double>()),
@@ -383,7 +323,7 @@ TEST(Referee, RandomGamesConserveBallsStayValidAndEnd)
   std::mt19937 rng(42);
   std::uniform_real_distribution<double> unit(0, 1);
   int games = 0, shots = 0, fouls = 0;
-  for (const std::string rules : {"eight_ball", "nine_ball"})
+  for (const std::string& rules : rulesNames())
     for (int g = 0; g < 150; ++g, ++games)
     {
       GamePlay game(engine(), rules);
@@ -410,6 +350,11 @@ TEST(Referee, RandomGamesConserveBallsStayValidAndEnd)
         {
           const auto& target = game.table().balls[static_cast<std::size_t>(game.table().indexOf(legal.front()))];
           cue.phi = std::atan2(target.r.y() - cue_ball.r.y(), target.r.x() - cue_ball.r.x()) + 0.05 * (unit(rng) - 0.5);
+          // Where only a called ball counts (10-ball), it is called, in a pocket drawn at random.
+          if (game.rules().mustCall() && !game.state().break_shot)
+          {
+            ASSERT_EQ(game.call(legal.front(), static_cast<int>(unit(rng) * 6)), "");
+          }
         }
         const Turn turn = game.shoot(cue, game.state().push_out_allowed && unit(rng) < 0.3);
         fouls += turn.ruling.foul;
@@ -438,7 +383,7 @@ TEST(Referee, RandomGamesConserveBallsStayValidAndEnd)
       }
       EXPECT_TRUE(game.state().over) << rules << " game " << g << " still going after " << n << " shots";
     }
-  EXPECT_EQ(games, 300);
+  EXPECT_EQ(games, 150 * static_cast<int>(rulesNames().size()));
   EXPECT_GT(shots, 2000);
   EXPECT_GT(fouls, 0);
   std::cout << games << " games, " << shots << " shots, " << fouls << " fouls\n";
@@ -448,7 +393,7 @@ TEST(SelfPlay, PlannersFinishTheirGamesWithNoise)
 {
   // The potting planner on both sides, the tournaments' execution noise: every game ends, by a
   // win far more often than by the shot cap, and the tallies add up.
-  for (const std::string rules : {"eight_ball", "nine_ball"})
+  for (const std::string& rules : rulesNames())
   {
     SelfPlayOptions options;
     options.rules = rules;

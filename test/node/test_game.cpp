@@ -453,15 +453,31 @@ TEST(Game, PlannersPlayWholeGamesThroughTheServices)
   ASSERT_TRUE(client.end().success);
 }
 
-// scripts/play_game.py, as the README runs it: a whole game to its end through the services.
-TEST(Game, ThePythonPlayerFinishesAGame)
+/// scripts/play_game.py's output for a whole game of `rules` (seed 5), checked to have started
+/// and ended.
+std::string playedGame(const std::string& rules)
 {
-  const auto [code, output] = runCommand("rosrun cue_sim play_game.py --rules nine_ball --seed 5");
+  const auto [code, output] = runCommand("rosrun cue_sim play_game.py --rules " + rules + " --seed 5");
   EXPECT_EQ(code, 0) << output;
-  EXPECT_NE(output.find("started nine_ball: ann against bob"), std::string::npos) << output;
+  EXPECT_NE(output.find("started " + rules + ": ann against bob"), std::string::npos) << output;
   EXPECT_NE(output.find("shot 1: ann"), std::string::npos) << output;
   EXPECT_NE(output.find("game over after"), std::string::npos) << output;
   std::printf("%s", output.c_str());
+  return output;
+}
+
+// scripts/play_game.py, as the README runs it: a whole game to its end through the services.
+TEST(Game, ThePythonPlayerFinishesAGame)
+{
+  playedGame("nine_ball");
+}
+
+// The same in 10-ball, where only a called ball counts: the player calls each aim before asking
+// for its prediction (~game_state's must_call), and pots called balls.
+TEST(Game, ThePythonPlayerCallsItsShotsInTenBall)
+{
+  const std::string output = playedGame("ten_ball");
+  EXPECT_NE(output.find("(WPA 9.5): the shooter continues"), std::string::npos) << output;
 }
 
 // Self-play's records (the self_play program, execution noise on) replayed on the node with
@@ -473,7 +489,8 @@ TEST(GameReplay, SelfPlayRecordsReplayOnTheNodeWithTheSameRulings)
   std::system(("rm -rf '" + dir + "'").c_str());
   const auto [played, output] = runCommand("rosrun cue_sim self_play --games 2 --seed 4 --out '" + dir + "'");
   ASSERT_EQ(played, 0) << output;
-  for (const std::string game : {"eight_ball_0", "eight_ball_1", "nine_ball_0", "nine_ball_1"})
+  for (const std::string game :
+       {"eight_ball_0", "eight_ball_1", "nine_ball_0", "nine_ball_1", "ten_ball_0", "ten_ball_1"})
   {
     const auto [code, replay] = runCommand("rosrun cue_sim play_game.py --replay '" + dir + "/" + game + "'");
     EXPECT_EQ(code, 0) << game << ":\n" << replay;

@@ -270,7 +270,7 @@ TEST_F(TableNodeTest, BadRacksAreRefusedAndChangeNothing)
     std::string words;
   };
   const std::vector<Case> cases = {
-      {"ten", {}, {}, "layout must be one of"},
+      {"eleven", {}, {}, "layout must be one of"},
       {"custom", {0, 1}, {{0, 0}}, "same length"},
       {"custom", {0, 1}, {{0, 0}, {kRadius, 0}}, "overlap"},
       {"custom", {0}, {{5.0, 0}}, "off the cloth"},

@@ -44,7 +44,8 @@ def same(a, b):
 
 @pytest.mark.parametrize("options", [dict(task="pot", balls=3), dict(task="pot", target="lowest", max_shots=5, balls=4),
                                      dict(task="pot", action="relative", spin=True), dict(task="position", balls=4, action="relative"),
-                                     dict(task="break", rack="eight"),
+                                     dict(task="break", rack="eight"), dict(task="break", rack="ten"),
+                                     dict(task="ten_ball", opponent="planner", action="relative"),
                                      dict(task="nine_ball", opponent="self", action="relative"),
                                      dict(task="eight_ball", opponent="planner", opponent_skill=0.5),
                                      dict(task="pot", observation="both", pixel_width=96, pixel_height=48)])
@@ -265,6 +266,18 @@ def test_spaces_follow_gymnasium():
     assert all(d.sample() in d for _ in range(50)) and 6 not in d and -1 not in d
     both = Dict({"state": box, "pixels": pixels})
     assert both.sample() in both and {"state": box.sample()} not in both
+
+
+def test_every_task_has_an_id_and_the_games_come_from_the_rulesets():
+    import cue_sim
+    from cue_sim.envs import TASK_IDS
+    assert sorted(TASK_IDS.values()) == sorted(task_names())
+    assert TASK_IDS["cue_sim/Pot-v0"] == "pot" and TASK_IDS["cue_sim/NineBall-v0"] == "nine_ball"
+    assert TASK_IDS["cue_sim/TenBall-v0"] == "ten_ball"
+    assert set(cue_sim.rules()) <= set(task_names())
+    # The push-out is in the action of the games whose rules have one.
+    assert TableEnv("ten_ball", action="relative").action_names[-1] == "push_out"
+    assert "push_out" not in TableEnv("eight_ball", action="relative").action_names
 
 
 def test_gymnasium_check_env():

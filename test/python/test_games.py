@@ -82,3 +82,45 @@ def test_whole_games_end_with_every_ball_accounted_for(engine):
             assert np.all(np.isfinite(table.positions))
         assert game.state["winner"] in (0, 1), game.state
         assert shots < 150
+
+
+def test_a_ten_ball_game_counts_only_called_balls_and_ends(engine):
+    """10-ball from Python: each ghost-ball shot is tried under its own call; a called ball in its
+    called pocket continues the inning, and the game ends with every ball accounted for."""
+    game = cue_sim.Game(engine, "ten_ball", seed=3)
+    assert "ten_ball" in cue_sim.rules()
+    assert sorted(int(i) for i in game.table.ids) == list(range(11))
+    game.set_shot_cap(150)
+    radius = engine.params["ball_radius"]
+    continued = 0
+    while not game.state["over"]:
+        best, choice, call = -1e9, (8.0, 0.0), None
+        table = game.table
+        cue = table.positions[list(table.ids).index(0)]
+        if game.state["break"]:
+            choice = (8.0, math.atan2(-cue[1], 0.4953 - cue[0]))
+        else:
+            where = {int(i): p[:2] for i, p, pocket in zip(table.ids, table.positions, table.pocket) if pocket < 0}
+            for ball in game.legal_first:
+                b = where[ball]
+                for name, (px, py, _) in engine.pockets.items():
+                    d = np.hypot(px - b[0], py - b[1])
+                    ghost = (b[0] - 2 * radius * (px - b[0]) / d, b[1] - 2 * radius * (py - b[1]) / d)
+                    for speed in (1.5, 3.0):
+                        trial = game.copy()
+                        trial.call(ball, name)
+                        ruling, _ = trial.shoot(speed, math.atan2(ghost[1] - cue[1], ghost[0] - cue[0]))
+                        score = (1000 if ruling.game_over and ruling.winner == game.state["turn"] else
+                                 100 if ruling.continues and not ruling.foul else 10 if not ruling.foul else 0) - speed
+                        if score > best:
+                            best, call = score, (ball, name)
+                            choice = (speed, math.atan2(ghost[1] - cue[1], ghost[0] - cue[0]))
+        if call is not None:
+            game.call(*call)
+        ruling, _ = game.shoot(*choice)
+        if ruling.rule == "WPA 9.5":
+            continued += 1
+        table = game.table
+        assert len(table.ids) == 11 and len(set(table.ids)) == 11
+    assert game.state["winner"] in (0, 1), game.state
+    assert continued > 0  # called balls went down and kept the inning

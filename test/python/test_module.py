@@ -71,7 +71,7 @@ def test_bad_physics_is_refused_by_name(kwargs, named):
 def test_bad_states_and_shots_are_refused_by_name(engine):
     start = engine.rack("eight")
     with pytest.raises(ValueError, match="layout"):
-        engine.rack("ten")
+        engine.rack("eleven")
     with pytest.raises(ValueError, match="speed"):
         cue_sim.simulate(engine, start, speed=-1.0)
     with pytest.raises(ValueError, match="ball"):

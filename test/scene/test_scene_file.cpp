@@ -121,7 +121,7 @@ TEST(SceneFile, BadScenesNameTheProblem)
   EXPECT_NE(errorOf("physics: {mu_slid: 0.2}\n").find("unknown key 'mu_slid'"), std::string::npos);
   EXPECT_NE(errorOf("physics: {e_ball: 1.5}\n").find("e_ball must be in [0, 1]"), std::string::npos);
   EXPECT_NE(errorOf("table: 6ft\n").find("unknown table '6ft'"), std::string::npos);
-  EXPECT_NE(errorOf("rack: ten\n").find("unknown rack 'ten'"), std::string::npos);
+  EXPECT_NE(errorOf("rack: eleven\n").find("unknown rack 'eleven'"), std::string::npos);
   EXPECT_NE(errorOf("physics: {cushion_model: rubber}\n")
                 .find("cushion_model 'rubber' is unknown (known: han2005, mathavan2010, stronge2018, simple)"),
             std::string::npos);

@@ -424,7 +424,7 @@ TEST(LiveTableOptions, EveryOptionOutOfItsRangeIsRefusedByName)
   options = LiveTableOptions();
   try
   {
-    LiveTable(engineOn("7ft"), options, "ten", kStart);
+    LiveTable(engineOn("7ft"), options, "eleven", kStart);
     ADD_FAILURE() << "an unknown rack was accepted";
   }
   catch (const std::invalid_argument& e)

@@ -33,11 +33,11 @@ const char* ballInHandName(BallInHand place);
 
 struct GameState
 {
-  std::string rules;  ///< "eight_ball" or "nine_ball" (rulesNames())
+  std::string rules;  ///< a ruleset's name (rulesNames(): eight_ball, nine_ball, ten_ball)
   std::array<std::string, 2> players{"player 1", "player 2"};
-  int turn = 0;                                           ///< whose shot is next: 0 or 1
-  bool break_shot = true;                                 ///< the next shot breaks the rack
-  bool push_out_allowed = false;                          ///< 9-ball: the shot after a legal break may be a push-out
+  int turn = 0;                   ///< whose shot is next: 0 or 1
+  bool break_shot = true;         ///< the next shot breaks the rack
+  bool push_out_allowed = false;  ///< 9- and 10-ball: the shot after a legal break may be a push-out
   std::array<Group, 2> groups{Group::Open, Group::Open};  ///< 8-ball
   int called_ball = -1;                                   ///< the ball called for the next shot, -1 for none
   int called_pocket = -1;  ///< the pocket called (TableModel::pockets index), -1 for none
@@ -62,7 +62,7 @@ struct Ruling
   bool game_over = false;
   int winner = -1;
   std::array<Group, 2> groups{Group::Open, Group::Open};  ///< each player's group after the shot (8-ball)
-  bool push_out_next = false;  ///< the next shot may be a push-out (9-ball, after a legal break)
+  bool push_out_next = false;  ///< the next shot may be a push-out (9- and 10-ball, after a legal break)
 };
 
 }  // namespace game

@@ -56,10 +56,21 @@ public:
   /// The ruling on `shot`, played from `state` with `on_table` the object balls on the table
   /// before it. The ruling's text cites the rule it rests on.
   virtual Ruling judge(const GameState& state, const std::vector<int>& on_table, const Shot& shot) const = 0;
+  /// Whether the shooter calls a ball and a pocket, and the referee holds the shot to the call.
+  virtual bool callsShots() const = 0;
+  /// Whether a pocketed ball counts only when it was called (an uncalled shot is a safety), rather
+  /// than counting an uncalled pot as called.
+  virtual bool mustCall() const { return false; }
+  /// Whether the shot after a legal break may be a push-out.
+  virtual bool pushOutAfterBreak() const { return false; }
+  /// Whether the players are given groups of balls (8-ball's solids and stripes).
+  virtual bool playsGroups() const { return false; }
 };
 
-/// The names makeRules() accepts: eight_ball, nine_ball.
+/// The names makeRules() accepts (rulesets.def): eight_ball, nine_ball, ten_ball.
 std::vector<std::string> rulesNames();
+/// How a ruleset is shown ("8-ball"); the name itself if it is not one.
+std::string rulesTitle(const std::string& name);
 /// Throws std::invalid_argument naming the unknown ruleset and the known ones.
 std::unique_ptr<Rules> makeRules(const std::string& name);
 

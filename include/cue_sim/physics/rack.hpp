@@ -25,6 +25,8 @@ struct RackOptions
 
 /// The names rackLayout() accepts.
 std::vector<std::string> rackNames();
+/// rackNames() for a message: "eight, nine, ten, empty".
+std::string rackNamesText();
 
 /// "eight": cue ball on the head string, balls 1-15 in a triangle with the apex on the foot
 /// spot (8 in the centre, a solid and a stripe in the back corners). "nine": balls 1-9 in a

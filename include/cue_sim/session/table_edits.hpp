@@ -18,7 +18,7 @@ namespace session
 {
 struct RackRequest
 {
-  std::string layout;                      ///< "eight", "nine", "empty" or "custom"
+  std::string layout;                      ///< "eight", "nine", "ten", "empty" or "custom"
   std::vector<int> ids;                    ///< custom: one per ball
   std::vector<Eigen::Vector2d> positions;  ///< custom: [m] in the table frame
   double jitter = 0;       ///< [m] standard layouts: each ball but the apex moved by up to this, in [0, rack_gap / 2]

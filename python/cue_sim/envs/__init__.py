@@ -13,15 +13,20 @@ from cue_sim.envs.spaces import Box, Dict, Discrete
 from cue_sim.envs.table_env import DEFAULT_OPTIONS, TableEnv
 from cue_sim.envs.vector_env import TableVectorEnv
 
-#: Registered ids and their tasks.
-TASK_IDS = {"cue_sim/Pot-v0": "pot", "cue_sim/Position-v0": "position", "cue_sim/Break-v0": "break", "cue_sim/EightBall-v0": "eight_ball",
-            "cue_sim/NineBall-v0": "nine_ball"}
-
 
 def task_names():
-    """The tasks TableEnv takes."""
+    """The tasks TableEnv takes: pot, position, break and a game per ruleset (cue_sim.rules())."""
     from cue_sim.envs.table_env import _core
     return list(_core.task_names())
+
+
+def _env_id(task):
+    """cue_sim/Pot-v0 for pot, cue_sim/TenBall-v0 for ten_ball."""
+    return "cue_sim/" + "".join(word.capitalize() for word in task.split("_")) + "-v0"
+
+
+#: Registered ids and their tasks: one per task, the games' from the referee's registry.
+TASK_IDS = {_env_id(task): task for task in task_names()}
 
 
 def _register():

@@ -8,7 +8,7 @@ rest. A twin TableEnv on the node's own table and physics plays the same strike:
 is the same, so its balls must come to rest exactly where the twin's do, and the reward and the
 rulings are the twin's. A table that differs raises, naming the ball.
 
-In a game (eight_ball, nine_ball) reset starts the same game on the node (~start_game: the rules,
+In a game (eight_ball, nine_ball, ten_ball) reset starts the same game on the node (~start_game: the rules,
 the rack's seed, who breaks) and every turn the twin plays, the opponent's too, goes to the node in
 order: the cue ball placed in hand (~place_cue_ball), the call and push-out (~call_shot), the
 strike; each waits until the node's referee has finished the shot (~game_state). The node's table
@@ -25,11 +25,13 @@ from typing import Any, Optional
 
 import numpy as np
 
+from cue_sim.envs import task_names
 from cue_sim.envs.table_env import TableEnv
+from cue_sim.games import rules
 
-#: The tasks the live table plays: every one.
-LIVE_TASKS = ("pot", "position", "break", "eight_ball", "nine_ball")
-GAMES = ("eight_ball", "nine_ball")
+#: The tasks the live table plays: every one; the games are the referee's rulesets.
+LIVE_TASKS = tuple(task_names())
+GAMES = tuple(rules())
 
 
 class _Latest:

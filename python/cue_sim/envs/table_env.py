@@ -56,13 +56,13 @@ def spaces_of(spec: dict):
 class TableEnv(_EnvBase):
     """A task on one table (Gymnasium's Env API; Gymnasium itself is not needed).
 
-    task: one of task_names() (pot, position, break, eight_ball, nine_ball). The options and their
-    defaults are DEFAULT_OPTIONS, each declared once in env_options.def with its range and
+    task: one of task_names(): pot, position, break, and a game per ruleset (eight_ball, nine_ball,
+    ten_ball). The options and their defaults are DEFAULT_OPTIONS, each declared once in env_options.def with its range and
     meaning (cue_sim._core.env_options(); doc/learning.md's table of options): balls, target,
     max_shots, rack, action ("absolute": phi [rad], speed [m/s]; "relative": ball, pocket,
     cut_offset [rad], speed), spin (theta, tip_right, tip_up too), opponent, opponent_skill,
     opponent_noise, shaping, noise, observation, pixel_width, pixel_height. Games add place_x,
-    place_y (the cue ball in hand) and, in 9-ball, push_out to the action.
+    place_y (the cue ball in hand) and, in 9- and 10-ball, push_out to the action.
     engine: a cue_sim.Engine (its table, physics and models); else the bundled `table`.
     """
 

@@ -41,6 +41,8 @@ class EightBall : public Rules
 {
 public:
   std::string rack() const override { return "eight"; }
+  bool callsShots() const override { return true; }
+  bool playsGroups() const override { return true; }
 
   std::vector<int> legalFirst(const GameState& state, const std::vector<int>& on_table) const override
   {

@@ -1,4 +1,4 @@
-// break: an 8-ball or 9-ball rack as games rack it (jittered, seeded by the episode), the cue ball
+// break: a game's rack (8-, 9- or 10-ball) as games rack it (jittered, seeded by the episode), the cue ball
 // on the break spot; the referee rules on the break. One shot.
 #include <stdexcept>
 
@@ -11,11 +11,20 @@ namespace learning
 {
 namespace
 {
+/// The ruleset whose games start from `rack`: the break is refereed as its game's break.
+std::string rulesRacking(const std::string& rack)
+{
+  for (const std::string& name : game::rulesNames())
+    if (game::makeRules(name)->rack() == rack)
+      return name;
+  throw std::invalid_argument("rack: no game starts from '" + rack + "'");
+}
+
 class BreakTask : public Task
 {
 public:
   BreakTask(const physics::Engine<double>& engine, const EnvOptions& options)
-    : engine_(engine), rules_(options.rack == "eight" ? "eight_ball" : "nine_ball")
+    : engine_(engine), rules_(rulesRacking(options.rack))
   {
     requirePockets(engine, "break");
     game_ = std::make_unique<game::GamePlay>(engine_, rules_);

@@ -1,7 +1,7 @@
-// eight_ball and nine_ball: whole games under the referee, a shot a step. Against the built-in
-// opponent (the core's PottingPlanner, with execution noise and a skill), whose turns are played
-// within the agent's step; or in self-play, where every step is the shot of whoever is to play and
-// everything is seen from the shooter's side.
+// A game, one task per ruleset (eight_ball, nine_ball, ten_ball): whole games under the referee, a
+// shot a step. Against the built-in opponent (the core's PottingPlanner, with execution noise and
+// a skill), whose turns are played within the agent's step; or in self-play, where every step is
+// the shot of whoever is to play and everything is seen from the shooter's side.
 #include <cmath>
 #include <optional>
 #include <stdexcept>

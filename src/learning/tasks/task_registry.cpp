@@ -1,6 +1,8 @@
 // The tasks by name: each is one file in tasks/, made here; and what the tasks share.
+#include <algorithm>
 #include <stdexcept>
 
+#include "cue_sim/game/referee.hpp"
 #include "learning/tasks/task.hpp"
 
 namespace cue_sim
@@ -19,10 +21,18 @@ struct TaskEntry
   std::unique_ptr<Task> (*make)(const physics::Engine<double>&, const EnvOptions&);
 };
 
-const TaskEntry kTasks[] = {
-    {"pot", &makePotTask},         {"position", &makePotTask},   {"break", &makeBreakTask},
-    {"eight_ball", &makeGameTask}, {"nine_ball", &makeGameTask},
+/// The tasks on a table of balls; beside them, one game task per ruleset (game::rulesNames()).
+const TaskEntry kTableTasks[] = {
+    {"pot", &makePotTask},
+    {"position", &makePotTask},
+    {"break", &makeBreakTask},
 };
+
+bool isRuleset(const std::string& name)
+{
+  const std::vector<std::string> rules = game::rulesNames();
+  return std::find(rules.begin(), rules.end(), name) != rules.end();
+}
 }  // namespace
 
 void requirePockets(const physics::Engine<double>& engine, const std::string& task)
@@ -46,24 +56,25 @@ void describeTurn(const game::Turn& turn, StepInfo& info)
 std::vector<std::string> taskNames()
 {
   std::vector<std::string> names;
-  for (const TaskEntry& entry : kTasks)
+  for (const TaskEntry& entry : kTableTasks)
     names.emplace_back(entry.name);
+  for (const std::string& rules : game::rulesNames())
+    names.push_back(rules);
   return names;
 }
 
 bool isGameTask(const std::string& task)
 {
-  for (const TaskEntry& entry : kTasks)
-    if (task == entry.name)
-      return entry.make == &makeGameTask;
-  return false;
+  return isRuleset(task);
 }
 
 std::unique_ptr<Task> makeTask(const physics::Engine<double>& engine, const EnvOptions& options)
 {
-  for (const TaskEntry& entry : kTasks)
+  for (const TaskEntry& entry : kTableTasks)
     if (options.task == entry.name)
       return entry.make(engine, options);
+  if (isRuleset(options.task))
+    return makeGameTask(engine, options);
   std::string names;
   for (const std::string& name : taskNames())
     names += (names.empty() ? "" : ", ") + name;

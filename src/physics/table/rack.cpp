@@ -10,7 +10,15 @@ namespace physics
 {
 std::vector<std::string> rackNames()
 {
-  return {"eight", "nine", "empty"};
+  return {"eight", "nine", "ten", "empty"};
+}
+
+std::string rackNamesText()
+{
+  std::string text;
+  for (const std::string& name : rackNames())
+    text += (text.empty() ? "" : ", ") + name;
+  return text;
 }
 
 namespace
@@ -30,15 +38,20 @@ TableState<S> rackLayout(const std::string& name, const TableModel& table, S bal
 {
   // Rows of ball numbers from the apex back. Eight-ball: the 8 in the middle of the third row,
   // a solid (6) and a stripe (12) in the back corners. Nine-ball: a diamond, 1 at the apex.
+  // Ten-ball (WPA 9.2): a triangle of four rows, 1 at the apex, the 10 in the middle of the third
+  // row, and the 2 and 3 in the back corners, as tournaments that fix them ask.
   static const std::vector<std::vector<int>> eight_rows = {{1}, {11, 5}, {2, 8, 10}, {9, 7, 14, 4}, {6, 15, 13, 3, 12}};
   static const std::vector<std::vector<int>> nine_rows = {{1}, {2, 3}, {4, 9, 5}, {6, 7}, {8}};
+  static const std::vector<std::vector<int>> ten_rows = {{1}, {6, 4}, {7, 10, 5}, {2, 8, 9, 3}};
   const std::vector<std::vector<int>>* rows = nullptr;
   if (name == "eight")
     rows = &eight_rows;
   else if (name == "nine")
     rows = &nine_rows;
+  else if (name == "ten")
+    rows = &ten_rows;
   else if (name != "empty")
-    throw std::invalid_argument("unknown rack '" + name + "' (known: eight, nine, empty)");
+    throw std::invalid_argument("unknown rack '" + name + "' (known: " + rackNamesText() + ")");
 
   const Eigen::Vector2d head = table.headSpot(), foot = table.footSpot();
   TableState<S> state;
