@@ -39,12 +39,6 @@ Ball<S> inTheAir(int id, S x, S y, S height, const Vec3<S>& v = Vec3<S>::Zero(),
   return b;
 }
 
-/// Kinetic energy and the potential of the centre's height above the cloth [J].
-double mechanicalEnergy(const Ball<double>& b, const PhysicsParams<double>& p)
-{
-  return kineticEnergy(b, p) + p.ball_mass * p.gravity * (b.r.z() - p.ball_radius);
-}
-
 /// The shot run event by event with a full scan, every invariant checked at each event and at
 /// `samples` times between: returns the events.
 std::vector<Event<double>> runChecked(const Engine<double>& engine, TableState<double> s, int samples = 8)
