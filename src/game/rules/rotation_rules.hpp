@@ -36,10 +36,8 @@ protected:
   /// The ruling on a shot without a foul (the break or not); `money` the money ball dropped.
   virtual Ruling legalShot(const GameState& state, const ShotFacts& facts, bool money) const = 0;
   /// `r` with the money ball spotted if it dropped or left the table, and the rule in its text;
-  /// `why` adds to the rule's number ("the 10 on the break").
+  /// `why` follows the rule's number (", on the break").
   Ruling spotMoneyBall(Ruling r, bool money, const std::string& why = "") const;
-  int moneyBall() const { return money_ball_; }
-  const Sections& sections() const { return sections_; }
 
 private:
   /// WPA 2.3, 9.3: the cue ball must first touch the lowest ball (6.2) and, if nothing is

@@ -10,8 +10,6 @@
 //   may shoot or hand the shot back (9.4, 9.7): here the incoming player shoots;
 // - the called 10 wins whenever it drops in its pocket on a legal shot, not only as the last
 //   ball (9.5, 9.8); the lowest ball must still be hit first.
-#include <algorithm>
-
 #include "game/rules/rotation_rules.hpp"
 
 namespace cue_sim
