@@ -37,7 +37,21 @@ cue_sim_private_master() {
   for _ in $(seq 100); do rosparam list > /dev/null 2>&1 && break; sleep 0.2; done
 }
 cue_sim_stop_all() {
-  for p in "${cue_sim_pids[@]}"; do kill "$p" 2>/dev/null || true; done
+  # The last started first, the master last: a rospy node whose master dies beside it can hang in
+  # its shutdown, unregistering (cue_frame_load.sh's tf publisher did, stalling CI on 2026-11-29).
+  local k p s state
+  for ((k = ${#cue_sim_pids[@]} - 1; k >= 0; k--)); do kill "${cue_sim_pids[k]}" 2>/dev/null || true; done
+  # Each gets 10 s to end, then SIGKILL: a script never waits for ever.
+  for _ in $(seq 100); do
+    state=""
+    for p in "${cue_sim_pids[@]}"; do
+      s=$(awk '{ print $3 }' "/proc/$p/stat" 2>/dev/null || true)
+      [ -n "$s" ] && [ "$s" != Z ] && state=running
+    done
+    [ -z "$state" ] && break
+    sleep 0.1
+  done
+  for p in "${cue_sim_pids[@]}"; do kill -9 "$p" 2>/dev/null || true; done
   wait 2>/dev/null || true
 }
 
