@@ -25,11 +25,14 @@ GamePlay::GamePlay(const physics::Engine<double>& engine, const std::string& rul
   if (breaker != 0 && breaker != 1)
     throw std::invalid_argument("breaker must be 0 or 1, got " + std::to_string(breaker));
   state_.turn = breaker;
-  if (engine.table().pockets().empty())
-    throw std::invalid_argument("a game of " + rules + " needs a table with pockets; '" + engine.table().name() +
-                                "' has none");
+  const bool pockets = !engine.table().pockets().empty();
+  if (pockets != rules_->needsPockets())
+    throw std::invalid_argument("a game of " + rules + " needs a table " + (pockets ? "without" : "with") +
+                                " pockets; '" + engine.table().name() + "' has " + (pockets ? "some" : "none"));
   state_.rules = rules;
   state_.players = players;
+  state_.target = rules_->defaultTarget();
+  state_.innings[static_cast<std::size_t>(breaker)] = 1;
   rack();
 }
 
@@ -42,29 +45,42 @@ void GamePlay::rack()
 {
   const double R = engine_->params().ball_radius;
   table_ = physics::rackLayout<double>(rules_->rack(), engine_->table(), R, rack_);
-  auto& cue = table_.balls[static_cast<std::size_t>(table_.indexOf(0))];
-  cue.r.head<2>() = breakSpot(engine_->table(), R);  // the rack's head spot is on the string, not behind it
+  rules_->placeForBreak(engine_->table(), R, state_.turn, table_);
   ++rack_.seed;
   state_.break_shot = true;
-  state_.ball_in_hand = BallInHand::BehindHeadString;
+  state_.ball_in_hand = rules_->needsPockets() ? BallInHand::BehindHeadString : BallInHand::None;
 }
 
 std::vector<int> GamePlay::legalFirst() const
 {
-  return rules_->legalFirst(state_, objectBallsOnTable(table_));
+  return rules_->legalFirst(state_, objectBallsOnTable(table_, cueBall()));
+}
+
+std::string GamePlay::setTarget(int points)
+{
+  if (rules_->defaultTarget() == 0)
+    return "a game of " + state_.rules + " keeps no score to set a target for";
+  if (points < 1 || points > kMaxTarget)
+    return "target " + std::to_string(points) + " must be in [1, " + std::to_string(kMaxTarget) + "]";
+  if (points <= std::max(state_.score[0], state_.score[1]))
+    return "target " + std::to_string(points) + " must be above the leading score, " +
+           std::to_string(std::max(state_.score[0], state_.score[1]));
+  state_.target = points;
+  return "";
 }
 
 std::string GamePlay::setPosition(const physics::TableState<double>& balls, bool break_shot)
 {
-  if (balls.indexOf(0) < 0 || !balls.balls[static_cast<std::size_t>(balls.indexOf(0))].inPlay())
-    return "a position needs the cue ball (id 0) on the cloth";
+  const int cue = cueBall();
+  if (balls.indexOf(cue) < 0 || !balls.balls[static_cast<std::size_t>(balls.indexOf(cue))].inPlay())
+    return "a position needs the shooter's cue ball (id " + std::to_string(cue) + ") on the cloth";
   if (const std::string why = engine_->whyInvalid(balls); !why.empty())
     return why;
   if (balls.anyMoving())
     return "a position is played from rest: every ball must be at rest";
   table_ = physics::atTimeZero(balls);
   state_.break_shot = break_shot;
-  state_.ball_in_hand = break_shot ? BallInHand::BehindHeadString : BallInHand::None;
+  state_.ball_in_hand = break_shot && rules_->needsPockets() ? BallInHand::BehindHeadString : BallInHand::None;
   state_.push_out_allowed = false;
   return "";
 }
@@ -74,7 +90,7 @@ std::string GamePlay::placeCueBall(const Eigen::Vector2d& p)
   if (state_.over)
     return "the game is over";
   const double R = engine_->params().ball_radius;
-  const int cue = table_.indexOf(0);
+  const int cue = table_.indexOf(cueBall());
   physics::TableState<double> without = table_;
   without.balls.erase(without.balls.begin() + cue);
   const std::string why = whyNotInHand(engine_->table(), R, without, p, state_.ball_in_hand);
@@ -88,7 +104,7 @@ std::string GamePlay::placeCueBall(const Eigen::Vector2d& p)
 
 std::string GamePlay::call(int ball, int pocket)
 {
-  const std::vector<int> on_table = objectBallsOnTable(table_);
+  const std::vector<int> on_table = objectBallsOnTable(table_, cueBall());
   if (ball != -1 && std::find(on_table.begin(), on_table.end(), ball) == on_table.end())
     return "called ball " + std::to_string(ball) + " is not on the table";
   if (pocket < -1 || pocket >= static_cast<int>(engine_->table().pockets().size()))
@@ -99,16 +115,31 @@ std::string GamePlay::call(int ball, int pocket)
   return "";
 }
 
-Turn GamePlay::shoot(const physics::CueStrike<double>& strike, bool push_out, physics::TableState<double>* at_rest)
+std::string GamePlay::whyNotStrikable(int ball) const
 {
   if (state_.over)
-    throw std::invalid_argument(whyOver());
-  if (const std::string why = engine_->whyNotStrikable(table_, 0, strike); !why.empty())
+    return whyOver();
+  if (!rules_->strikable(ball))
+    return "ball " + std::to_string(ball) + " is not struck in a game of " + state_.rules + "; the shooter's is " +
+           std::to_string(cueBall());
+  const int index = table_.indexOf(ball);
+  if (index < 0 || !table_.balls[static_cast<std::size_t>(index)].inPlay())
+    return "ball " + std::to_string(ball) + " is not on the table";
+  return "";
+}
+
+Turn GamePlay::shoot(const physics::CueStrike<double>& strike, bool push_out, physics::TableState<double>* at_rest,
+                     int ball)
+{
+  const int struck = ball < 0 ? cueBall() : ball;
+  if (const std::string why = whyNotStrikable(struck); !why.empty())
+    throw std::invalid_argument(why);
+  if (const std::string why = engine_->whyNotStrikable(table_, struck, strike); !why.empty())
     throw std::invalid_argument(why);
   physics::TableState<double> shot = table_;
-  engine_->strike(shot, 0, strike);
+  engine_->strike(shot, struck, strike);
   std::vector<physics::Event<double>> events = simulateToRest(*engine_, shot).events;
-  Turn turn = judge(strike, push_out, std::move(events));
+  Turn turn = judge(strike, push_out, std::move(events), struck);
   finish(turn, shot);
   if (at_rest)
     *at_rest = std::move(shot);
@@ -125,17 +156,18 @@ std::string GamePlay::whyOver() const
 }
 
 Turn GamePlay::judge(const physics::CueStrike<double>& strike, bool push_out,
-                     std::vector<physics::Event<double>> events) const
+                     std::vector<physics::Event<double>> events, int ball) const
 {
   Turn turn;
   turn.player = state_.turn;
+  turn.ball = ball < 0 ? cueBall() : ball;
   turn.strike = strike;
   turn.push_out = push_out;
   turn.called_ball = state_.called_ball;
   turn.called_pocket = state_.called_pocket;
   turn.events = std::move(events);
-  turn.facts = readShot(turn.events, &engine_->table());
-  turn.ruling = judgeShot(*rules_, state_, objectBallsOnTable(table_), Shot{turn.facts, push_out});
+  turn.facts = readShot(turn.events, &engine_->table(), turn.ball);
+  turn.ruling = judgeShot(*rules_, state_, objectBallsOnTable(table_, cueBall()), Shot{turn.facts, push_out});
   if (max_shots_ > 0 && state_.shots + 1 >= max_shots_ && !turn.ruling.game_over)
   {
     turn.ruling.game_over = true;
@@ -155,9 +187,11 @@ void GamePlay::finish(const Turn& turn, const physics::TableState<double>& at_re
     rack();
   else if (!state_.over)
   {
-    spotBalls(engine_->table(), engine_->params().ball_radius, turn.ruling.respot, table_);
+    const double R = engine_->params().ball_radius;
+    rules_->respot(engine_->table(), R, turn.ruling.respot, state_, table_);
     if (!table_.balls[static_cast<std::size_t>(table_.indexOf(0))].inPlay())
       returnCueBall();
+    state_.before_shot = rules_->beforeShot(engine_->table(), R, state_, table_);
   }
 }
 

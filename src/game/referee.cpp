@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "cue_sim/game/game_play.hpp"
 #include "game/rules/rules_factories.hpp"
 
 namespace cue_sim
@@ -61,6 +62,16 @@ std::string rulesTitle(const std::string& name)
   return name;
 }
 
+std::string rulesTable(const std::string& name)
+{
+#define CUE_SIM_RULES(rules_name, title, table, ...)                                                                   \
+  if (name == #rules_name)                                                                                             \
+    return table;
+#include "cue_sim/game/rulesets.def"
+#undef CUE_SIM_RULES
+  return "";
+}
+
 std::unique_ptr<Rules> makeRules(const std::string& name)
 {
 #define CUE_SIM_RULES(rules_name, ...)                                                                                 \
@@ -72,6 +83,19 @@ std::unique_ptr<Rules> makeRules(const std::string& name)
   for (const std::string& n : rulesNames())
     known += (known.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown rules '" + name + "' (known: " + known + ")");
+}
+
+void Rules::placeForBreak(const physics::TableModel& table, double ball_radius, int /*breaker*/,
+                          physics::TableState<double>& balls) const
+{
+  auto& cue = balls.balls[static_cast<std::size_t>(balls.indexOf(0))];
+  cue.r.head<2>() = breakSpot(table, ball_radius);  // the rack's head spot is on the string, not behind it
+}
+
+void Rules::respot(const physics::TableModel& table, double ball_radius, const std::vector<int>& ids,
+                   const GameState& /*state*/, physics::TableState<double>& balls) const
+{
+  spotBalls(table, ball_radius, ids, balls);
 }
 
 std::string ballList(const std::vector<int>& ids)
@@ -127,7 +151,7 @@ Ruling judgeShot(const Rules& rules, const GameState& state, const std::vector<i
     throw std::invalid_argument("the game is over: no more shots");
   Ruling r = rules.judge(state, on_table, shot);
   const int shooter = state.turn;
-  if (r.foul && !r.game_over && state.consecutive_fouls[shooter] >= 2)
+  if (r.foul && !r.game_over && rules.threeFoulsLose() && state.consecutive_fouls[shooter] >= 2)
   {
     r.rule = "WPA 6.14";
     r.reason += "; it is the shooter's third foul in a row, which loses the rack (WPA 6.14)";
@@ -144,6 +168,9 @@ GameState afterRuling(GameState state, const Ruling& ruling)
   state.consecutive_fouls[shooter] = ruling.foul ? state.consecutive_fouls[shooter] + 1 : 0;
   state.groups = ruling.groups;
   state.push_out_allowed = ruling.push_out_next;
+  state.score[shooter] += ruling.points;
+  if (ruling.next_player != shooter)
+    ++state.innings[ruling.next_player];
   state.turn = ruling.next_player;
   state.ball_in_hand = ruling.ball_in_hand;
   state.break_shot = ruling.rerack;
@@ -153,6 +180,7 @@ GameState afterRuling(GameState state, const Ruling& ruling)
     state.ball_in_hand = BallInHand::BehindHeadString;
   }
   state.called_ball = state.called_pocket = -1;
+  state.before_shot.clear();
   if (ruling.game_over)
   {
     state.over = true;
@@ -161,11 +189,11 @@ GameState afterRuling(GameState state, const Ruling& ruling)
   return state;
 }
 
-std::vector<int> objectBallsOnTable(const physics::TableState<double>& state)
+std::vector<int> objectBallsOnTable(const physics::TableState<double>& state, int cue_ball)
 {
   std::vector<int> ids;
   for (const auto& b : state.balls)
-    if (b.id != 0 && b.inPlay())
+    if (b.id != cue_ball && b.inPlay())
       ids.push_back(b.id);
   std::sort(ids.begin(), ids.end());
   return ids;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace cue_sim
 {
@@ -177,12 +178,82 @@ Choice PottingPlanner::choose(const GamePlay& game) const
   return fallback;
 }
 
+std::unique_ptr<Planner> plannerFor(const Rules& rules)
+{
+  if (rules.scoresCaroms())
+    return std::make_unique<CaromPlanner>();
+  return std::make_unique<PottingPlanner>();
+}
+
+namespace
+{
+/// One candidate of the CaromPlanner: its strike and what it did on a copy of the game.
+struct CaromTrial
+{
+  physics::CueStrike<double> strike;
+  bool won = false, point = false, foul = false, met_a_ball = false;
+};
+
+/// How many of the `reach` headings either side of trial k (same speed and spin) also score.
+int scoringNeighbours(const std::vector<CaromTrial>& trials, std::size_t k, int directions, int reach)
+{
+  const int block = static_cast<int>(k) / directions * directions, d = static_cast<int>(k) % directions;
+  int n = 0;
+  for (int step = -reach; step <= reach; ++step)
+    if (step != 0 && trials[static_cast<std::size_t>(block + (d + step + directions) % directions)].point)
+      ++n;
+  return n;
+}
+}  // namespace
+
+Choice CaromPlanner::choose(const GamePlay& game) const
+{
+  const int shooter = game.state().turn;
+  std::vector<CaromTrial> trials;
+  trials.reserve(kSpeeds.size() * kSide.size() * kDirections);
+  for (const double speed : kSpeeds)
+    for (const double side : kSide)
+      for (int d = 0; d < kDirections; ++d)
+      {
+        CaromTrial t;
+        t.strike.speed = speed;
+        t.strike.a = side;
+        t.strike.phi = 2 * M_PI * d / kDirections;
+        GamePlay play = game;
+        const Turn turn = play.shoot(t.strike);
+        t.won = turn.ruling.game_over && turn.ruling.winner == shooter;
+        t.point = turn.ruling.points > 0;
+        t.foul = turn.ruling.foul;
+        t.met_a_ball = turn.facts.first_contact >= 0;
+        trials.push_back(t);
+      }
+  double best_score = -std::numeric_limits<double>::infinity();
+  Choice best;
+  for (std::size_t k = 0; k < trials.size(); ++k)
+  {
+    const CaromTrial& t = trials[k];
+    double s = -0.01 * t.strike.speed;
+    if (t.won || t.point)
+      s += (t.won ? 1000 : 100) + 10 * scoringNeighbours(trials, k, kDirections, 2);
+    else if (t.foul)
+      s -= 100;
+    else if (!t.met_a_ball)
+      s -= 10;
+    if (s > best_score)
+    {
+      best_score = s;
+      best.strike = t.strike;
+    }
+  }
+  return best;
+}
+
 SelfPlaySummary selfPlay(const physics::Engine<double>& engine, const SelfPlayOptions& options,
                          const std::function<void(const GameRecord&)>& progress)
 {
   SelfPlaySummary summary;
   physics::NoisyCue cue(options.noise, options.seed);
-  const PottingPlanner planner;
+  const std::unique_ptr<Planner> planner = plannerFor(*makeRules(options.rules));
   for (int g = 0; g < options.games; ++g)
   {
     // Each game racks with seeds of its own, and the break alternates.
@@ -194,9 +265,12 @@ SelfPlaySummary selfPlay(const physics::Engine<double>& engine, const SelfPlayOp
     record.first_player = g % 2;
     GamePlay game(engine, options.rules, record.players, gameRack(record.rack_seed), record.first_player);
     game.setShotCap(options.max_shots);
+    if (options.target > 0)
+      if (const std::string why = game.setTarget(options.target); !why.empty())
+        throw std::invalid_argument(why);
     while (!game.state().over)
     {
-      Choice choice = planner.choose(game);
+      Choice choice = planner->choose(game);
       if (choice.place_cue_ball && !game.placeCueBall(choice.cue_ball).empty())
         choice.place_cue_ball = false;
       game.call(choice.ball, choice.pocket);
@@ -210,6 +284,8 @@ SelfPlaySummary selfPlay(const physics::Engine<double>& engine, const SelfPlayOp
     }
     record.end = game.state();
     summary.games += 1;
+    summary.points += record.end.score[0] + record.end.score[1];
+    summary.innings += record.end.innings[0] + record.end.innings[1];
     if (record.end.winner >= 0)
     {
       summary.finished += 1;

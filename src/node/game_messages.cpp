@@ -33,6 +33,7 @@ Ruling toRulingMsg(const game::Ruling& ruling, bool refereed)
   msg.ball_in_hand = inHandName(ruling.ball_in_hand);
   msg.respot.assign(ruling.respot.begin(), ruling.respot.end());
   msg.rerack = ruling.rerack;
+  msg.points = ruling.points;
   msg.game_over = ruling.game_over;
   msg.winner = ruling.winner;
   return msg;
@@ -57,8 +58,13 @@ GameState toGameStateMsg(const session::LiveTable& table, const ros::Time& stamp
     msg.players[i] = state.players[i];
     msg.groups[i] = game::groupName(state.groups[i]);
     msg.consecutive_fouls[i] = state.consecutive_fouls[i];
+    msg.score[i] = state.score[i];
+    msg.innings[i] = state.innings[i];
   }
   msg.turn = state.turn;
+  msg.cue_ball = play->cueBall();
+  msg.target = state.target;
+  msg.before_shot = state.before_shot;
   msg.break_shot = state.break_shot;
   msg.push_out_allowed = state.push_out_allowed;
   msg.push_out_called = table.game().pushOutCalled();

@@ -44,6 +44,7 @@ bool GameServices::onStartGame(StartGame::Request& request, StartGame::Response&
   }
   game.breaker = request.first_player;
   game.seed = request.seed;
+  game.target = request.target;
   game.balls = toBallInputs(request.balls);
   std::lock_guard<std::mutex> lock(shared_.mutex);
   const ros::Time now = shared_.now();

@@ -33,13 +33,14 @@ void refuseIf(const std::string& why)
 }
 
 Game startGame(std::shared_ptr<physics::Engine<double>> engine, const std::string& rules,
-               const std::array<std::string, 2>& players, unsigned seed, int first_player)
+               const std::array<std::string, 2>& players, unsigned seed, int first_player, int target)
 {
   if (first_player != 0 && first_player != 1)
     throw std::invalid_argument("first_player must be 0 or 1, got " + std::to_string(first_player));
-  if (engine->table().pockets().empty())
-    throw std::invalid_argument("a game needs a table with pockets; '" + engine->table().name() + "' has none");
   game::GamePlay play(*engine, rules, players, game::gameRack(seed), first_player);
+  if (target != 0)
+    if (const std::string why = play.setTarget(target); !why.empty())
+      throw std::invalid_argument("target: " + why);
   return Game{engine, play};
 }
 
@@ -51,15 +52,16 @@ void call(Game& g, int ball, const std::string& pocket)
 }
 
 /// The shot's ruling (as `simulate` prints it) and its events.
-py::tuple shoot(Game& g, double speed, double phi, double theta, double a, double b, bool push_out)
+py::tuple shoot(Game& g, double speed, double phi, double theta, double a, double b, bool push_out, int ball)
 {
-  refuseIf(g.play.whyOver());
+  const int struck = ball < 0 ? g.play.cueBall() : ball;
+  refuseIf(g.play.whyNotStrikable(struck));
   const physics::CueStrike<double> strike{speed, phi, theta, a, b};
-  refuseIf(g.engine->whyNotStrikable(g.play.table(), 0, strike));
+  refuseIf(g.engine->whyNotStrikable(g.play.table(), struck, strike));
   game::Turn turn;
   {
     py::gil_scoped_release release;
-    turn = g.play.shoot(strike, push_out);
+    turn = g.play.shoot(strike, push_out, nullptr, struck);
   }
   return py::make_tuple(rulingJson(turn.ruling).dump(), eventArrays(g.engine->table(), turn.events, 0.0));
 }
@@ -74,6 +76,7 @@ void bindGames(py::module_& m)
       .def("state_json", [](const Game& g) { return gameStateJson(g.play.state(), g.play.engine().table()).dump(); })
       .def("table", [](const Game& g) { return toArrays(g.play.table()); })
       .def("legal_first", [](const Game& g) { return g.play.legalFirst(); })
+      .def("cue_ball", [](const Game& g) { return g.play.cueBall(); })
       .def("place_cue_ball",
            [](Game& g, double x, double y) {
              refuseIf(g.play.placeCueBall({x, y}));

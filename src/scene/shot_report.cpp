@@ -65,6 +65,7 @@ json rulingJson(const game::Ruling& r)
           {"rerack", r.rerack},
           {"game_over", r.game_over},
           {"winner", r.winner},
+          {"points", r.points},
           {"groups", {game::groupName(r.groups[0]), game::groupName(r.groups[1])}}};
 }
 
@@ -84,6 +85,10 @@ json gameStateJson(const game::GameState& g, const physics::TableModel& table)
           {"fouls", g.consecutive_fouls},
           {"push_out_allowed", g.push_out_allowed},
           {"shots", g.shots},
+          {"score", g.score},
+          {"target", g.target},
+          {"innings", g.innings},
+          {"before_shot", g.before_shot},
           {"over", g.over},
           {"winner", g.winner}};
 }

@@ -19,8 +19,8 @@ std::string LiveGame::whyNotShot(const Shot& shot, bool at_rest) const
 {
   if (const std::string over = game_->whyOver(); !over.empty())
     return over + " (~start_game for another, ~end_game for free play)";
-  if (shot.ball_id != 0)
-    return "ball_id must be 0 in a game: only the cue ball is struck, got " + std::to_string(shot.ball_id);
+  if (const std::string why = game_->whyNotStrikable(shot.ball_id); !why.empty())
+    return "ball_id: " + why;
   if (!at_rest || pending_turn_)
     return "balls are still moving: a game shot is played from rest";
   return "";
@@ -43,8 +43,10 @@ std::string LiveGame::whyNotStart(const GameRequest& request, const physics::Eng
     if (request.players[i].empty())
       return "players[" + std::to_string(i) + "] must not be empty";
   const physics::TableModel& table = engine.table();
-  if (table.pockets().empty())
-    return "a game needs a table with pockets; '" + table.name() + "' has none";
+  const bool pockets = !table.pockets().empty();
+  if (pockets != game::makeRules(request.rules)->needsPockets())
+    return "a game of " + request.rules + " needs a table " + (pockets ? "without" : "with") + " pockets; '" +
+           table.name() + "' has " + (pockets ? "some" : "none");
   physics::TableState<double> position;
   if (!request.balls.empty())
   {
@@ -55,6 +57,12 @@ std::string LiveGame::whyNotStart(const GameRequest& request, const physics::Eng
       return why;
   }
   started.emplace(engine, request.rules, request.players, game::gameRack(request.seed), request.breaker);
+  if (request.target != 0)
+    if (const std::string why = started->setTarget(request.target); !why.empty())
+    {
+      started.reset();
+      return "target: " + why;
+    }
   if (!request.balls.empty())
     if (const std::string why = started->setPosition(position, false); !why.empty())
     {
@@ -91,7 +99,7 @@ std::string LiveGame::placeCueBall(const Eigen::Vector2d& p, physics::Ball<doubl
     return over;
   if (const std::string why = game_->placeCueBall(p); !why.empty())
     return why;
-  cue = game_->table().balls[static_cast<std::size_t>(game_->table().indexOf(0))];
+  cue = game_->table().balls[static_cast<std::size_t>(game_->table().indexOf(game_->cueBall()))];
   ++version_;
   return "";
 }
@@ -115,10 +123,10 @@ std::string LiveGame::call(const GameCall& call, const physics::TableModel& tabl
   return "";
 }
 
-const game::Ruling& LiveGame::struck(const physics::CueStrike<double>& strike,
+const game::Ruling& LiveGame::struck(int ball, const physics::CueStrike<double>& strike,
                                      const std::vector<physics::Event<double>>& events)
 {
-  pending_turn_ = game_->judge(strike, push_out_called_, events);
+  pending_turn_ = game_->judge(strike, push_out_called_, events, ball);
   ++version_;
   return pending_turn_->ruling;
 }

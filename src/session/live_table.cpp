@@ -224,7 +224,7 @@ StrikeOutcome LiveTable::strike(const Shot& shot, Stamp now)
   if (game_.on())
   {
     outcome.refereed = true;
-    outcome.ruling = game_.struck(outcome.executed.strike, prediction.events);
+    outcome.ruling = game_.struck(shot.ball_id, outcome.executed.strike, prediction.events);
     outcome.message += "; " + std::string(outcome.ruling.foul ? "foul: " : "") + outcome.ruling.reason;
   }
   advanceTo(now);
@@ -290,9 +290,10 @@ std::string LiveTable::predictionStart(const std::vector<BallInput>& balls, Stam
 
 bool predictedRuling(const PredictionStart& start, const ShotPrediction& prediction, game::Ruling& ruling)
 {
-  if (!start.game || !prediction.success || prediction.executed.ball_id != 0 || start.game->state().over)
+  if (!start.game || !prediction.success || !start.game->whyNotStrikable(prediction.executed.ball_id).empty())
     return false;
-  ruling = start.game->judge(prediction.executed.strike, start.push_out, prediction.events).ruling;
+  ruling = start.game->judge(prediction.executed.strike, start.push_out, prediction.events, prediction.executed.ball_id)
+               .ruling;
   return true;
 }
 

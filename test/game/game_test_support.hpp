@@ -1,9 +1,10 @@
-// What the referee's tests share: the 7 ft table and its engine, balls at rest, a shot played
+// What the referee's tests share: the 7 ft table and the carom table and their engines, balls at rest, a shot played
 // by the engine and read, and a ruling on a shot's facts.
 #pragma once
 
 #include <cmath>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "cue_sim/game/referee.hpp"
@@ -34,6 +35,24 @@ inline const Engine<double>& engine()
 {
   static const Engine<double> e(sevenFoot(), PhysicsParams<double>());
   return e;
+}
+
+inline std::shared_ptr<const TableModel> caromTable()
+{
+  static const auto table = std::make_shared<const TableModel>(TableModel::carom("carom", 2.84, 1.42));
+  return table;
+}
+
+inline const Engine<double>& caromEngine()
+{
+  static const Engine<double> e(caromTable(), PhysicsParams<double>());
+  return e;
+}
+
+/// The engine on the table `rules` is played on (rulesTable()).
+inline const Engine<double>& engineFor(const std::string& rules)
+{
+  return rulesTable(rules) == "carom" ? caromEngine() : engine();
 }
 
 inline double R()

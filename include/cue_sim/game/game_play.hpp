@@ -22,6 +22,7 @@ namespace game
 struct Turn
 {
   int player = 0;
+  int ball = 0;  ///< the ball struck
   physics::CueStrike<double> strike;
   bool push_out = false;
   int called_ball = -1, called_pocket = -1;
@@ -46,9 +47,10 @@ Eigen::Vector2d breakSpot(const physics::TableModel& table, double ball_radius);
 class GamePlay
 {
 public:
-  /// A new game of `rules` on `engine`'s table, racked, the cue ball on the break spot and in
-  /// hand behind the head string for `breaker`'s break (0 or 1). Throws std::invalid_argument for unknown
-  /// rules or a table without pockets. The engine must outlive the game.
+  /// A new game of `rules` on `engine`'s table, racked for `breaker`'s break (0 or 1): in pool
+  /// the cue ball on the break spot and in hand behind the head string. Throws
+  /// std::invalid_argument for unknown rules, or a table with pockets where the rules need none
+  /// or the other way round. The engine must outlive the game.
   GamePlay(const physics::Engine<double>& engine, const std::string& rules,
            const std::array<std::string, 2>& players = {"player 1", "player 2"},
            const physics::RackOptions& rack_options = gameRack(), int breaker = 0);
@@ -56,31 +58,42 @@ public:
   const GameState& state() const { return state_; }
   const physics::TableState<double>& table() const { return table_; }
   const Rules& rules() const { return *rules_; }
+  /// The ball the player to shoot strikes (Rules::cueBall).
+  int cueBall() const { return rules_->cueBall(state_.turn); }
   /// The object balls the player to shoot may hit first.
   std::vector<int> legalFirst() const;
+  /// Sets the points that win, where the game keeps a score (a new game takes the rules'
+  /// default); empty, or why not.
+  std::string setTarget(int points);
 
-  /// Sets up a position to play from: these balls at rest (the cue ball among them), the break
-  /// already played or not, the cue ball where it lies. Empty, or why not (and nothing changes).
+  /// Sets up a position to play from: these balls at rest (the shooter's cue ball among them),
+  /// the break already played or not, the cue ball where it lies. Empty, or why not (and nothing changes).
   std::string setPosition(const physics::TableState<double>& balls, bool break_shot);
   /// Moves the cue ball in hand to p; empty, or why not (and nothing changes).
   std::string placeCueBall(const Eigen::Vector2d& p);
   /// Calls a ball and pocket for the next shot (-1 for none); empty, or why not.
   std::string call(int ball, int pocket);
-  /// Strikes the cue ball, runs the shot to rest and rules on it; throws std::invalid_argument
-  /// (and changes nothing) if the game is over or the strike cannot be played. At the shot cap
+  /// Strikes `ball` (-1: the shooter's cue ball), runs the shot to rest and rules on it; throws
+  /// std::invalid_argument (and changes nothing) if the game is over, the rules let no one strike
+  /// that ball, or the strike cannot be played. At the shot cap
   /// a game not yet over ends without a winner, and the ruling says so. With `at_rest`, the balls
   /// as the shot left them there, before the table is made ready for the next shot.
   Turn shoot(const physics::CueStrike<double>& strike, bool push_out = false,
-             physics::TableState<double>* at_rest = nullptr);
+             physics::TableState<double>* at_rest = nullptr, int ball = -1);
+  /// Empty if `ball` may be struck in this game now (not over, a ball the rules let be struck,
+  /// on the cloth), otherwise why not.
+  std::string whyNotStrikable(int ball) const;
 
   // A shot run elsewhere (the node's live table runs it in real time): judge it from its
   // events when it is struck, then finish it when its balls rest. shoot() is the two at once.
-  /// The turn `strike` makes with these events (simulateToRest's, from table()): the
-  /// ruling, the shot cap's included, and the state after it. Changes nothing.
-  Turn judge(const physics::CueStrike<double>& strike, bool push_out, std::vector<physics::Event<double>> events) const;
+  /// The turn `strike` of `ball` (-1: the shooter's cue ball) makes with these events
+  /// (simulateToRest's, from table()): the ruling, the shot cap's included, and the state after
+  /// it. Changes nothing.
+  Turn judge(const physics::CueStrike<double>& strike, bool push_out, std::vector<physics::Event<double>> events,
+             int ball = -1) const;
   /// Takes the turn judged from table(): the balls as the shot left them at rest, then made
   /// ready for the next shot (balls spotted, a new rack, the cue ball back behind the head
-  /// string after a scratch).
+  /// string after a scratch, and what the rules do before a shot: GameState::before_shot).
   void finish(const Turn& turn, const physics::TableState<double>& at_rest);
   /// Empty while the game goes on; once over, who won (for a refusal).
   std::string whyOver() const;
@@ -89,6 +102,9 @@ public:
   /// Shots a game may take before it is stopped (0: no cap).
   void setShotCap(int max_shots) { max_shots_ = max_shots; }
   const physics::Engine<double>& engine() const { return *engine_; }
+
+  /// The highest target setTarget() takes: a race longer than any match (UMB's longest is 50).
+  static constexpr int kMaxTarget = 1000;
 
 private:
   void rack();

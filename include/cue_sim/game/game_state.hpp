@@ -1,5 +1,5 @@
-// A game of pool between two players, as data: whose turn it is, what each may hit, where the
-// cue ball may be placed, and what the last shot's ruling said. The referee (referee.hpp)
+// A game between two players, as data: whose turn it is, what each may hit, where the cue ball
+// may be placed, the score where the game keeps one, and what the last shot's ruling said. The referee (referee.hpp)
 // takes it with a shot's events and gives the ruling and the next state. No ROS.
 #pragma once
 
@@ -33,7 +33,7 @@ const char* ballInHandName(BallInHand place);
 
 struct GameState
 {
-  std::string rules;  ///< a ruleset's name (rulesNames(): eight_ball, nine_ball, ten_ball)
+  std::string rules;  ///< a ruleset's name (rulesNames())
   std::array<std::string, 2> players{"player 1", "player 2"};
   int turn = 0;                   ///< whose shot is next: 0 or 1
   bool break_shot = true;         ///< the next shot breaks the rack
@@ -44,6 +44,14 @@ struct GameState
   std::array<int, 2> consecutive_fouls{0, 0};
   BallInHand ball_in_hand = BallInHand::BehindHeadString;
   int shots = 0;  ///< shots played in this game
+  /// Where the game keeps a score (three-cushion's points): each player's, and the points that
+  /// win (0: the game keeps none).
+  std::array<int, 2> score{0, 0};
+  int target = 0;
+  std::array<int, 2> innings{0, 0};  ///< the innings each player has begun (a turn at the table)
+  /// What the rules did to the balls at rest before the next shot, and why (three-cushion
+  /// re-spots a cue ball frozen to an object ball); empty for nothing.
+  std::string before_shot;
   bool over = false;
   int winner = -1;  ///< 0 or 1 once over; -1 for none (a game stopped by the shot cap)
 };
@@ -63,6 +71,7 @@ struct Ruling
   int winner = -1;
   std::array<Group, 2> groups{Group::Open, Group::Open};  ///< each player's group after the shot (8-ball)
   bool push_out_next = false;  ///< the next shot may be a push-out (9- and 10-ball, after a legal break)
+  int points = 0;              ///< scored by the shooter (three-cushion: 1 for a carom)
 };
 
 }  // namespace game

@@ -1,4 +1,4 @@
-// The referee of a pool game: what a shot did (read off its events), the ruling on it under a
+// The referee of a game: what a shot did (read off its events), the ruling on it under a
 // ruleset, and the state after it. Rulesets are named (rulesNames()); each is one file in
 // src/game/rules/. No ROS.
 #pragma once
@@ -16,10 +16,15 @@ namespace cue_sim
 {
 namespace game
 {
-/// What a shot did, as the rules need it.
+/// What a shot did, as the rules need it. "The cue ball" is the ball struck.
 struct ShotFacts
 {
-  int first_contact = -1;                 ///< the first object ball the cue ball touched, -1 for none
+  int cue_ball = 0;         ///< the ball struck
+  int first_contact = -1;   ///< the first object ball the cue ball touched, -1 for none
+  int second_contact = -1;  ///< the first other object ball it touched after that, -1 for none
+  /// The cue ball's impacts with cushions (or jaws) before it touched second_contact (all of them
+  /// without one). Every impact counts, on the same cushion or not (UMB Art. 83).
+  int cushions_before_second = 0;
   std::vector<int> pocketed;              ///< object balls pocketed, in order (not the cue ball)
   std::vector<int> pockets;               ///< the pocket each went into (TableModel::pockets index)
   bool scratch = false;                   ///< the cue ball was pocketed (WPA 6.1)
@@ -33,9 +38,10 @@ struct ShotFacts
   std::string pocketName(int index) const;
 };
 
-/// Reads a shot's events in time order (Engine::run's). The cue ball is ball 0. With `table`, the
-/// rulings name its pockets.
-ShotFacts readShot(const std::vector<physics::Event<double>>& events, const physics::TableModel* table = nullptr);
+/// Reads a shot's events in time order (Engine::run's); `cue_ball` is the ball struck. With
+/// `table`, the rulings name its pockets.
+ShotFacts readShot(const std::vector<physics::Event<double>>& events, const physics::TableModel* table = nullptr,
+                   int cue_ball = 0);
 
 /// A shot as the referee sees it: what happened, and what the shooter declared.
 struct Shot
@@ -65,25 +71,61 @@ public:
   virtual bool pushOutAfterBreak() const { return false; }
   /// Whether the players are given groups of balls (8-ball's solids and stripes).
   virtual bool playsGroups() const { return false; }
+  /// Whether a third foul in a row loses the game (WPA 6.14).
+  virtual bool threeFoulsLose() const { return true; }
+
+  // Carom games: each player strikes a cue ball of their own, on a table without pockets, for
+  // points. Pool's defaults: ball 0 for both, pockets, no score.
+  /// The ball `player` strikes.
+  virtual int cueBall(int /*player*/) const { return 0; }
+  /// Whether `ball` may be struck at all in a game (a refusal otherwise); striking one the rules
+  /// allow but not the shooter's own is theirs to rule on.
+  virtual bool strikable(int ball) const { return ball == 0; }
+  /// Whether the game is played on a table with pockets (pool) or without (carom).
+  virtual bool needsPockets() const { return true; }
+  /// The points that win, where the game keeps a score; 0 for none.
+  virtual int defaultTarget() const { return 0; }
+  /// Whether a shot scores by caroms (the cue ball meeting both object balls), which planners
+  /// then search for, rather than by pots.
+  virtual bool scoresCaroms() const { return false; }
+  /// Sets the balls for a break by `breaker` (the rack's layout as given): the cue ball one radius
+  /// behind the head spot (breakSpot()) by default.
+  virtual void placeForBreak(const physics::TableModel& table, double ball_radius, int breaker,
+                             physics::TableState<double>& balls) const;
+  /// Puts the balls a ruling re-spots back on the table, `state` the game after the ruling: on
+  /// the long string by default (WPA 1.4, spotBalls()).
+  virtual void respot(const physics::TableModel& table, double ball_radius, const std::vector<int>& ids,
+                      const GameState& state, physics::TableState<double>& balls) const;
+  /// What the rules do with the balls at rest before `state`'s next shot (three-cushion re-spots a
+  /// cue ball frozen to an object ball); empty if nothing, otherwise what was done and why.
+  virtual std::string beforeShot(const physics::TableModel& /*table*/, double /*ball_radius*/,
+                                 const GameState& /*state*/, physics::TableState<double>& /*balls*/) const
+  {
+    return "";
+  }
 };
 
-/// The names makeRules() accepts (rulesets.def): eight_ball, nine_ball, ten_ball.
+/// The names makeRules() accepts (rulesets.def).
 std::vector<std::string> rulesNames();
 /// How a ruleset is shown ("8-ball"); the name itself if it is not one.
 std::string rulesTitle(const std::string& name);
+/// The bundled table its games are played on unless told otherwise ("7ft", "carom"); empty if
+/// it is not a ruleset.
+std::string rulesTable(const std::string& name);
 /// Throws std::invalid_argument naming the unknown ruleset and the known ones.
 std::unique_ptr<Rules> makeRules(const std::string& name);
 
-/// The ruling on a shot under `rules`, with what every ruleset shares: a third foul in a row
-/// loses the rack (WPA 6.14), and a finished game takes no more shots.
+/// The ruling on a shot under `rules`, with what the rulesets share: a third foul in a row
+/// loses the rack where the rules say so (WPA 6.14), and a finished game takes no more shots.
 Ruling judgeShot(const Rules& rules, const GameState& state, const std::vector<int>& on_table, const Shot& shot);
 
-/// The state after `ruling`: its next player, ball in hand, groups and fouls; the game over if it
-/// says so; the calls cleared for the next shot.
+/// The state after `ruling`: its next player, ball in hand, groups and fouls, the shooter's
+/// points and a new inning when the turn passes; the game over if it says so; the calls cleared
+/// for the next shot.
 GameState afterRuling(GameState state, const Ruling& ruling);
 
-/// The object balls (ids 1 and up) on the table, in id order.
-std::vector<int> objectBallsOnTable(const physics::TableState<double>& state);
+/// The object balls on the table, every ball in play but `cue_ball`, in id order.
+std::vector<int> objectBallsOnTable(const physics::TableState<double>& state, int cue_ball = 0);
 
 /// Spots `ids` (WPA 1.4): each on the long string through the foot spot, as near the spot as it
 /// can stand, behind it (towards the foot cushion) first and then in front, frozen to a ball in

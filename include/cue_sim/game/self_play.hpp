@@ -4,6 +4,7 @@
 
 #include <array>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +26,18 @@ struct Choice
   physics::CueStrike<double> strike;
 };
 
+/// A player: chooses the next shot of a game.
+class Planner
+{
+public:
+  virtual ~Planner() = default;
+  virtual Choice choose(const GamePlay& game) const = 0;
+};
+
+/// The planner that fits the rules: a CaromPlanner where points are scored by caroms, a
+/// PottingPlanner otherwise.
+std::unique_ptr<Planner> plannerFor(const Rules& rules);
+
 /// The open shots of the player to shoot: pairs of a ball it may hit first and a pocket whose
 /// ghost-ball shot is cut at most PottingPlanner::kMaxCut with clear paths for the cue ball and the
 /// object ball (with the cue ball in hand, a clear path for the object ball is enough).
@@ -38,15 +51,30 @@ int openShots(const GamePlay& game);
 /// the shooter open shots (position) and a miss that leaves the opponent none (safety) count
 /// kPositionWeight for each, up to kOpenShotsCounted; among equals the slower. With no candidate
 /// it hits its first legal ball full at 2 m/s.
-class PottingPlanner
+class PottingPlanner : public Planner
 {
 public:
-  Choice choose(const GamePlay& game) const;
+  Choice choose(const GamePlay& game) const override;
 
   static constexpr double kMaxCut = 70 * 3.14159265358979323846 / 180;  ///< [rad]
   static constexpr double kBreakSpeed = 8.0;                            ///< [m/s]
   static constexpr double kPositionWeight = 5;                          ///< per open shot, against 100 for a pot
   static constexpr int kOpenShotsCounted = 10;                          ///< more open shots than this add nothing
+};
+
+/// Searches cue-ball paths that make a point. Every candidate (kDirections headings round the
+/// cue ball, at kSpeeds, with side spin kSide) is played on a copy of the game without noise;
+/// a won game, then a point, then a shot without a foul is best, and among points the one whose
+/// heading's neighbours score too (a wide window survives the cue's noise), then the slower. With no point
+/// it plays the slowest shot without a foul that meets a ball (a safety of sorts).
+class CaromPlanner : public Planner
+{
+public:
+  Choice choose(const GamePlay& game) const override;
+
+  static constexpr int kDirections = 180;                        ///< 2 degrees apart
+  static constexpr std::array<double, 2> kSpeeds{3.0, 4.5};      ///< [m/s]
+  static constexpr std::array<double, 3> kSide{-0.4, 0.0, 0.4};  ///< tip offset a [R]
 };
 
 /// One game as played: the table before each shot (the cue ball placed), the turn, and how it
@@ -70,6 +98,7 @@ struct SelfPlayOptions
   int games = 10;
   std::uint64_t seed = 0;
   int max_shots = 150;            ///< the cap: a game not over by then ends without a winner
+  int target = 0;                 ///< the points that win where the game keeps a score; 0: the rules' default
   physics::ExecutionNoise noise;  ///< the tournaments' deviations by default
 };
 
@@ -78,10 +107,11 @@ struct SelfPlaySummary
   int games = 0, finished = 0, capped = 0;
   std::array<int, 2> wins{0, 0};
   int shots = 0, fouls = 0;
+  int points = 0, innings = 0;  ///< where the game keeps a score: points scored, innings played
   std::vector<GameRecord> records;
 };
 
-/// Plays options.games games, the PottingPlanner on both sides, the break alternating (player 0
+/// Plays options.games games, plannerFor(rules) on both sides, the break alternating (player 0
 /// breaks the even games). Each game racks with seeds of its own; the noise's seed is options.seed. `progress` is
 /// called after each game.
 SelfPlaySummary selfPlay(const physics::Engine<double>& engine, const SelfPlayOptions& options,

@@ -25,12 +25,15 @@ struct RackOptions
 
 /// The names rackLayout() accepts.
 std::vector<std::string> rackNames();
-/// rackNames() for a message: "eight, nine, ten, empty".
+/// rackNames() for a message: "eight, nine, ten, carom, empty".
 std::string rackNamesText();
 
 /// "eight": cue ball on the head string, balls 1-15 in a triangle with the apex on the foot
 /// spot (8 in the centre, a solid and a stripe in the back corners). "nine": balls 1-9 in a
-/// diamond, 1 at the apex, 9 in the centre. "empty": the cue ball alone on the head string.
+/// diamond, 1 at the apex, 9 in the centre. "ten": balls 1-10 in a triangle, 10 in the centre.
+/// "carom": three-cushion's starting position, the red (2) on the foot spot, the yellow (1) on
+/// the head spot and the white (0) on the head string 18.2 cm to its left (UMB Art. 13, 23).
+/// "empty": the cue ball alone on the head string.
 /// The cue ball stands on TableModel::headSpot(), the apex on footSpot(). Throws
 /// std::invalid_argument for another name.
 template <typename S>

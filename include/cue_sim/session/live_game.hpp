@@ -27,6 +27,7 @@ struct GameRequest
   std::array<std::string, 2> players{"player 1", "player 2"};
   int breaker = 0;         ///< who shoots first: 0 or 1
   std::uint32_t seed = 0;  ///< of the rack's jitter (game::gameRack)
+  int target = 0;          ///< the points that win where the game keeps a score; 0: the rules' default
   std::vector<BallInput>
       balls;  ///< empty: rack and break; else the position to play on from, at rest, the break played
 };
@@ -76,7 +77,7 @@ public:
 
   /// A game shot was struck: the referee's ruling from its events, which takes effect when the
   /// balls rest.
-  const game::Ruling& struck(const physics::CueStrike<double>& strike,
+  const game::Ruling& struck(int ball, const physics::CueStrike<double>& strike,
                              const std::vector<physics::Event<double>>& events);
   /// The struck shot's balls rest as `at_rest`: the turn is taken, and the game's table (balls
   /// spotted, a new rack, the cue ball in hand) is what the live table goes on from.

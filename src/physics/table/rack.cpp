@@ -10,7 +10,7 @@ namespace physics
 {
 std::vector<std::string> rackNames()
 {
-  return {"eight", "nine", "ten", "empty"};
+  return {"eight", "nine", "ten", "carom", "empty"};
 }
 
 std::string rackNamesText()
@@ -23,6 +23,10 @@ std::string rackNamesText()
 
 namespace
 {
+/// [m] From the head spot to either starting spot along the head string, on a match carom table
+/// (UMB World Rules, Art. 13: 18.2 cm on the 2.84 m table).
+constexpr double kCaromStartingSpotOffset = 0.182;
+
 template <typename S>
 Ball<S> restingBall(int id, double x, double y, S radius)
 {
@@ -50,11 +54,20 @@ TableState<S> rackLayout(const std::string& name, const TableModel& table, S bal
     rows = &nine_rows;
   else if (name == "ten")
     rows = &ten_rows;
-  else if (name != "empty")
+  else if (name != "empty" && name != "carom")
     throw std::invalid_argument("unknown rack '" + name + "' (known: " + rackNamesText() + ")");
 
   const Eigen::Vector2d head = table.headSpot(), foot = table.footSpot();
   TableState<S> state;
+  if (name == "carom")
+  {
+    // The starting position (UMB Art. 23): the red (2) on the top spot, the other cue ball (1)
+    // on the bottom spot, and the breaker's (0) on a starting spot beside it.
+    state.balls.push_back(restingBall<S>(0, head.x(), head.y() + kCaromStartingSpotOffset, ball_radius));
+    state.balls.push_back(restingBall<S>(1, head.x(), head.y(), ball_radius));
+    state.balls.push_back(restingBall<S>(2, foot.x(), foot.y(), ball_radius));
+    return state;
+  }
   state.balls.push_back(restingBall<S>(0, head.x(), head.y(), ball_radius));
   if (!rows)
     return state;
