@@ -117,6 +117,9 @@ Environment::Environment(std::shared_ptr<const physics::Engine<double>> engine, 
   if (const std::string why = options_.whyInvalid(); !why.empty())
     throw std::invalid_argument(why);
   task_ = makeTask(*engine_, options_);
+  if (options_.action == "relative" && engine_->table().pockets().empty())
+    throw std::invalid_argument("action: relative aims at a ball and a pocket; '" + engine_->table().name() +
+                                "' has no pockets (absolute aims anywhere)");
   layout_ = std::make_shared<const ActionLayout>(options_);
   spaces_.action = layout_->box();
   if (options_.observation != "pixels")

@@ -228,11 +228,13 @@ enum InfoKey
   kOpponentShots,
   kOpponentReason,
   kOpenShots,
+  kPoints,
   kInfoKeys
 };
 constexpr std::array<const char*, kInfoKeys> kInfoKeyNames{
-    "shots",  "pocketed", "scratch",     "first_contact", "foul",           "events",          "shot_time",
-    "reason", "player",   "next_player", "winner",        "opponent_shots", "opponent_reason", "open_shots"};
+    "shots",  "pocketed",       "scratch",         "first_contact", "foul",
+    "events", "shot_time",      "reason",          "player",        "next_player",
+    "winner", "opponent_shots", "opponent_reason", "open_shots",    "points"};
 
 /// The keys as Python strings, made once and kept for the module's life.
 const std::array<py::str, kInfoKeys>& infoKeys()
@@ -284,6 +286,7 @@ py::dict infoDict(const learning::StepInfo& info, bool game, bool position)
     putInfo(p, kWinner, PyLong_FromLong(info.winner));
     putInfo(p, kOpponentShots, PyLong_FromLong(info.opponent_shots));
     putInfo(p, kOpponentReason, stringObject(info.opponent_reason));
+    putInfo(p, kPoints, PyLong_FromLong(info.points));
   }
   if (position)
     putInfo(p, kOpenShots, PyLong_FromLong(info.open_shots));
@@ -544,7 +547,7 @@ struct PyVectorEnvironment
   {
     const auto n = static_cast<py::ssize_t>(infos.size());
     py::array_t<int> shots(n), pocketed(n), first_contact(n), events(n), player(n), next_player(n), winner(n),
-        opponent_shots(n);
+        opponent_shots(n), points(n);
     py::array_t<bool> scratch(n), foul(n);
     py::array_t<double> shot_time(n);
     py::list reason;
@@ -562,13 +565,14 @@ struct PyVectorEnvironment
       next_player.mutable_at(i) = s.next_player;
       winner.mutable_at(i) = s.winner;
       opponent_shots.mutable_at(i) = s.opponent_shots;
+      points.mutable_at(i) = s.points;
       reason.append(s.reason);
     }
     return py::dict(py::arg("shots") = shots, py::arg("pocketed") = pocketed, py::arg("scratch") = scratch,
                     py::arg("first_contact") = first_contact, py::arg("foul") = foul, py::arg("events") = events,
                     py::arg("shot_time") = shot_time, py::arg("reason") = reason, py::arg("player") = player,
                     py::arg("next_player") = next_player, py::arg("winner") = winner,
-                    py::arg("opponent_shots") = opponent_shots);
+                    py::arg("opponent_shots") = opponent_shots, py::arg("points") = points);
   }
 };
 }  // namespace

@@ -660,6 +660,90 @@ TEST(LearningGames, TheCueBallInHandGoesWhereTheActionPlacesIt)
   EXPECT_LT(*std::max_element(creeps.begin(), creeps.end()) - *std::min_element(creeps.begin(), creeps.end()), 1e-9);
 }
 
+TEST(LearningGames, ThreeCushionSeesItsOwnCueBallAndScoreAndEndsOnTheRace)
+{
+  // Self-play with random strikes: before each step the features say which cue ball the shooter
+  // strikes and both scores (as shares of the race), as the points each step reports add up;
+  // the episode ends when a player reaches the race, which is that player's +1.
+  const std::size_t f = 3 * kBallSlots;
+  for (std::uint64_t seed = 0; seed < 3; ++seed)
+  {
+    EnvOptions o;
+    o.task = "three_cushion";
+    o.opponent = "self";
+    o.race = 2;
+    o.max_shots = 1000;
+    Environment env(engineOf("carom"), o);
+    std::vector<float> state = stateOf(env);
+    Random random(seed);
+    env.reset(seed, {state.data(), nullptr});
+    std::array<int, 2> score{0, 0};
+    int steps = 0, points = 0;
+    while (!env.done() && steps < 1000)
+    {
+      const float yellow = state[f + 26], own = state[f + 27], other = state[f + 28];
+      const std::vector<double> a = actionAt(env.spaces().action, random);
+      const StepResult r = env.step(a.data(), a.size(), {state.data(), nullptr});
+      ++steps;
+      const std::size_t me = static_cast<std::size_t>(r.info.player);
+      EXPECT_EQ(yellow, r.info.player == 1 ? 1.0f : 0.0f) << "player " << r.info.player << " strikes its own ball";
+      EXPECT_EQ(own, score[me] / 2.0f);
+      EXPECT_EQ(other, score[1 - me] / 2.0f);
+      ASSERT_TRUE(r.info.points == 0 || r.info.points == 1);
+      score[me] += r.info.points;
+      points += r.info.points;
+      EXPECT_EQ(r.info.points == 1, r.info.reason.rfind("a point (UMB Art. 83)", 0) == 0) << r.info.reason;
+      if (r.terminated)
+      {
+        EXPECT_EQ(score[static_cast<std::size_t>(r.info.winner)], 2);
+        EXPECT_EQ(r.info.winner, r.info.player);
+        EXPECT_NEAR(r.reward, 1.0 + 0.1, 1e-12);  // the won game and the point that won it
+      }
+    }
+    EXPECT_TRUE(env.done()) << "seed " << seed << ": no race won in " << steps << " random shots";
+    EXPECT_GE(points, 2);
+  }
+  // The carom table takes only carom games, and aiming at pockets needs pockets.
+  EnvOptions o;
+  o.task = "three_cushion";
+  EXPECT_THROW(Environment(engineOf("7ft"), o), std::invalid_argument);
+  o.action = "relative";
+  EXPECT_THROW(Environment(engineOf("carom"), o), std::invalid_argument);
+  o = {};
+  o.task = "eight_ball";
+  EXPECT_THROW(Environment(engineOf("carom"), o), std::invalid_argument);
+  o.race = 3;
+  EXPECT_THROW(Environment(engineOf("7ft"), o), std::invalid_argument);  // 8-ball keeps no score
+}
+
+TEST(LearningGames, ThreeCushionAgainstThePlannerIsARaceTheCaromPlannerPlays)
+{
+  // The opponent is the carom planner: its turns score (it finds a point nearly every time
+  // without noise), and within the agent's steps the game reaches its end.
+  EnvOptions o;
+  o.task = "three_cushion";
+  o.race = 3;
+  o.opponent_noise = false;
+  Environment env(engineOf("carom"), o);
+  std::vector<float> state = stateOf(env);
+  Random random(5);
+  env.reset(5, {state.data(), nullptr});
+  int steps = 0, opponent_shots = 0;
+  StepResult last;
+  while (!env.done() && steps < 100)
+  {
+    const std::vector<double> a = actionAt(env.spaces().action, random);
+    last = env.step(a.data(), a.size(), {state.data(), nullptr});
+    EXPECT_EQ(last.info.player, 0);
+    opponent_shots += last.info.opponent_shots;
+    ++steps;
+  }
+  ASSERT_TRUE(last.terminated);
+  EXPECT_EQ(last.info.winner, 1) << "random strikes against a planner that finds its points: " << last.info.reason;
+  EXPECT_GE(opponent_shots, 3);
+  EXPECT_NE(last.info.opponent_reason.find("wins"), std::string::npos) << last.info.opponent_reason;
+}
+
 }  // namespace
 }  // namespace learning
 }  // namespace cue_sim

@@ -104,7 +104,8 @@ TEST_F(LiveGameTest, StartingAGameRacksForTheBreakAndRefusesFreeEdits)
       }(),
       kStart);
   EXPECT_FALSE(object_ball.success);
-  EXPECT_NE(object_ball.message.find("ball_id must be 0"), std::string::npos) << object_ball.message;
+  EXPECT_NE(object_ball.message.find("ball_id: ball 5 is not struck in a game of eight_ball"), std::string::npos)
+      << object_ball.message;
   EXPECT_EQ(table_.motion().layoutVersion(), version);
   EXPECT_EQ(table_.motion().balls().size(), 16u);
 }

@@ -1,8 +1,10 @@
-// A game, one task per ruleset (eight_ball, nine_ball, ten_ball): whole games under the referee, a
-// shot a step. Against the built-in opponent (the core's PottingPlanner, with execution noise and
-// a skill), whose turns are played within the agent's step; or in self-play, where every step is
-// the shot of whoever is to play and everything is seen from the shooter's side.
+// A game, one task per ruleset (game::rulesNames()): whole games under the referee, a shot a step.
+// Against the built-in opponent (the core's planner for the game, game::plannerFor: pots in pool,
+// caroms in three-cushion; with execution noise and a skill), whose turns are played within the
+// agent's step; or in self-play, where every step is the shot of whoever is to play and everything
+// is seen from the shooter's side (its own cue ball, its own score).
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 
@@ -16,8 +18,10 @@ namespace learning
 {
 namespace
 {
-/// A whole game's shot cap when max_shots leaves it to the task: self-play's.
+/// A whole game's shot cap when max_shots leaves it to the task: self-play's for pool; in a race
+/// (three-cushion) this many shots per point of the target, where the planner takes about 5.5.
 constexpr int kGameShotCap = 150;
+constexpr int kRaceShotsPerPoint = 10;
 
 class GameTask : public Task
 {
@@ -29,9 +33,19 @@ public:
       skill_(options.opponent_skill),
       opponent_noise_(options.opponent_noise ? physics::ExecutionNoise() : physics::ExecutionNoise::none()),
       shaping_(options.shaping),
-      cap_(options.max_shots > 0 ? options.max_shots : kGameShotCap)
+      race_(options.race),
+      cap_(options.max_shots > 0 ? options.max_shots : kGameShotCap),
+      planner_(game::plannerFor(*game::makeRules(rules_)))
   {
-    requirePockets(engine, rules_);
+    const int target = game::makeRules(rules_)->defaultTarget();
+    if (options.race > 0 && target == 0)
+      throw std::invalid_argument("race: " + rules_ + " keeps no score; race must be 0");
+    if (options.max_shots == 0 && target > 0)
+      cap_ = kRaceShotsPerPoint * (race_ > 0 ? race_ : target);
+    const bool pockets = !engine.table().pockets().empty();
+    if (pockets != game::makeRules(rules_)->needsPockets())
+      throw std::invalid_argument("task: " + rules_ + " is played on a table " + (pockets ? "without" : "with") +
+                                  " pockets; '" + engine.table().name() + "' has " + (pockets ? "some" : "none"));
   }
   GameTask(const GameTask& other)
     : Task(other),
@@ -41,7 +55,9 @@ public:
       skill_(other.skill_),
       opponent_noise_(other.opponent_noise_),
       shaping_(other.shaping_),
+      race_(other.race_),
       cap_(other.cap_),
+      planner_(other.planner_),
       game_(other.game_ ? std::make_unique<game::GamePlay>(*other.game_) : nullptr),
       start_(other.start_),
       turns_(other.turns_),
@@ -62,6 +78,8 @@ public:
       game_ = std::make_unique<game::GamePlay>(engine_, rules_, players(), game::gameRack(start_.rack_seed),
                                                start_.breaker);
       game_->setShotCap(cap_);
+      if (race_ > 0)
+        game_->setTarget(race_);
       turns_.clear();
       placement_.reset();
       if (!self_play_)
@@ -141,12 +159,15 @@ public:
     for (int id = 1; id < 16; ++id)
       add("legal_first" + std::to_string(id));
     add("shots_used");
+    add("cue_ball_1");      // the shooter strikes ball 1 (three-cushion's yellow), not ball 0
+    add("own_score");       // where the game keeps a score: the shooter's, as a share of the target
+    add("opponent_score");  // and the other player's
   }
   void writeFeatures(float* out) const override
   {
     const game::GameState& s = game_->state();
     const int me = s.turn, other = 1 - s.turn;
-    std::fill(out, out + 26, 0.0f);
+    std::fill(out, out + kFeatures, 0.0f);
     out[static_cast<int>(s.groups[static_cast<std::size_t>(me)])] = 1;
     out[3 + static_cast<int>(s.ball_in_hand)] = 1;
     out[6] = s.break_shot;
@@ -157,12 +178,20 @@ public:
       if (id >= 1 && id < 16)
         out[9 + id] = 1;
     out[25] = static_cast<float>(std::min(1.0, static_cast<double>(s.shots) / cap_));
+    out[26] = game_->cueBall() == 1;
+    if (s.target > 0)
+    {
+      out[27] =
+          static_cast<float>(std::min(1.0, static_cast<double>(s.score[static_cast<std::size_t>(me)]) / s.target));
+      out[28] =
+          static_cast<float>(std::min(1.0, static_cast<double>(s.score[static_cast<std::size_t>(other)]) / s.target));
+    }
   }
 
 private:
   Eigen::Vector2d cueBall() const
   {
-    return game_->table().balls[static_cast<std::size_t>(game_->table().indexOf(0))].r.head<2>();
+    return game_->table().balls[static_cast<std::size_t>(game_->table().indexOf(game_->cueBall()))].r.head<2>();
   }
 
   std::array<std::string, 2> players() const
@@ -172,10 +201,11 @@ private:
   }
 
   /// The shooter's reward for a turn: the game's end (1 won, -1 lost), and `shaping_` for each
-  /// ball pocketed on a shot that keeps the table, less `shaping_` for a foul.
+  /// ball pocketed on a shot that keeps the table and each point scored (three-cushion), less
+  /// `shaping_` for a foul.
   double shapedReward(const game::Turn& turn, int shooter) const
   {
-    double reward = 0;
+    double reward = shaping_ * turn.ruling.points;
     if (turn.ruling.continues)
       reward += shaping_ * static_cast<double>(turn.facts.pocketed.size());
     if (turn.ruling.foul)
@@ -189,12 +219,11 @@ private:
   /// for the agent (player 0) in `result`.
   void playOpponent(Random& random, StepResult& result)
   {
-    const game::PottingPlanner planner;
     while (!game_->state().over && game_->state().turn != kAgent)
     {
       game::Choice c;
       if (random.unit() < skill_)
-        c = planner.choose(*game_);
+        c = planner_->choose(*game_);
       else
         c = wildChoice(random);
       PlayedTurn played;
@@ -255,7 +284,8 @@ private:
     // No free place at all: the cue ball stays where it is (where the game put it), which is free.
   }
 
-  static constexpr int kAgent = 0;  ///< against the opponent, the agent is player 0
+  static constexpr int kAgent = 0;      ///< against the opponent, the agent is player 0
+  static constexpr int kFeatures = 29;  ///< addFeatures' count
 
   const physics::Engine<double>& engine_;
   std::string rules_;
@@ -263,7 +293,9 @@ private:
   double skill_;
   physics::ExecutionNoise opponent_noise_;
   double shaping_;
+  int race_;
   int cap_;
+  std::shared_ptr<const game::Planner> planner_;  ///< the opponent's (game::plannerFor)
   std::unique_ptr<game::GamePlay> game_;
   GameStart start_;
   std::vector<PlayedTurn> turns_;             ///< played by the last reset or step

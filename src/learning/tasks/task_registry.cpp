@@ -50,6 +50,7 @@ void describeTurn(const game::Turn& turn, StepInfo& info)
   info.scratch = turn.facts.scratch;
   info.first_contact = turn.facts.first_contact;
   info.foul = turn.ruling.foul;
+  info.points = turn.ruling.points;
   info.reason = turn.ruling.reason;
 }
 
