@@ -21,7 +21,7 @@ __path__ = extend_path(__path__, __name__)
 del extend_path
 
 _API = ("Engine", "State", "Shot", "Samples", "Batch", "TableGeometry", "simulate", "batch", "tables", "models",
-        "parameters", "ball_colour", "is_striped", "EVENT_KINDS", "MOTION")
+        "parameters", "ball_colour", "is_striped", "is_numbered", "EVENT_KINDS", "MOTION")
 _GAMES = ("Game", "Ruling", "rules")
 _DRAWING = ("draw_shot",)
 __all__ = list(_API + _GAMES + _DRAWING)

@@ -107,14 +107,20 @@ class TableGeometry:
     pockets: Dict[str, Tuple[float, float, float]]
 
 
-def ball_colour(ball: int) -> Tuple[float, float, float]:
+def ball_colour(ball: int, carom: bool = False) -> Tuple[float, float, float]:
     """A ball's colour (r, g, b in [0, 1]) as rviz shows it: standard pool colours, 9-15 the
-    stripes of 1-7, 0 the cue ball."""
-    return tuple(_core.ball_colour(int(ball)))
+    stripes of 1-7, 0 the cue ball; with `carom` (a table without pockets) carom's set, 0 white,
+    1 yellow, 2 red."""
+    return tuple(_core.ball_colour(int(ball), bool(carom)))
 
 
-def is_striped(ball: int) -> bool:
-    return bool(_core.is_striped(int(ball)))
+def is_striped(ball: int, carom: bool = False) -> bool:
+    return bool(_core.is_striped(int(ball), bool(carom)))
+
+
+def is_numbered(ball: int, carom: bool = False) -> bool:
+    """Whether the ball carries its number: pool's object balls; no carom ball does."""
+    return bool(_core.is_numbered(int(ball), bool(carom)))
 
 
 class Engine:

@@ -41,8 +41,10 @@ Bgr bgrOf(const Rgb& c)
 }
 }  // namespace
 
-BallAppearance::BallAppearance(int id)
-  : colour_(bgrOf(ballColour(id))), striped_(isStriped(id)), number_(id > 0 ? numberDisc(id) : cv::Mat())
+BallAppearance::BallAppearance(int id, BallSet set)
+  : colour_(bgrOf(ballColour(id, set))),
+    striped_(isStriped(id, set)),
+    number_(isNumbered(id, set) ? numberDisc(id) : cv::Mat())
 {
 }
 

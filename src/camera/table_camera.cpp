@@ -63,7 +63,8 @@ std::string CameraOptions::whyInvalid() const
 class TableCamera::Scene
 {
 public:
-  Scene(const physics::TableModel& table, const Intrinsics& k) : texture(table)
+  Scene(const physics::TableModel& table, const Intrinsics& k)
+    : texture(table), set(ballSetFor(!table.pockets().empty()))
   {
     rays.resize(static_cast<std::size_t>(k.width) * k.height);
     for (int y = 0; y < k.height; ++y)
@@ -78,11 +79,12 @@ public:
   {
     auto it = looks.find(id);
     if (it == looks.end())
-      it = looks.emplace(id, BallAppearance(id)).first;
+      it = looks.emplace(id, BallAppearance(id, set)).first;
     return it->second;
   }
 
   TableTexture texture;
+  BallSet set;                        ///< the table's (carom's on a table without pockets)
   std::vector<Eigen::Vector3f> rays;  ///< unit, camera frame, row by row
   std::map<int, BallAppearance> looks;
 };

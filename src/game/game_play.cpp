@@ -161,6 +161,7 @@ Turn GamePlay::judge(const physics::CueStrike<double>& strike, bool push_out,
   Turn turn;
   turn.player = state_.turn;
   turn.ball = ball < 0 ? cueBall() : ball;
+  turn.before = table_;
   turn.strike = strike;
   turn.push_out = push_out;
   turn.called_ball = state_.called_ball;

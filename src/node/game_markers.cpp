@@ -19,19 +19,29 @@ constexpr double kTextGap = 0.42;
 /// Radius of the ring drawn round a called pocket's centre [m], and its line's width.
 constexpr double kCallRing = 0.08, kCallLine = 0.008;
 
+/// Width of the line of a carom point's path [m].
+constexpr double kPathLine = 0.006;
+
 std::string statusText(const GameState& s)
 {
   std::ostringstream text;
-  text << game::rulesTitle(s.rules) << ", shot " << s.shots + 1;
-  const bool groups = game::makeRules(s.rules)->playsGroups();
+  const auto rules = game::makeRules(s.rules);
+  text << game::rulesTitle(s.rules);
+  if (s.target > 0)
+    text << ", race to " << s.target;
+  text << ", shot " << s.shots + 1;
   if (s.over)
     text << ": over, " << (s.winner >= 0 ? s.players[static_cast<std::size_t>(s.winner)] + " won" : "no winner");
   for (std::size_t i = 0; i < 2; ++i)
   {
     text << "\n" << (!s.over && s.turn == static_cast<int>(i) ? "> " : "   ") << s.players[i];
-    if (groups)
+    if (rules->playsGroups())
       text << ", " << s.groups[i];
-    text << ", fouls " << s.consecutive_fouls[i];
+    if (s.target > 0)
+      text << " (ball " << rules->cueBall(static_cast<int>(i)) << "), " << s.score[i] << " in " << s.innings[i]
+           << (s.innings[i] == 1 ? " inning" : " innings");
+    else
+      text << ", fouls " << s.consecutive_fouls[i];
   }
   if (!s.over)
   {
@@ -47,13 +57,20 @@ std::string statusText(const GameState& s)
       text << ", push-out";
   }
   if (s.last_ruling.refereed)
-    text << "\nlast: " << (s.last_ruling.foul ? "foul" : "legal") << " (" << s.last_ruling.rule << ")";
+    text << "\nlast: "
+         << (s.last_ruling.foul         ? "foul"
+             : s.last_ruling.points > 0 ? "point"
+             : s.target > 0             ? "no point"
+                                        : "legal")
+         << " (" << s.last_ruling.rule << ")";
+  if (!s.before_shot.empty() && !s.shot_in_progress)
+    text << "\nballs re-spotted before this shot";
   return text.str();
 }
 }  // namespace
 
 visualization_msgs::MarkerArray gameMarkers(const GameState& state, const physics::TableModel& table,
-                                            double cushion_height)
+                                            double cushion_height, const std::vector<Eigen::Vector2d>& point_path)
 {
   visualization_msgs::MarkerArray array;
   Marker clear;
@@ -97,6 +114,21 @@ visualization_msgs::MarkerArray gameMarkers(const GameState& state, const physic
     a.z = b.z = kOnCloth;
     line.points = {a, b};
     array.markers.push_back(line);
+  }
+  if (point_path.size() > 1)
+  {
+    Marker path = markerIn(frame, "point_path", 0, Marker::LINE_STRIP);
+    path.scale.x = kPathLine;
+    path.color = rgba(1.0f, 0.85f, 0.0f, 0.9f);
+    for (const Eigen::Vector2d& p : point_path)
+    {
+      geometry_msgs::Point point;
+      point.x = p.x();
+      point.y = p.y();
+      point.z = kOnCloth;
+      path.points.push_back(point);
+    }
+    array.markers.push_back(path);
   }
   for (const auto& pocket : table.pockets())
     if (!state.over && pocket.name == state.called_pocket)

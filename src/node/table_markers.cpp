@@ -75,9 +75,9 @@ Marker markerIn(const std::string& frame, const std::string& ns, int id, int typ
   return m;
 }
 
-std_msgs::ColorRGBA poolColour(int id)
+std_msgs::ColorRGBA poolColour(int id, BallSet set)
 {
-  const Rgb c = ballColour(id);
+  const Rgb c = ballColour(id, set);
   return rgba(c.r, c.g, c.b);
 }
 
@@ -151,14 +151,15 @@ visualization_msgs::MarkerArray tableMarkers(const physics::TableModel& table, c
     if (!m.points.empty())
       array.markers.push_back(m);
   }
+  const BallSet set = ballSetFor(!table.pockets().empty());
   for (const auto& b : state.balls)
   {
     const std::string frame = frames.ball_prefix + std::to_string(b.id);
-    const bool striped = isStriped(b.id);
+    const bool striped = isStriped(b.id, set);
     Marker ball = markerIn(frame, "balls", b.id, Marker::SPHERE);
     ball.frame_locked = true;
     ball.scale.x = ball.scale.y = ball.scale.z = 2 * R;
-    ball.color = striped ? poolColour(0) : poolColour(b.id);
+    ball.color = striped ? poolColour(0) : poolColour(b.id, set);
     array.markers.push_back(ball);
     if (striped)
     {
@@ -172,9 +173,11 @@ visualization_msgs::MarkerArray tableMarkers(const physics::TableModel& table, c
     }
     // The number twice, at the poles of the ball's own frame as on a real ball: it turns with the
     // ball (tf carries the orientation), and one of the two is always on the upper half or at the
-    // sides. Large, in the colour that reads on the ball.
+    // sides. Large, in the colour that reads on the ball. Carom balls carry none.
     for (const int pole : {1, -1})
     {
+      if (!isNumbered(b.id, set))
+        break;
       Marker label = markerIn(frame, "labels", pole > 0 ? b.id : kSecondLabel + b.id, Marker::TEXT_VIEW_FACING);
       label.frame_locked = true;
       label.pose.position.z = pole * 1.05 * R;

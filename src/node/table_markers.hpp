@@ -1,15 +1,17 @@
-// The rviz picture of the table: cloth, cushions, pockets, and balls in standard pool colours.
+// The rviz picture of the table: cloth, cushions, pockets, and balls in the colours of the table's
+// set (pool's numbered balls, carom's three).
 #pragma once
 
 #include <visualization_msgs/MarkerArray.h>
 
 #include "cue_sim/physics/table_model.hpp"
 #include "cue_sim/physics/table_state.hpp"
+#include "cue_sim/scene/ball_colours.hpp"
 
 namespace cue_sim
 {
 /// A ball's colour (scene/ball_colours.hpp) as a marker colour.
-std_msgs::ColorRGBA poolColour(int id);
+std_msgs::ColorRGBA poolColour(int id, BallSet set = BallSet::Pool);
 std_msgs::ColorRGBA rgba(float r, float g, float b, float a = 1.0f);
 /// A marker to ADD in `frame`, of `type`, with an identity pose.
 visualization_msgs::Marker markerIn(const std::string& frame, const std::string& ns, int id, int type);

@@ -272,11 +272,19 @@ PYBIND11_MODULE(_core, m)
   m.def("cue_models", &physics::cueModelNames);
   m.def("param_fields", &paramFields);
   m.def("rack_names", &physics::rackNames);
-  m.def("ball_colour", [](int id) {
-    const Rgb c = ballColour(id);
-    return std::make_tuple(c.r, c.g, c.b);
-  });
-  m.def("is_striped", &isStriped);
+  m.def(
+      "ball_colour",
+      [](int id, bool carom) {
+        const Rgb c = ballColour(id, carom ? BallSet::Carom : BallSet::Pool);
+        return std::make_tuple(c.r, c.g, c.b);
+      },
+      py::arg("id"), py::arg("carom") = false);
+  m.def(
+      "is_striped", [](int id, bool carom) { return isStriped(id, carom ? BallSet::Carom : BallSet::Pool); },
+      py::arg("id"), py::arg("carom") = false);
+  m.def(
+      "is_numbered", [](int id, bool carom) { return isNumbered(id, carom ? BallSet::Carom : BallSet::Pool); },
+      py::arg("id"), py::arg("carom") = false);
   m.def("number_colour", [](int id) {
     const Rgb c = numberColour(id);
     return std::make_tuple(c.r, c.g, c.b);

@@ -4,8 +4,19 @@
 
 namespace cue_sim
 {
-Rgb ballColour(int id)
+BallSet ballSetFor(bool table_has_pockets)
 {
+  return table_has_pockets ? BallSet::Pool : BallSet::Carom;
+}
+
+Rgb ballColour(int id, BallSet set)
+{
+  if (set == BallSet::Carom)
+  {
+    // The yellow and the red of a carom set, as pool's 1 and 3.
+    static const std::array<Rgb, 3> carom = {{{0.97f, 0.97f, 0.93f}, {1.0f, 0.82f, 0.0f}, {0.85f, 0.05f, 0.05f}}};
+    return carom[id >= 0 && id <= 2 ? id : 0];
+  }
   static const std::array<Rgb, 9> colours = {{
       {0.97f, 0.97f, 0.93f},  // cue ball: off-white
       {1.0f, 0.82f, 0.0f},    // yellow
@@ -22,9 +33,14 @@ Rgb ballColour(int id)
   return colours[id >= 0 && id <= 8 ? id : 0];
 }
 
-bool isStriped(int id)
+bool isStriped(int id, BallSet set)
 {
-  return id >= 9 && id <= 15;
+  return set == BallSet::Pool && id >= 9 && id <= 15;
+}
+
+bool isNumbered(int id, BallSet set)
+{
+  return set == BallSet::Pool && id > 0;
 }
 
 Rgb numberColour(int id)

@@ -25,6 +25,7 @@ Scene shotScene(const game::GameRecord& record, std::size_t k, const std::string
       scene.state.balls.push_back(b);
     }
   Shot shot;
+  shot.ball = record.turns.at(k).ball;
   shot.strike = record.turns.at(k).strike;
   shot.push_out = record.turns.at(k).push_out;
   scene.shot = shot;
@@ -40,10 +41,11 @@ nlohmann::json turnJson(const game::GameRecord& record, std::size_t k, const phy
 {
   const game::Turn& turn = record.turns[k];
   const physics::TableState<double>& before = record.before[k];
-  const physics::Ball<double>& cue = before.balls[static_cast<std::size_t>(before.indexOf(0))];
+  const physics::Ball<double>& cue = before.balls[static_cast<std::size_t>(before.indexOf(turn.ball))];
   const std::string pocket =
       turn.called_pocket >= 0 ? table.pockets()[static_cast<std::size_t>(turn.called_pocket)].name : "";
   return {{"player", turn.player},
+          {"ball", turn.ball},
           {"cue_ball", {cue.r.x(), cue.r.y()}},
           {"called_ball", turn.called_ball},
           {"called_pocket", pocket},

@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "cue_sim/game/game_play.hpp"
 #include "cue_sim/game/referee.hpp"
 #include "cue_sim/physics/motion.hpp"
 #include "cue_sim/physics/rack.hpp"
@@ -244,13 +245,27 @@ int calledPocket(const YAML::Node& node, const physics::TableModel& table)
 const std::vector<std::string> kGroupNames{"open", "solids", "stripes"};
 const std::vector<std::string> kBallInHandNames{"none", "anywhere", "behind_head_string"};
 
+/// A pair of counts of a game block, each in [0, high].
+std::array<int, 2> countsFrom(const YAML::Node& node, const std::string& field, int high)
+{
+  std::array<int, 2> counts{0, 0};
+  for (std::size_t k = 0; k < 2; ++k)
+  {
+    const std::string name = field + "[" + std::to_string(k) + "]";
+    counts[k] = integer(pairOf(node, field)[k], name);
+    if (counts[k] < 0 || counts[k] > high)
+      throw SceneError(name + " must be in [0, " + std::to_string(high) + "], got " + std::to_string(counts[k]));
+  }
+  return counts;
+}
+
 /// The scene's `game:` block: the rules, then each field of the state with a game just started
-/// (player 0 to break, ball in hand behind the head string) as its default.
+/// (player 0 to break; in pool the ball in hand behind the head string) as its default.
 game::GameState gameFrom(const YAML::Node& node)
 {
   onlyKeys(node, "game",
            {"rules", "players", "turn", "break", "groups", "called_ball", "called_pocket", "ball_in_hand", "fouls",
-            "push_out_allowed"});
+            "push_out_allowed", "score", "target", "innings"});
   game::GameState g;
   if (!node["rules"])
   {
@@ -260,9 +275,10 @@ game::GameState gameFrom(const YAML::Node& node)
     throw SceneError("game needs 'rules' (one of " + known + ")");
   }
   g.rules = text(node["rules"], "game.rules");
+  std::unique_ptr<game::Rules> rules;
   try
   {
-    game::makeRules(g.rules);
+    rules = game::makeRules(g.rules);
   }
   catch (const std::invalid_argument& e)
   {
@@ -278,9 +294,12 @@ game::GameState gameFrom(const YAML::Node& node)
       throw SceneError("game.turn must be 0 or 1 (the player to shoot), got " + std::to_string(g.turn));
   }
   g.break_shot = node["break"] ? flag(node["break"], "game.break") : true;
-  g.ball_in_hand = node["ball_in_hand"]
-                       ? choice<game::BallInHand>(node["ball_in_hand"], "game.ball_in_hand", kBallInHandNames)
-                       : (g.break_shot ? game::BallInHand::BehindHeadString : game::BallInHand::None);
+  g.ball_in_hand =
+      node["ball_in_hand"]
+          ? choice<game::BallInHand>(node["ball_in_hand"], "game.ball_in_hand", kBallInHandNames)
+          : (g.break_shot && rules->needsPockets() ? game::BallInHand::BehindHeadString : game::BallInHand::None);
+  if (!rules->needsPockets() && g.ball_in_hand != game::BallInHand::None)
+    throw SceneError("game.ball_in_hand: " + g.rules + " has no ball in hand; it must be none");
   if (node["groups"])
   {
     for (std::size_t k = 0; k < 2; ++k)
@@ -304,6 +323,25 @@ game::GameState gameFrom(const YAML::Node& node)
       g.consecutive_fouls[k] = fouls;
     }
   g.push_out_allowed = node["push_out_allowed"] ? flag(node["push_out_allowed"], "game.push_out_allowed") : false;
+  g.target = rules->defaultTarget();
+  if (node["target"])
+  {
+    g.target = integer(node["target"], "game.target");
+    const int high = game::GamePlay::kMaxTarget;
+    if (rules->defaultTarget() == 0 ? g.target != 0 : (g.target < 1 || g.target > high))
+      throw SceneError("game.target must be " +
+                       (rules->defaultTarget() == 0 ? g.rules + "'s 0 (it keeps no score)"
+                                                    : "in [1, " + std::to_string(high) + "]") +
+                       ", got " + std::to_string(g.target));
+  }
+  if (node["score"])
+  {
+    if (g.target == 0)
+      throw SceneError("game.score: " + g.rules + " keeps no score");
+    g.score = countsFrom(node["score"], "game.score", g.target - 1);
+  }
+  if (node["innings"])
+    g.innings = countsFrom(node["innings"], "game.innings", 1000000);
   return g;
 }
 }  // namespace
@@ -378,8 +416,14 @@ Scene loadScene(const std::string& yaml_text)
     {
       scene.game = gameFrom(root["game"]);
       scene.game->called_pocket = calledPocket(root["game"]["called_pocket"], *scene.table);
-      if (scene.shot && scene.shot->ball != 0)
-        throw SceneError("shot.ball must be 0 in a game: only the cue ball is struck");
+      const auto rules = game::makeRules(scene.game->rules);
+      if (scene.table->pockets().empty() == rules->needsPockets())
+        throw SceneError("game.rules: " + scene.game->rules + " is played on a table " +
+                         (rules->needsPockets() ? "with" : "without") + " pockets; '" + scene.table->name() + "' has " +
+                         (rules->needsPockets() ? "none" : "some"));
+      if (scene.shot && !rules->strikable(scene.shot->ball))
+        throw SceneError("shot.ball: ball " + std::to_string(scene.shot->ball) + " is not struck in a game of " +
+                         scene.game->rules + "; the shooter's is " + std::to_string(rules->cueBall(scene.game->turn)));
       if (root["duration"])
         throw SceneError("duration: a game's shot is ruled on at rest; drop duration");
     }
@@ -465,6 +509,9 @@ std::string sceneYaml(const Scene& scene, const std::string& comment)
         << "\n  ball_in_hand: " << kBallInHandNames[static_cast<std::size_t>(g.ball_in_hand)] << "\n  fouls: ["
         << g.consecutive_fouls[0] << ", " << g.consecutive_fouls[1]
         << "]\n  push_out_allowed: " << (g.push_out_allowed ? "true" : "false") << "\n";
+    if (g.target > 0)
+      out << "  target: " << g.target << "\n  score: [" << g.score[0] << ", " << g.score[1] << "]\n  innings: ["
+          << g.innings[0] << ", " << g.innings[1] << "]\n";
   }
   return out.str();
 }

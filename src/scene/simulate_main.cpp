@@ -61,7 +61,8 @@ int main(int argc, char** argv)
       throw cue_sim::SceneError("balls: " + invalid);
     if (scene.game && (!scene.shot || duration))
       throw cue_sim::SceneError("game: a game's scene needs a shot, ruled on at rest (no --duration)");
-    const std::vector<int> on_table = cue_sim::game::objectBallsOnTable(scene.state);
+    const int cue_ball = scene.game ? cue_sim::game::makeRules(scene.game->rules)->cueBall(scene.game->turn) : 0;
+    const std::vector<int> on_table = cue_sim::game::objectBallsOnTable(scene.state, cue_ball);
     if (scene.game && scene.game->called_ball >= 0 &&
         std::find(on_table.begin(), on_table.end(), scene.game->called_ball) == on_table.end())
       throw cue_sim::SceneError("game.called_ball: ball " + std::to_string(scene.game->called_ball) +
@@ -85,9 +86,9 @@ int main(int argc, char** argv)
     if (scene.game)
     {
       // The referee rules on the shot, and the state the game goes on from follows the ruling.
-      const cue_sim::game::Ruling ruling =
-          cue_sim::game::judgeShot(*cue_sim::game::makeRules(scene.game->rules), *scene.game, on_table,
-                                   {cue_sim::game::readShot(events, scene.table.get()), scene.shot->push_out});
+      const cue_sim::game::Ruling ruling = cue_sim::game::judgeShot(
+          *cue_sim::game::makeRules(scene.game->rules), *scene.game, on_table,
+          {cue_sim::game::readShot(events, scene.table.get(), scene.shot->ball), scene.shot->push_out});
       report["ruling"] = cue_sim::rulingJson(ruling);
       report["game"] = cue_sim::gameStateJson(cue_sim::game::afterRuling(*scene.game, ruling), *scene.table);
     }

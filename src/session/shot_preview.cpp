@@ -51,5 +51,17 @@ std::vector<PreviewPath> previewPaths(const ShotPrediction& prediction, const ph
   return paths;
 }
 
+PreviewPath shotPath(const physics::Engine<double>& engine, const physics::TableState<double>& start, const Shot& shot)
+{
+  PredictionOptions options;
+  options.trajectories = true;
+  for (PreviewPath& path : previewPaths(predictShot(engine, start, shot, options), engine.params()))
+    if (path.id == shot.ball_id)
+      return std::move(path);
+  PreviewPath none;
+  none.id = shot.ball_id;
+  return none;
+}
+
 }  // namespace session
 }  // namespace cue_sim

@@ -141,23 +141,74 @@ TEST(SimulateProgram, AGameSceneIsRuledOn)
   EXPECT_EQ(simulate("rack: eight\nshot: {speed: 8}\ngame: {rules: eight_ball}\n", "--duration 0.1").status, 1);
 }
 
+TEST(SimulateProgram, AThreeCushionSceneCountsItsCushionsAndKeepsTheScore)
+{
+  // The yellow's player (turn 1) drives the yellow straight up the table (+y) off the side
+  // cushion and back down onto the white, without the red: no point, the inning passes, and the
+  // score stands. The same shot with the white struck is the wrong ball (UMB Art. 41).
+  const std::string balls =
+      "table: carom\nballs: [{id: 0, position: [0.5, -0.3]}, {id: 1, position: [0.5, 0.2]}, {id: 2, position: "
+      "[-0.9, 0.4]}]\n";
+  const std::string game = "game: {rules: three_cushion, break: false, turn: 1, target: 10, score: [4, 7]}\n";
+  const ProgramRun run = simulate(balls + "shot: {ball: 1, speed: 2, phi: 1.5707963267948966}\n" + game);
+  ASSERT_EQ(run.status, 0) << run.out;
+  const auto report = nlohmann::json::parse(run.out);
+  EXPECT_EQ(report["ruling"]["rule"], "UMB Art. 83") << report["ruling"].dump();
+  EXPECT_FALSE(report["ruling"]["foul"].get<bool>());
+  EXPECT_EQ(report["ruling"]["points"], 0);
+  EXPECT_NE(report["ruling"]["reason"].get<std::string>().find("met the white (0) but not the other"),
+            std::string::npos)
+      << report["ruling"].dump();
+  EXPECT_EQ(report["game"]["turn"], 0);
+  EXPECT_EQ(report["game"]["score"], (nlohmann::json{4, 7}));
+  EXPECT_EQ(report["game"]["target"], 10);
+  const ProgramRun wrong = simulate(balls + "shot: {ball: 0, speed: 2, phi: 1.5707963267948966}\n" + game);
+  ASSERT_EQ(wrong.status, 0) << wrong.out;
+  EXPECT_EQ(nlohmann::json::parse(wrong.out)["ruling"]["rule"], "UMB Art. 41");
+  // The red is never struck; three-cushion is not played on a table with pockets, nor with a ball
+  // in hand; a score must be below the target.
+  EXPECT_NE(simulate(balls + "shot: {ball: 2, speed: 2}\n" + game).out.find("shot.ball: ball 2 is not struck"),
+            std::string::npos);
+  EXPECT_NE(simulate("table: 7ft\nrack: carom\nshot: {speed: 2}\ngame: {rules: three_cushion}\n")
+                .out.find("is played on a table without pockets"),
+            std::string::npos);
+  EXPECT_NE(simulate(balls + "shot: {speed: 2}\ngame: {rules: three_cushion, ball_in_hand: anywhere}\n")
+                .out.find("game.ball_in_hand"),
+            std::string::npos);
+  EXPECT_NE(simulate(balls + "shot: {speed: 2}\ngame: {rules: three_cushion, target: 5, score: [5, 0]}\n")
+                .out.find("game.score[0] must be in [0, 4]"),
+            std::string::npos);
+  EXPECT_NE(simulate("rack: nine\nshot: {speed: 8}\ngame: {rules: nine_ball, target: 5}\n").out.find("game.target"),
+            std::string::npos);
+}
+
 TEST(SimulateProgram, ASelfPlayRecordReplaysShotByShot)
 {
-  // Each shot of a recorded game, written as a scene, gives the same ruling through `simulate`.
-  const std::string dir = ::testing::TempDir() + "/self_play_record";
-  const std::string command =
-      std::string(CUE_SIM_SELF_PLAY) + " --rules nine_ball --games 1 --seed 5 --out " + dir + " 2>/dev/null";
-  ASSERT_EQ(std::system(command.c_str()), 0);
-  std::ifstream summary_file(dir + "/nine_ball_0/game.json");
-  ASSERT_TRUE(summary_file) << dir;
-  const auto summary = nlohmann::json::parse(summary_file);
-  ASSERT_GT(summary["shots"].size(), 1u);
-  for (const auto& shot : summary["shots"])
+  // Each shot of a recorded game, written as a scene, gives the same ruling through `simulate`:
+  // a 9-ball game, and a three-cushion race to 3.
+  for (const std::string rules : {"nine_ball", "three_cushion"})
   {
-    std::ifstream scene(dir + "/nine_ball_0/" + shot["file"].get<std::string>());
-    const std::string text((std::istreambuf_iterator<char>(scene)), std::istreambuf_iterator<char>());
-    const ProgramRun run = simulate(text);
-    ASSERT_EQ(run.status, 0) << run.out;
-    EXPECT_EQ(nlohmann::json::parse(run.out)["ruling"], shot["ruling"]) << shot["file"];
+    const std::string dir = ::testing::TempDir() + "/self_play_record";
+    const std::string command = std::string(CUE_SIM_SELF_PLAY) + " --rules " + rules +
+                                " --games 1 --seed 5 --target 3 --out " + dir + " 2>/dev/null";
+    ASSERT_EQ(std::system(command.c_str()), 0);
+    std::ifstream summary_file(dir + "/" + rules + "_0/game.json");
+    ASSERT_TRUE(summary_file) << dir;
+    const auto summary = nlohmann::json::parse(summary_file);
+    ASSERT_GT(summary["shots"].size(), 1u);
+    int points = 0;
+    for (const auto& shot : summary["shots"])
+    {
+      std::ifstream scene(dir + "/" + rules + "_0/" + shot["file"].get<std::string>());
+      const std::string text((std::istreambuf_iterator<char>(scene)), std::istreambuf_iterator<char>());
+      const ProgramRun run = simulate(text);
+      ASSERT_EQ(run.status, 0) << run.out;
+      EXPECT_EQ(nlohmann::json::parse(run.out)["ruling"], shot["ruling"]) << shot["file"];
+      points += shot["ruling"]["points"].get<int>();
+    }
+    if (rules == "three_cushion")
+    {
+      EXPECT_GE(points, 3) << "the race is won";
+    }
   }
 }

@@ -22,7 +22,8 @@ namespace game
 struct Turn
 {
   int player = 0;
-  int ball = 0;  ///< the ball struck
+  int ball = 0;                         ///< the ball struck
+  physics::TableState<double> before;  ///< the balls it was played from
   physics::CueStrike<double> strike;
   bool push_out = false;
   int called_ball = -1, called_pocket = -1;
