@@ -1,12 +1,15 @@
 #!/usr/bin/python3
-"""Plays a game of pool on table_node through its services, both players the same planner, or
-replays a game the self_play program recorded.
+"""Plays a game on table_node through its services, both players the same planner, or replays a
+game the self_play program recorded.
 
-Each turn it asks ~predict_batch for the ghost-ball shot at every ball the player may hit first
-into every pocket, at two speeds (and full at 8 m/s on a break), and strikes the one whose
+In pool, each turn it asks ~predict_batch for the ghost-ball shot at every ball the player may hit
+first into every pocket, at two speeds (and full at 8 m/s on a break), and strikes the one whose
 predicted ruling is best: a win, then a legal pot, then a shot without a foul; the slower among
-equals. The cue ball is played where the referee leaves it. With --preview it then calls the next
-shot (the first ball it pots, in its pocket) and draws its prediction in rviz without striking it.
+equals. The cue ball is played where the referee leaves it. In three-cushion (on the carom table)
+it asks for the shooter's own cue ball struck every 2 degrees round, at two speeds and three side
+spins, and strikes the best: a win, then a point, then a shot that meets a ball. With --preview
+it then calls the next shot (the first ball it pots, in its pocket) and draws its prediction in
+rviz without striking it.
 
 With --replay RECORD_DIR (a directory `self_play --out` wrote) it starts the game with the record's
 rack seed and first player, and for every shot places the cue ball where the record had it (when
@@ -15,7 +18,8 @@ node must rule on every shot as the record says, and leave the cue ball where th
 it stops, exit code 1, at the first shot that differs. The node must run the record's table and
 physics, with execution noise off (~noise/enabled false).
 
-Usage: rosrun cue_sim play_game.py [--rules eight_ball|nine_ball|ten_ball] [--shots N] [--seed S] [--preview]
+Usage: rosrun cue_sim play_game.py [--rules eight_ball|nine_ball|ten_ball|three_cushion] [--shots N] [--seed S]
+                                   [--target POINTS] [--preview]
        rosrun cue_sim play_game.py --replay RECORD_DIR
 """
 import argparse
@@ -69,8 +73,22 @@ class Latest:
         return self.msg
 
 
+#: A carom game's candidates: headings round the cue ball, speeds [m/s] and side spins [R].
+CAROM_HEADINGS = 180
+CAROM_SPEEDS = (3.0, 4.5)
+CAROM_SIDE = (-0.4, 0.0, 0.4)
+
+
+def carom_candidates(game):
+    """(shot, -1, "") for each heading, speed and side spin of the shooter's own cue ball."""
+    return [(Shot(ball_id=game.cue_ball, speed=speed, phi=2 * math.pi * k / CAROM_HEADINGS, a=side), -1, "")
+            for speed in CAROM_SPEEDS for side in CAROM_SIDE for k in range(CAROM_HEADINGS)]
+
+
 def candidates(game, balls, pockets, radius):
     """(shot, ball, pocket) for each ghost-ball aim; pocket is empty for a full hit."""
+    if game.target > 0:
+        return carom_candidates(game)
     where = {b.id: (b.position.x, b.position.y) for b in balls.balls if not b.pocketed}
     cx, cy = where[0]
     shots = []
@@ -92,7 +110,7 @@ def score(ruling, shooter, speed):
     if ruling.game_over:
         value = 1000 if ruling.winner == shooter else -1000
     else:
-        value = 100 if (not ruling.foul and ruling.continues) else 10 if not ruling.foul else 0
+        value = 100 if (not ruling.foul and (ruling.continues or ruling.points > 0)) else 10 if not ruling.foul else 0
     return value - speed
 
 
@@ -146,7 +164,7 @@ def replay(record_dir, services, game_state, table_state):
         return 2
     start_game, place_cue_ball, call_shot, strike = services
     started = start_game(rules=record["rules"], players=record["players"], first_player=record["first_player"],
-                         seed=record["rack_seed"])
+                         seed=record["rack_seed"], target=record.get("target", 0))
     if not started.success:
         print("play_game: " + started.message, file=sys.stderr)
         return 1
@@ -155,7 +173,8 @@ def replay(record_dir, services, game_state, table_state):
         game = game_state.when(lambda g: g.active and g.rules == record["rules"] and g.shots == k
                                and not g.shot_in_progress)
         balls = table_state.when(lambda s: not s.moving and s.header.stamp >= game.header.stamp)
-        cue = next(b.position for b in balls.balls if b.id == 0)
+        ball = shot.get("ball", 0)
+        cue = next(b.position for b in balls.balls if b.id == ball)
         x, y = shot["cue_ball"]
         if math.hypot(cue.x - x, cue.y - y) > PLACED:
             if not game.ball_in_hand:  # where the last shot left it: the physics must agree
@@ -170,7 +189,7 @@ def replay(record_dir, services, game_state, table_state):
             print(f"shot {k}: the record's call is refused: {called.message}")
             return 1
         s = shot["strike"]
-        struck = strike(ball_id=0, speed=s["speed"], phi=s["phi"], theta=s["theta"], a=s["a"], b=s["b"])
+        struck = strike(ball_id=ball, speed=s["speed"], phi=s["phi"], theta=s["theta"], a=s["a"], b=s["b"])
         if not struck.success:
             print(f"shot {k}: refused: {struck.message}")
             return 1
@@ -184,9 +203,12 @@ def replay(record_dir, services, game_state, table_state):
 
 
 def main():
-    parser = argparse.ArgumentParser(description="Plays a game of pool on table_node through its services.")
+    parser = argparse.ArgumentParser(description="Plays a game on table_node through its services.")
     parser.add_argument("--rules", default="eight_ball",
-                        help="a ruleset the node knows: eight_ball, nine_ball, ten_ball (~start_game refuses others)")
+                        help="a ruleset the node knows: eight_ball, nine_ball, ten_ball on a table with pockets, "
+                             "three_cushion on the carom table (~start_game refuses others)")
+    parser.add_argument("--target", type=int, default=0,
+                        help="the points that win a game that keeps a score (three_cushion; 0: its 40)")
     parser.add_argument("--shots", type=int, default=-1, help="stop after this many shots (default: at the game's end)")
     parser.add_argument("--seed", type=int, default=0, help="the rack's jitter")
     parser.add_argument("--preview", action="store_true", help="at the end, call and preview the next shot")
@@ -208,7 +230,7 @@ def main():
     pockets = pocket_centres()
     radius = rospy.get_param("/table/ball_radius")
 
-    started = start_game(rules=args.rules, players=["ann", "bob"], seed=args.seed)
+    started = start_game(rules=args.rules, players=["ann", "bob"], seed=args.seed, target=args.target)
     if not started.success:
         print("play_game: " + started.message, file=sys.stderr)
         return 1
@@ -218,18 +240,23 @@ def main():
         balls = table_state.when(lambda s: not s.moving and s.header.stamp >= game.header.stamp)
         shot, ball, pocket = best_shot(game, balls, pockets, radius, predict_batch, call_shot)
         shooter = game.players[game.turn]
-        struck = strike(ball_id=0, speed=shot.speed, phi=shot.phi)
+        struck = strike(ball_id=shot.ball_id, speed=shot.speed, phi=shot.phi, a=shot.a)
         if not struck.success:
             print("play_game: " + struck.message, file=sys.stderr)
             return 1
-        aim = f"ball {ball}" + (f" into {pocket}" if pocket else " full")
-        print(f"shot {game.shots + 1}: {shooter} at {aim}, {shot.speed:.1f} m/s: "
-              f"{'foul' if struck.ruling.foul else 'legal'}: {struck.ruling.reason}", flush=True)
+        aim = (f"ball {ball}" + (f" into {pocket}" if pocket else " full") if ball >= 0
+               else f"its ball {shot.ball_id} at {math.degrees(shot.phi):.0f} degrees, side {shot.a:+.1f}")
+        verdict = "foul" if struck.ruling.foul else "point" if struck.ruling.points else \
+            "no point" if game.target else "legal"
+        print(f"shot {game.shots + 1}: {shooter} at {aim}, {shot.speed:.1f} m/s: {verdict}: {struck.ruling.reason}",
+              flush=True)
         shots = game.shots + 1
         game = game_state.when(lambda g: g.shots >= shots and not g.shot_in_progress)
     if game.over:
         winner = game.players[game.winner] if game.winner >= 0 else "nobody"
-        print(f"game over after {game.shots} shots: {winner} won", flush=True)
+        score = f", {game.score[0]} to {game.score[1]} in {game.innings[0]} and {game.innings[1]} innings" \
+            if game.target else ""
+        print(f"game over after {game.shots} shots: {winner} won{score}", flush=True)
     elif args.preview:
         balls = table_state.when(lambda s: not s.moving and s.header.stamp >= game.header.stamp)
         shot, ball, pocket = best_shot(game, balls, pockets, radius, predict_batch, call_shot)

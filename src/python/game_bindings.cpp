@@ -70,6 +70,7 @@ py::tuple shoot(Game& g, double speed, double phi, double theta, double a, doubl
 void bindGames(py::module_& m)
 {
   m.def("rules_names", &game::rulesNames);
+  m.def("rules_table", &game::rulesTable);
   py::class_<Game>(m, "Game")
       .def(py::init(&startGame))
       .def("copy", [](const Game& g) { return Game(g); })

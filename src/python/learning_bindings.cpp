@@ -604,14 +604,15 @@ void bindLearning(py::module_& m)
                                if (!start)
                                  return py::none();
                                return py::dict(py::arg("rules") = start->rules, py::arg("rack_seed") = start->rack_seed,
-                                               py::arg("breaker") = start->breaker);
+                                               py::arg("breaker") = start->breaker, py::arg("target") = start->target);
                              })
       .def_property_readonly(
           "last_turns",
           [](const PyEnvironment& e) {
             py::list turns;
             for (const learning::PlayedTurn& t : e.env.lastTurns())
-              turns.append(py::dict(py::arg("player") = t.player, py::arg("placed") = t.placed, py::arg("x") = t.x,
+              turns.append(py::dict(py::arg("player") = t.player, py::arg("ball") = t.ball, py::arg("placed") = t.placed,
+                                    py::arg("x") = t.x,
                                     py::arg("y") = t.y, py::arg("called_ball") = t.called_ball,
                                     py::arg("called_pocket") = t.called_pocket, py::arg("push_out") = t.push_out,
                                     py::arg("strike") = py::make_tuple(t.strike.speed, t.strike.phi, t.strike.theta,

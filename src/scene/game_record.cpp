@@ -64,10 +64,10 @@ int writeGameRecord(const game::GameRecord& record, const std::string& dir, cons
                     const physics::Engine<double>& engine)
 {
   std::filesystem::create_directories(dir);
-  nlohmann::json summary = {
-      {"rules", record.rules},           {"game", record.index},          {"table", table_name},
-      {"players", record.players},       {"rack_seed", record.rack_seed}, {"first_player", record.first_player},
-      {"shots", nlohmann::json::array()}};
+  nlohmann::json summary = {{"rules", record.rules},         {"game", record.index},
+                            {"table", table_name},           {"players", record.players},
+                            {"rack_seed", record.rack_seed}, {"first_player", record.first_player},
+                            {"target", record.end.target},   {"shots", nlohmann::json::array()}};
   int written = 0;
   for (std::size_t k = 0; k < record.turns.size(); ++k)
   {

@@ -487,7 +487,8 @@ TEST(GameReplay, SelfPlayRecordsReplayOnTheNodeWithTheSameRulings)
 {
   const std::string dir = std::string(CUE_SIM_TEST_DIR) + "/game_replay_records";
   std::system(("rm -rf '" + dir + "'").c_str());
-  const auto [played, output] = runCommand("rosrun cue_sim self_play --games 2 --seed 4 --out '" + dir + "'");
+  const auto [played, output] = runCommand(
+      "rosrun cue_sim self_play --rules eight_ball nine_ball ten_ball --games 2 --seed 4 --out '" + dir + "'");
   ASSERT_EQ(played, 0) << output;
   for (const std::string game :
        {"eight_ball_0", "eight_ball_1", "nine_ball_0", "nine_ball_1", "ten_ball_0", "ten_ball_1"})
@@ -495,6 +496,26 @@ TEST(GameReplay, SelfPlayRecordsReplayOnTheNodeWithTheSameRulings)
     const auto [code, replay] = runCommand("rosrun cue_sim play_game.py --replay '" + dir + "/" + game + "'");
     EXPECT_EQ(code, 0) << game << ":\n" << replay;
     EXPECT_NE(replay.find("every ruling as recorded"), std::string::npos) << replay;
+    const std::size_t summary = replay.rfind("replayed");
+    std::printf("%s: %s", game.c_str(), summary == std::string::npos ? "" : replay.substr(summary).c_str());
+  }
+}
+
+TEST(GameReplay, ThreeCushionRecordsReplayOnTheCaromTableWithTheSameRulingsAndScores)
+{
+  // On a node running the carom table: each player's own cue ball struck, the race's target sent
+  // with the start, every ruling and every ball where the record has it.
+  const std::string dir = std::string(CUE_SIM_TEST_DIR) + "/game_replay_carom_records";
+  std::system(("rm -rf '" + dir + "'").c_str());
+  const auto [played, output] =
+      runCommand("rosrun cue_sim self_play --rules three_cushion --games 2 --seed 4 --target 4 --out '" + dir + "'");
+  ASSERT_EQ(played, 0) << output;
+  for (const std::string game : {"three_cushion_0", "three_cushion_1"})
+  {
+    const auto [code, replay] = runCommand("rosrun cue_sim play_game.py --replay '" + dir + "/" + game + "'");
+    EXPECT_EQ(code, 0) << game << ":\n" << replay;
+    EXPECT_NE(replay.find("every ruling as recorded"), std::string::npos) << replay;
+    EXPECT_NE(replay.find("a point (UMB Art. 83)"), std::string::npos) << "a race to 4 has points: " << replay;
     const std::size_t summary = replay.rfind("replayed");
     std::printf("%s: %s", game.c_str(), summary == std::string::npos ? "" : replay.substr(summary).c_str());
   }

@@ -48,6 +48,7 @@ def same(a, b):
                                      dict(task="ten_ball", opponent="planner", action="relative"),
                                      dict(task="nine_ball", opponent="self", action="relative"),
                                      dict(task="eight_ball", opponent="planner", opponent_skill=0.5),
+                                     dict(task="three_cushion", opponent="self", race=1, max_shots=20),
                                      dict(task="pot", observation="both", pixel_width=96, pixel_height=48)])
 def test_the_contract(options):
     env = TableEnv(**options)
@@ -274,7 +275,17 @@ def test_every_task_has_an_id_and_the_games_come_from_the_rulesets():
     assert sorted(TASK_IDS.values()) == sorted(task_names())
     assert TASK_IDS["cue_sim/Pot-v0"] == "pot" and TASK_IDS["cue_sim/NineBall-v0"] == "nine_ball"
     assert TASK_IDS["cue_sim/TenBall-v0"] == "ten_ball"
+    assert TASK_IDS["cue_sim/ThreeCushion-v0"] == "three_cushion"
     assert set(cue_sim.rules()) <= set(task_names())
+    # Each game is made on its own table without being told: three-cushion on the carom table,
+    # whose observation says whose cue ball is struck and the scores, and whose info the points.
+    carom = TableEnv("three_cushion", race=3, opponent="self")
+    assert carom.observation_names[-3:] == ["cue_ball_1", "own_score", "opponent_score"]
+    obs, _ = carom.reset(seed=2)
+    _, _, _, _, info = carom.step(carom.action_space.sample())
+    assert info["points"] in (0, 1)
+    with pytest.raises(ValueError, match="table without pockets"):
+        TableEnv("three_cushion", table="7ft")
     # The push-out is in the action of the games whose rules have one.
     assert TableEnv("ten_ball", action="relative").action_names[-1] == "push_out"
     assert "push_out" not in TableEnv("eight_ball", action="relative").action_names

@@ -124,3 +124,39 @@ def test_a_ten_ball_game_counts_only_called_balls_and_ends(engine):
         assert len(table.ids) == 11 and len(set(table.ids)) == 11
     assert game.state["winner"] in (0, 1), game.state
     assert continued > 0  # called balls went down and kept the inning
+
+
+def test_a_three_cushion_race_is_played_with_each_players_own_ball():
+    """Three-cushion from Python on the carom table: each player strikes their own cue ball (the
+    other's is refused as a foul, the red as a strike), a point continues the inning, the scores
+    add up the rulings' points and the race ends the game."""
+    carom = cue_sim.Engine("carom")
+    with pytest.raises(ValueError, match="without pockets"):
+        cue_sim.Game(cue_sim.Engine("7ft"), "three_cushion")
+    with pytest.raises(ValueError, match="target"):
+        cue_sim.Game(carom, "three_cushion", target=-1)
+    game = cue_sim.Game(carom, "three_cushion", target=2, first_player=1)
+    assert game.cue_ball == 1 and game.legal_first == [2]
+    assert sorted(int(i) for i in game.table.ids) == [0, 1, 2]
+    assert game.state["target"] == 2 and game.state["ball_in_hand"] == "none"
+    with pytest.raises(ValueError, match="ball 2 is not struck"):
+        game.copy().shoot(2.0, 0.0, ball=2)
+    wrong, _ = game.copy().shoot(2.0, 0.0, ball=0)
+    assert wrong.foul and wrong.rule == "UMB Art. 41"
+    scores = [0, 0]
+    while not game.state["over"] and game.state["shots"] < 200:
+        shooter = game.state["turn"]
+        assert game.cue_ball == shooter
+        best, choice = -1e9, None
+        for k in range(0, 180):  # every 2 degrees, as the carom planner tries
+            for speed in (3.0, 4.5):
+                ruling, _ = game.copy().shoot(speed, 2 * math.pi * k / 180)
+                score = (100 if ruling.points else 0) - speed
+                if score > best:
+                    best, choice = score, (speed, 2 * math.pi * k / 180)
+        ruling, events = game.shoot(*choice)
+        scores[shooter] += ruling.points
+        assert ruling.continues == (ruling.points == 1 and not ruling.game_over)
+        assert list(game.state["score"]) == scores
+        assert len(events) > 0
+    assert game.state["over"] and max(scores) == 2 and game.state["winner"] == scores.index(2)

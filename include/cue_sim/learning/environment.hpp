@@ -94,6 +94,7 @@ struct GameStart
   std::string rules;
   unsigned rack_seed = 0;  ///< game::gameRack's seed
   int breaker = 0;         ///< who breaks: 0 or 1
+  int target = 0;          ///< the race, where the game keeps a score (0: the rules' own)
 };
 
 /// One turn of a game as it was played, by the agent or the opponent: what a live table must be
@@ -101,6 +102,7 @@ struct GameStart
 struct PlayedTurn
 {
   int player = 0;
+  int ball = 0;                              ///< the ball struck (the player's own cue ball)
   bool placed = false;                       ///< the cue ball was in hand and placed...
   double x = 0, y = 0;                       ///< ...with its centre here [m]
   int called_ball = -1, called_pocket = -1;  ///< the call made (-1: none)

@@ -8,10 +8,11 @@ rest. A twin TableEnv on the node's own table and physics plays the same strike:
 is the same, so its balls must come to rest exactly where the twin's do, and the reward and the
 rulings are the twin's. A table that differs raises, naming the ball.
 
-In a game (eight_ball, nine_ball, ten_ball) reset starts the same game on the node (~start_game: the rules,
-the rack's seed, who breaks) and every turn the twin plays, the opponent's too, goes to the node in
-order: the cue ball placed in hand (~place_cue_ball), the call and push-out (~call_shot), the
-strike; each waits until the node's referee has finished the shot (~game_state). The node's table
+In a game (eight_ball, nine_ball, ten_ball; three_cushion on a node running the carom table)
+reset starts the same game on the node (~start_game: the rules, the rack's seed, who breaks, the
+race) and every turn the twin plays, the opponent's too, goes to the node in order: the cue ball
+placed in hand (~place_cue_ball), the call and push-out (~call_shot), the strike of the player's
+own cue ball; each waits until the node's referee has finished the shot (~game_state). The node's table
 must then be the twin's, the balls spotted and the cue ball returned as the twin's referee did.
 
 Needs rospy and a running table_node with its noise off (~noise/enabled false: the noise is the
@@ -127,7 +128,7 @@ class LiveTableEnv:
         if self._game:
             start = self._twin._env.game_start
             answer = self._start_game(rules=start["rules"], players=[], first_player=start["breaker"],
-                                      seed=start["rack_seed"], balls=[])
+                                      seed=start["rack_seed"], target=start["target"], balls=[])
             if not answer.success:
                 raise RuntimeError(f"{self.namespace}/start_game refused the episode's game: {answer.message}")
             self._shots = answer.state.shots
@@ -163,9 +164,9 @@ class LiveTableEnv:
             raise RuntimeError(f"the node's table is not the twin's after the strike: {difference}")
         return obs, reward, terminated, truncated, info
 
-    def _send_strike(self, strike):
+    def _send_strike(self, strike, ball=0):
         speed, phi, theta, a, b = strike
-        answer = self._strike(ball_id=0, speed=speed, phi=phi, theta=theta, a=a, b=b)
+        answer = self._strike(ball_id=ball, speed=speed, phi=phi, theta=theta, a=a, b=b)
         if not answer.success:
             raise RuntimeError(f"{self.namespace}/strike refused the strike: {answer.message}")
         return answer.stamp
@@ -184,7 +185,7 @@ class LiveTableEnv:
                 answer = self._call(ball=turn["called_ball"], pocket=pocket, push_out=turn["push_out"])
                 if not answer.success:
                     raise RuntimeError(f"{self.namespace}/call_shot refused the twin's call: {answer.message}")
-            self._send_strike(turn["strike"])
+            self._send_strike(turn["strike"], turn["ball"])
             self._shots += 1
             # The referee has ruled and the table is ready for the next shot.
             self._game_state.wait_for(lambda g, n=self._shots: g.shots >= n and not g.shot_in_progress, self.timeout)

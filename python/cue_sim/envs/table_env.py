@@ -24,11 +24,12 @@ RENDER_SIZE = (640, 360)
 DEFAULT_OPTIONS = dict(_core.default_options())
 
 
-def engine_of(engine=None, table: str = "7ft"):
-    """The _core engine of a cue_sim.Engine, or of the bundled table `table` with default physics."""
+def engine_of(engine=None, table: Optional[str] = None, task: str = "pot"):
+    """The _core engine of a cue_sim.Engine, or of the bundled table `table` with default physics;
+    without one, the table `task` is played on (a game's own, cue_sim.rules_table(); else 7ft)."""
     if engine is None:
         from cue_sim.api import Engine
-        engine = Engine(table)
+        engine = Engine(table or (_core.rules_table(task) if isinstance(task, str) else "") or "7ft")
     return engine._engine
 
 
@@ -57,24 +58,26 @@ class TableEnv(_EnvBase):
     """A task on one table (Gymnasium's Env API; Gymnasium itself is not needed).
 
     task: one of task_names(): pot, position, break, and a game per ruleset (eight_ball, nine_ball,
-    ten_ball). The options and their defaults are DEFAULT_OPTIONS, each declared once in env_options.def with its range and
+    ten_ball; three_cushion on the carom table). The options and their defaults are DEFAULT_OPTIONS, each declared once in env_options.def with its range and
     meaning (cue_sim._core.env_options(); doc/learning.md's table of options): balls, target,
     max_shots, rack, action ("absolute": phi [rad], speed [m/s]; "relative": ball, pocket,
     cut_offset [rad], speed), spin (theta, tip_right, tip_up too), opponent, opponent_skill,
     opponent_noise, shaping, noise, observation, pixel_width, pixel_height. Games add place_x,
     place_y (the cue ball in hand) and, in 9- and 10-ball, push_out to the action.
-    engine: a cue_sim.Engine (its table, physics and models); else the bundled `table`.
+    Three-cushion adds race (the points that win; 0 for 40).
+    engine: a cue_sim.Engine (its table, physics and models); else the bundled `table`, by default
+    the one the task is played on (7ft; carom for three_cushion).
     """
 
     metadata = {"render_modes": ["rgb_array"], "render_fps": 4}
 
-    def __init__(self, task: str = "pot", engine=None, table: str = "7ft", render_mode: Optional[str] = None,
+    def __init__(self, task: str = "pot", engine=None, table: Optional[str] = None, render_mode: Optional[str] = None,
                  **options: Any):
         if render_mode not in (None, "rgb_array"):
             raise ValueError(f"render_mode: must be None or 'rgb_array', got {render_mode!r}")
         self.render_mode = render_mode
         self.task = task
-        self._env = _core.Env(engine_of(engine, table), dict(options, task=task))
+        self._env = _core.Env(engine_of(engine, table, task), dict(options, task=task))
         self.observation_space, self.action_space = spaces_of(self._env.spaces)
         self.action_names = list(self._env.spaces["action"]["names"])
         self.observation_names = list(self._env.spaces["state"]["names"])

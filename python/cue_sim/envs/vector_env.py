@@ -27,9 +27,10 @@ class TableVectorEnv:
 
     metadata = {"autoreset_mode": "NextStep", "render_modes": []}
 
-    def __init__(self, num_envs: int, task: str = "pot", engine=None, table: str = "7ft", threads: int = 0,
+    def __init__(self, num_envs: int, task: str = "pot", engine=None, table: Optional[str] = None, threads: int = 0,
                  **options: Any):
-        self._envs = _core.VectorEnv(engine_of(engine, table), dict(options, task=task), int(num_envs), int(threads))
+        self._envs = _core.VectorEnv(engine_of(engine, table, task), dict(options, task=task), int(num_envs),
+                                     int(threads))
         self.num_envs = int(num_envs)
         self.task = task
         self.single_observation_space, self.single_action_space = spaces_of(self._envs.spaces)

@@ -75,6 +75,7 @@ public:
       start_.rules = rules_;
       start_.breaker = random.integer(0, 1);
       start_.rack_seed = static_cast<unsigned>(random.bits());
+      start_.target = race_;
       game_ = std::make_unique<game::GamePlay>(engine_, rules_, players(), game::gameRack(start_.rack_seed),
                                                start_.breaker);
       game_->setShotCap(cap_);
@@ -108,6 +109,7 @@ public:
     const int shooter = game_->state().turn;
     PlayedTurn played;
     played.player = shooter;
+    played.ball = game_->cueBall();
     if (placement_)
     {
       played.placed = true;
@@ -228,6 +230,7 @@ private:
         c = wildChoice(random);
       PlayedTurn played;
       played.player = game_->state().turn;
+      played.ball = game_->cueBall();
       if (c.place_cue_ball && game_->placeCueBall(c.cue_ball).empty())
       {
         played.placed = true;
