@@ -3,6 +3,7 @@
 # break, then the first player's next shot chosen from ~predict_batch as the game rostest's planner
 # would (a legal pot if there is one), then a call for the shot after it, shown with the game's
 # markers.
+# A game played on a table without pockets (three_cushion) runs the carom table.
 # Usage: scripts/screenshot_game.sh [output.png] [shots before the picture, default 3] [rules, default eight_ball]
 set -euo pipefail
 here="$(dirname "${BASH_SOURCE[0]}")"
@@ -11,7 +12,9 @@ cue_sim_source_devel
 out="$(realpath -m "${1:-$CUE_SIM_ROOT/doc/rviz_game.png}")"
 shots="${2:-3}"
 rules="${3:-eight_ball}"
-cue_sim_rviz_screenshot 11393 "" "
+launch_args=""
+if [ "$rules" = three_cushion ]; then launch_args="table:=carom rack:=carom"; fi
+cue_sim_rviz_screenshot 11393 "$launch_args" "
   rosrun cue_sim play_game.py --rules $rules --shots $shots --preview > '$CUE_SIM_BUILD/screenshot_game_play.log' 2>&1
   sleep 1.5
 " "$out"

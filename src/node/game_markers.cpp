@@ -38,7 +38,8 @@ std::string statusText(const GameState& s)
     if (rules->playsGroups())
       text << ", " << s.groups[i];
     if (s.target > 0)
-      text << " (ball " << rules->cueBall(static_cast<int>(i)) << "), " << s.score[i] << " in " << s.innings[i]
+      text << " (ball " << rules->cueBall(static_cast<int>(i)) << "): " << s.score[i]
+           << (s.score[i] == 1 ? " point, " : " points, ") << s.innings[i]
            << (s.innings[i] == 1 ? " inning" : " innings");
     else
       text << ", fouls " << s.consecutive_fouls[i];
@@ -119,7 +120,7 @@ visualization_msgs::MarkerArray gameMarkers(const GameState& state, const physic
   {
     Marker path = markerIn(frame, "point_path", 0, Marker::LINE_STRIP);
     path.scale.x = kPathLine;
-    path.color = rgba(1.0f, 0.85f, 0.0f, 0.9f);
+    path.color = rgba(0.2f, 0.9f, 1.0f, 0.9f);  // cyan: no ball's colour, and clear on the cloth
     for (const Eigen::Vector2d& p : point_path)
     {
       geometry_msgs::Point point;

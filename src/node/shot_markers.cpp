@@ -43,7 +43,8 @@ visualization_msgs::MarkerArray clearedPreview()
   return out;
 }
 
-visualization_msgs::MarkerArray previewMarkers(const std::vector<session::PreviewPath>& paths, const std::string& frame)
+visualization_msgs::MarkerArray previewMarkers(const std::vector<session::PreviewPath>& paths, const std::string& frame,
+                                               BallSet set)
 {
   visualization_msgs::MarkerArray out = clearedPreview();
   for (const session::PreviewPath& path : paths)
@@ -56,7 +57,7 @@ visualization_msgs::MarkerArray previewMarkers(const std::vector<session::Previe
     m.action = Marker::ADD;
     m.pose.orientation.w = 1.0;
     m.scale.x = 0.004;
-    m.color = poolColour(path.id);
+    m.color = poolColour(path.id, set);
     m.color.a = 0.9f;
     m.points.reserve(path.points.size());
     for (const Eigen::Vector2d& point : path.points)

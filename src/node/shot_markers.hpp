@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cue_sim/physics/cue_aim.hpp"
+#include "cue_sim/scene/ball_colours.hpp"
 #include "cue_sim/session/shot_preview.hpp"
 
 namespace cue_sim
@@ -15,10 +16,10 @@ namespace cue_sim
 visualization_msgs::Marker cueStickMarker(const physics::CueStick& cue, const std::string& frame,
                                           const ros::Time& stamp, double lifetime);
 
-/// DELETEALL, then one line strip per path, in its ball's colour (session::previewPaths: drawn
-/// from a prediction's own trajectories, without running the shot again).
-visualization_msgs::MarkerArray previewMarkers(const std::vector<session::PreviewPath>& paths,
-                                               const std::string& frame);
+/// DELETEALL, then one line strip per path, in its ball's colour in `set` (session::previewPaths:
+/// drawn from a prediction's own trajectories, without running the shot again).
+visualization_msgs::MarkerArray previewMarkers(const std::vector<session::PreviewPath>& paths, const std::string& frame,
+                                               BallSet set);
 
 /// What takes a preview off the screen: one DELETEALL.
 visualization_msgs::MarkerArray clearedPreview();
