@@ -417,6 +417,23 @@ TEST(SelfPlay, PlannersFinishTheirGamesWithNoise)
       EXPECT_TRUE(r.end.over);
       EXPECT_EQ(r.turns.size(), r.before.size());
       EXPECT_EQ(static_cast<int>(r.turns.size()), r.end.shots);
+      // The scores are the rulings' points; a race is won at its target; every turn at the table
+      // is an inning: one for the breaker, and one more each time the table passes.
+      std::array<int, 2> points{0, 0}, innings{0, 0};
+      innings[static_cast<std::size_t>(r.first_player)] = 1;
+      for (const Turn& t : r.turns)
+      {
+        points[static_cast<std::size_t>(t.player)] += t.ruling.points;
+        if (t.ruling.next_player != t.player)
+          ++innings[static_cast<std::size_t>(t.ruling.next_player)];
+      }
+      EXPECT_EQ(r.end.score, points) << rules;
+      EXPECT_EQ(r.end.innings, innings) << rules;
+      if (r.end.target > 0 && r.end.winner >= 0)
+      {
+        EXPECT_EQ(r.end.score[static_cast<std::size_t>(r.end.winner)], r.end.target) << rules;
+        EXPECT_LT(r.end.score[static_cast<std::size_t>(1 - r.end.winner)], r.end.target) << rules;
+      }
     });
     EXPECT_EQ(reported, 10) << rules;
     EXPECT_EQ(s.games, 10);
