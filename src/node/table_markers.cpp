@@ -173,10 +173,11 @@ visualization_msgs::MarkerArray tableMarkers(const physics::TableModel& table, c
     }
     // The number twice, at the poles of the ball's own frame as on a real ball: it turns with the
     // ball (tf carries the orientation), and one of the two is always on the upper half or at the
-    // sides. Large, in the colour that reads on the ball. Carom balls carry none.
+    // sides. Large, in the colour that reads on the ball; the cue ball's 0 too, to tell its frame.
+    // Carom balls carry none.
     for (const int pole : {1, -1})
     {
-      if (!isNumbered(b.id, set))
+      if (set != BallSet::Pool)
         break;
       Marker label = markerIn(frame, "labels", pole > 0 ? b.id : kSecondLabel + b.id, Marker::TEXT_VIEW_FACING);
       label.frame_locked = true;

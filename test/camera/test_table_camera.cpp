@@ -233,6 +233,30 @@ TEST(TableCamera, BallsShowTheirColoursStripesAndNumbers)
   EXPECT_GT(white, 10) << "the disc";
 }
 
+TEST(TableCamera, ACaromTablesBallsAreWhiteYellowAndRedWithoutNumbers)
+{
+  // On a table without pockets the balls are carom's: 2 is red (not pool's blue) and, seen from
+  // straight above as it stands, shows no number disc: its centre is red, not white and black.
+  const auto engine = engineOn("carom");
+  TableCamera camera = overheadCamera(*engine);
+  const double R = engine->params().ball_radius;
+  const Eigen::Vector2d c = engine->table().clothCentre();
+  const Frame frame = camera.render(still({{0, Eigen::Vector3d(c.x() - 0.3, c.y(), R)},
+                                           {1, Eigen::Vector3d(c.x(), c.y(), R)},
+                                           {2, Eigen::Vector3d(c.x() + 0.3, c.y(), R)}}));
+  const auto at = [&](const Eigen::Vector2d& p) {
+    return frame.image.at<cv::Vec3b>(static_cast<int>(std::lround(p.y())), static_cast<int>(std::lround(p.x())));
+  };
+  const cv::Vec3b white = at(frame.balls[0].pixel), yellow = at(frame.balls[1].pixel), red = at(frame.balls[2].pixel);
+  EXPECT_GT(std::min({white[0], white[1], white[2]}), 150) << "the white";
+  EXPECT_GT(yellow[2], 150);
+  EXPECT_GT(yellow[1], 120);
+  EXPECT_LT(yellow[0], 80) << "the yellow";
+  EXPECT_GT(red[2], 120);
+  EXPECT_LT(red[1], 60);
+  EXPECT_LT(red[0], 60) << "the red, where a pool 2 would show its number disc";
+}
+
 TEST(TableCamera, AMovingBallSmearsAsFarAsItTravels)
 {
   // A black ball at 5 m/s in a 4 ms exposure travels L = 20 mm. Along a row through it at

@@ -213,7 +213,8 @@ TEST(SceneFile, BadGameBlocksNameTheKey)
             std::string::npos);
   EXPECT_NE(errorOf("game: {rules: eight_ball, break: maybe}\n").find("game.break must be true or false"),
             std::string::npos);
-  EXPECT_NE(errorOf("rack: eight\nshot: {ball: 3, speed: 1}\ngame: {rules: eight_ball}\n").find("shot.ball must be 0"),
+  EXPECT_NE(errorOf("rack: eight\nshot: {ball: 3, speed: 1}\ngame: {rules: eight_ball}\n")
+                .find("shot.ball: ball 3 is not struck in a game of eight_ball"),
             std::string::npos);
   EXPECT_NE(errorOf("game: {rules: eight_ball, colour: red}\n").find("unknown key 'colour'"), std::string::npos);
 }
