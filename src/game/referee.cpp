@@ -169,7 +169,7 @@ GameState afterRuling(GameState state, const Ruling& ruling)
   state.groups = ruling.groups;
   state.push_out_allowed = ruling.push_out_next;
   state.score[shooter] += ruling.points;
-  if (ruling.next_player != shooter)
+  if (ruling.next_player != shooter && !ruling.game_over)  // the table passes: the other's inning begins
     ++state.innings[ruling.next_player];
   state.turn = ruling.next_player;
   state.ball_in_hand = ruling.ball_in_hand;

@@ -418,13 +418,14 @@ TEST(SelfPlay, PlannersFinishTheirGamesWithNoise)
       EXPECT_EQ(r.turns.size(), r.before.size());
       EXPECT_EQ(static_cast<int>(r.turns.size()), r.end.shots);
       // The scores are the rulings' points; a race is won at its target; every turn at the table
-      // is an inning: one for the breaker, and one more each time the table passes.
+      // is an inning: one for the breaker, and one more each time the table passes (not when the
+      // game ends).
       std::array<int, 2> points{0, 0}, innings{0, 0};
       innings[static_cast<std::size_t>(r.first_player)] = 1;
       for (const Turn& t : r.turns)
       {
         points[static_cast<std::size_t>(t.player)] += t.ruling.points;
-        if (t.ruling.next_player != t.player)
+        if (t.ruling.next_player != t.player && !t.ruling.game_over)
           ++innings[static_cast<std::size_t>(t.ruling.next_player)];
       }
       EXPECT_EQ(r.end.score, points) << rules;

@@ -152,9 +152,11 @@ TEST(ThreeCushion, PointsAddUpInningsCountTurnsAtTheTableAndTheTargetWins)
   EXPECT_TRUE(win.game_over);
   EXPECT_EQ(win.winner, 1);
   EXPECT_NE(win.reason.find("reaches 40 and wins"), std::string::npos) << win.reason;
+  const std::array<int, 2> innings = s.innings;
   s = afterRuling(s, win);
   EXPECT_TRUE(s.over);
   EXPECT_EQ(s.score, (std::array<int, 2>{39, 40}));
+  EXPECT_EQ(s.innings, innings) << "the winning point begins no one's inning";
 }
 
 TEST(ThreeCushion, FoulsEndTheInningWithoutAPoint)
