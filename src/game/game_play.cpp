@@ -25,10 +25,8 @@ GamePlay::GamePlay(const physics::Engine<double>& engine, const std::string& rul
   if (breaker != 0 && breaker != 1)
     throw std::invalid_argument("breaker must be 0 or 1, got " + std::to_string(breaker));
   state_.turn = breaker;
-  const bool pockets = !engine.table().pockets().empty();
-  if (pockets != rules_->needsPockets())
-    throw std::invalid_argument("a game of " + rules + " needs a table " + (pockets ? "without" : "with") +
-                                " pockets; '" + engine.table().name() + "' has " + (pockets ? "some" : "none"));
+  if (const std::string why = whyNotPlayableOn(*rules_, rules, engine.table()); !why.empty())
+    throw std::invalid_argument(why);
   state_.rules = rules;
   state_.players = players;
   state_.target = rules_->defaultTarget();
@@ -48,7 +46,7 @@ void GamePlay::rack()
   rules_->placeForBreak(engine_->table(), R, state_.turn, table_);
   ++rack_.seed;
   state_.break_shot = true;
-  state_.ball_in_hand = rules_->needsPockets() ? BallInHand::BehindHeadString : BallInHand::None;
+  state_.ball_in_hand = rules_->ballInHandOnBreak();
 }
 
 std::vector<int> GamePlay::legalFirst() const
@@ -80,7 +78,7 @@ std::string GamePlay::setPosition(const physics::TableState<double>& balls, bool
     return "a position is played from rest: every ball must be at rest";
   table_ = physics::atTimeZero(balls);
   state_.break_shot = break_shot;
-  state_.ball_in_hand = break_shot && rules_->needsPockets() ? BallInHand::BehindHeadString : BallInHand::None;
+  state_.ball_in_hand = break_shot ? rules_->ballInHandOnBreak() : BallInHand::None;
   state_.push_out_allowed = false;
   return "";
 }
@@ -161,7 +159,6 @@ Turn GamePlay::judge(const physics::CueStrike<double>& strike, bool push_out,
   Turn turn;
   turn.player = state_.turn;
   turn.ball = ball < 0 ? cueBall() : ball;
-  turn.before = table_;
   turn.strike = strike;
   turn.push_out = push_out;
   turn.called_ball = state_.called_ball;

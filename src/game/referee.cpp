@@ -98,6 +98,15 @@ void Rules::respot(const physics::TableModel& table, double ball_radius, const s
   spotBalls(table, ball_radius, ids, balls);
 }
 
+std::string whyNotPlayableOn(const Rules& rules, const std::string& name, const physics::TableModel& table)
+{
+  const bool pockets = !table.pockets().empty();
+  if (pockets == rules.needsPockets())
+    return "";
+  return name + " is played on a table " + (rules.needsPockets() ? "with" : "without") + " pockets; '" + table.name() +
+         "' has " + (pockets ? "some" : "none");
+}
+
 std::string ballList(const std::vector<int>& ids)
 {
   std::ostringstream out;

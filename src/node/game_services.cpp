@@ -2,7 +2,6 @@
 
 #include <visualization_msgs/MarkerArray.h>
 
-#include "cue_sim/session/shot_preview.hpp"
 #include "node/game_markers.hpp"
 #include "node/game_messages.hpp"
 #include "node/ros_conversions.hpp"
@@ -30,13 +29,11 @@ void GameServices::publishIfChanged(const session::LiveTable& table, const ros::
   const GameState state = toGameStateMsg(table, stamp, parameters_.table_frame);
   state_publisher_.publish(state);
   // A carom game's last point, drawn until the next shot: the cue ball's path from the strike to
-  // rest, run again from the balls it was played from (once, when the state changes).
-  std::vector<Eigen::Vector2d> point_path;
+  // rest, kept from the strike's own run.
   const std::optional<game::Turn>& last = table.game().lastTurn();
-  if (last && !table.game().pendingTurn() && last->ruling.points > 0 && table.game().play() &&
-      table.game().play()->rules().scoresCaroms())
-    point_path = session::shotPath(table.engine(), last->before, session::Shot{last->ball, last->strike}).points;
-  marker_publisher_.publish(gameMarkers(state, table.table(), table.engine().params().cushion_height, point_path));
+  const bool point = last && !table.game().pendingTurn() && last->ruling.points > 0;
+  marker_publisher_.publish(gameMarkers(state, table.table(), table.engine().params().cushion_height,
+                                        point ? table.game().lastPath() : std::vector<Eigen::Vector2d>{}));
 }
 
 bool GameServices::onStartGame(StartGame::Request& request, StartGame::Response& response)

@@ -294,10 +294,9 @@ game::GameState gameFrom(const YAML::Node& node)
       throw SceneError("game.turn must be 0 or 1 (the player to shoot), got " + std::to_string(g.turn));
   }
   g.break_shot = node["break"] ? flag(node["break"], "game.break") : true;
-  g.ball_in_hand =
-      node["ball_in_hand"]
-          ? choice<game::BallInHand>(node["ball_in_hand"], "game.ball_in_hand", kBallInHandNames)
-          : (g.break_shot && rules->needsPockets() ? game::BallInHand::BehindHeadString : game::BallInHand::None);
+  g.ball_in_hand = node["ball_in_hand"]
+                       ? choice<game::BallInHand>(node["ball_in_hand"], "game.ball_in_hand", kBallInHandNames)
+                       : (g.break_shot ? rules->ballInHandOnBreak() : game::BallInHand::None);
   if (!rules->needsPockets() && g.ball_in_hand != game::BallInHand::None)
     throw SceneError("game.ball_in_hand: " + g.rules + " has no ball in hand; it must be none");
   if (node["groups"])
@@ -417,10 +416,8 @@ Scene loadScene(const std::string& yaml_text)
       scene.game = gameFrom(root["game"]);
       scene.game->called_pocket = calledPocket(root["game"]["called_pocket"], *scene.table);
       const auto rules = game::makeRules(scene.game->rules);
-      if (scene.table->pockets().empty() == rules->needsPockets())
-        throw SceneError("game.rules: " + scene.game->rules + " is played on a table " +
-                         (rules->needsPockets() ? "with" : "without") + " pockets; '" + scene.table->name() + "' has " +
-                         (rules->needsPockets() ? "none" : "some"));
+      if (const std::string why = game::whyNotPlayableOn(*rules, scene.game->rules, *scene.table); !why.empty())
+        throw SceneError("game.rules: " + why);
       if (scene.shot && !rules->strikable(scene.shot->ball))
         throw SceneError("shot.ball: ball " + std::to_string(scene.shot->ball) + " is not struck in a game of " +
                          scene.game->rules + "; the shooter's is " + std::to_string(rules->cueBall(scene.game->turn)));

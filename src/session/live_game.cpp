@@ -43,10 +43,9 @@ std::string LiveGame::whyNotStart(const GameRequest& request, const physics::Eng
     if (request.players[i].empty())
       return "players[" + std::to_string(i) + "] must not be empty";
   const physics::TableModel& table = engine.table();
-  const bool pockets = !table.pockets().empty();
-  if (pockets != game::makeRules(request.rules)->needsPockets())
-    return "a game of " + request.rules + " needs a table " + (pockets ? "without" : "with") + " pockets; '" +
-           table.name() + "' has " + (pockets ? "some" : "none");
+  if (const std::string why = game::whyNotPlayableOn(*game::makeRules(request.rules), request.rules, table);
+      !why.empty())
+    return "rules: " + why;
   physics::TableState<double> position;
   if (!request.balls.empty())
   {
@@ -77,6 +76,8 @@ void LiveGame::start(game::GamePlay started)
   game_.emplace(std::move(started));
   pending_turn_.reset();
   last_turn_.reset();
+  pending_path_.clear();
+  last_path_.clear();
   push_out_called_ = false;
   ++version_;
 }
@@ -124,9 +125,11 @@ std::string LiveGame::call(const GameCall& call, const physics::TableModel& tabl
 }
 
 const game::Ruling& LiveGame::struck(int ball, const physics::CueStrike<double>& strike,
-                                     const std::vector<physics::Event<double>>& events)
+                                     const std::vector<physics::Event<double>>& events,
+                                     std::vector<Eigen::Vector2d> path)
 {
   pending_turn_ = game_->judge(strike, push_out_called_, events, ball);
+  pending_path_ = std::move(path);
   ++version_;
   return pending_turn_->ruling;
 }
@@ -136,6 +139,8 @@ const physics::TableState<double>& LiveGame::finishShot(const physics::TableStat
   game_->finish(*pending_turn_, at_rest);
   last_turn_ = std::move(pending_turn_);
   pending_turn_.reset();
+  last_path_ = std::move(pending_path_);
+  pending_path_.clear();
   push_out_called_ = false;
   ++version_;
   return game_->table();

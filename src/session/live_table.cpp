@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "cue_sim/session/shot_preview.hpp"
+
 namespace cue_sim
 {
 namespace session
@@ -201,7 +203,10 @@ StrikeOutcome LiveTable::strike(const Shot& shot, Stamp now)
   outcome.executed.strike = cue.execute(shot.strike, R);
   // Run the shot to rest on a copy first: it answers the request, and a shot the engine cannot
   // finish is refused before it touches the table.
-  const ShotPrediction prediction = predictShot(engine(), balls_.state(), outcome.executed, PredictionOptions{});
+  // A carom game draws its points' paths: the struck ball's trajectory is kept from this one run.
+  PredictionOptions run;
+  run.trajectories = game_.on() && game_.play()->rules().scoresCaroms();
+  const ShotPrediction prediction = predictShot(engine(), balls_.state(), outcome.executed, run);
   if (!prediction.success)
   {
     outcome.message = prediction.message;
@@ -224,7 +229,8 @@ StrikeOutcome LiveTable::strike(const Shot& shot, Stamp now)
   if (game_.on())
   {
     outcome.refereed = true;
-    outcome.ruling = game_.struck(shot.ball_id, outcome.executed.strike, prediction.events);
+    outcome.ruling = game_.struck(shot.ball_id, outcome.executed.strike, prediction.events,
+                                  ballPath(prediction, engine().params(), shot.ball_id).points);
     outcome.message += "; " + std::string(outcome.ruling.foul ? "foul: " : "") + outcome.ruling.reason;
   }
   advanceTo(now);

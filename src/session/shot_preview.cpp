@@ -51,15 +51,13 @@ std::vector<PreviewPath> previewPaths(const ShotPrediction& prediction, const ph
   return paths;
 }
 
-PreviewPath shotPath(const physics::Engine<double>& engine, const physics::TableState<double>& start, const Shot& shot)
+PreviewPath ballPath(const ShotPrediction& prediction, const physics::PhysicsParams<double>& params, int id)
 {
-  PredictionOptions options;
-  options.trajectories = true;
-  for (PreviewPath& path : previewPaths(predictShot(engine, start, shot, options), engine.params()))
-    if (path.id == shot.ball_id)
+  for (PreviewPath& path : previewPaths(prediction, params))
+    if (path.id == id)
       return std::move(path);
   PreviewPath none;
-  none.id = shot.ball_id;
+  none.id = id;
   return none;
 }
 

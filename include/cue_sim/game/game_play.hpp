@@ -22,8 +22,7 @@ namespace game
 struct Turn
 {
   int player = 0;
-  int ball = 0;                         ///< the ball struck
-  physics::TableState<double> before;  ///< the balls it was played from
+  int ball = 0;  ///< the ball struck
   physics::CueStrike<double> strike;
   bool push_out = false;
   int called_ball = -1, called_pocket = -1;

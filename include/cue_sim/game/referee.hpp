@@ -83,6 +83,9 @@ public:
   virtual bool strikable(int ball) const { return ball == 0; }
   /// Whether the game is played on a table with pockets (pool) or without (carom).
   virtual bool needsPockets() const { return true; }
+  /// Where the breaker may place the cue ball: behind the head string in pool; carom's starting
+  /// position has no ball in hand.
+  virtual BallInHand ballInHandOnBreak() const { return BallInHand::BehindHeadString; }
   /// The points that win, where the game keeps a score; 0 for none.
   virtual int defaultTarget() const { return 0; }
   /// Whether a shot scores by caroms (the cue ball meeting both object balls), which planners
@@ -114,6 +117,9 @@ std::string rulesTitle(const std::string& name);
 std::string rulesTable(const std::string& name);
 /// Throws std::invalid_argument naming the unknown ruleset and the known ones.
 std::unique_ptr<Rules> makeRules(const std::string& name);
+/// Empty if a game of `rules` (named `name`) can be played on `table`: pool on a table with
+/// pockets, carom on one without; otherwise why not.
+std::string whyNotPlayableOn(const Rules& rules, const std::string& name, const physics::TableModel& table);
 
 /// The ruling on a shot under `rules`, with what the rulesets share: a third foul in a row
 /// loses the rack where the rules say so (WPA 6.14), and a finished game takes no more shots.

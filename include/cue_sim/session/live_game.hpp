@@ -5,6 +5,7 @@
 // table on its balls when it starts one and when a shot's balls rest.
 #pragma once
 
+#include <Eigen/Core>
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -51,6 +52,9 @@ public:
   const std::optional<game::Turn>& pendingTurn() const { return pending_turn_; }
   /// The last game shot whose balls came to rest.
   const std::optional<game::Turn>& lastTurn() const { return last_turn_; }
+  /// Its struck ball's path from the strike to rest, where the game draws it (a carom point's);
+  /// empty otherwise.
+  const std::vector<Eigen::Vector2d>& lastPath() const { return last_path_; }
   /// Whether the next game shot is declared a push-out.
   bool pushOutCalled() const { return push_out_called_; }
   /// Changes whenever the game's state does (a start, a call, a cue ball placed, a strike, a
@@ -76,9 +80,9 @@ public:
   std::string call(const GameCall& call, const physics::TableModel& table);
 
   /// A game shot was struck: the referee's ruling from its events, which takes effect when the
-  /// balls rest.
+  /// balls rest; `path` the struck ball's, for lastPath().
   const game::Ruling& struck(int ball, const physics::CueStrike<double>& strike,
-                             const std::vector<physics::Event<double>>& events);
+                             const std::vector<physics::Event<double>>& events, std::vector<Eigen::Vector2d> path);
   /// The struck shot's balls rest as `at_rest`: the turn is taken, and the game's table (balls
   /// spotted, a new rack, the cue ball in hand) is what the live table goes on from.
   const physics::TableState<double>& finishShot(const physics::TableState<double>& at_rest);
@@ -88,6 +92,7 @@ public:
 private:
   std::optional<game::GamePlay> game_;
   std::optional<game::Turn> pending_turn_, last_turn_;
+  std::vector<Eigen::Vector2d> pending_path_, last_path_;
   bool push_out_called_ = false;
   long version_ = 0;
 };

@@ -25,10 +25,9 @@ struct PreviewPath
 std::vector<PreviewPath> previewPaths(const ShotPrediction& prediction, const physics::PhysicsParams<double>& params,
                                       std::size_t max_points = 2000);
 
-/// The path of the ball struck in `shot` from `start` (run to rest once, keeping its trajectory),
-/// drawn as previewPaths draws it: what rviz shows of a three-cushion point. Empty points if the
-/// shot cannot be played from `start`.
-PreviewPath shotPath(const physics::Engine<double>& engine, const physics::TableState<double>& start, const Shot& shot);
+/// previewPaths' path of ball `id` alone (what rviz shows of a three-cushion point); empty points
+/// if it did not move or the prediction kept no trajectories.
+PreviewPath ballPath(const ShotPrediction& prediction, const physics::PhysicsParams<double>& params, int id);
 
 }  // namespace session
 }  // namespace cue_sim

@@ -54,6 +54,7 @@ public:
   int cueBall(int player) const override { return player == 0 ? kWhite : kYellow; }
   bool strikable(int ball) const override { return ball == kWhite || ball == kYellow; }
   bool needsPockets() const override { return false; }
+  BallInHand ballInHandOnBreak() const override { return BallInHand::None; }
   int defaultTarget() const override { return kDefaultTarget; }
   bool scoresCaroms() const override { return true; }
 

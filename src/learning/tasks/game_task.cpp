@@ -37,15 +37,14 @@ public:
       cap_(options.max_shots > 0 ? options.max_shots : kGameShotCap),
       planner_(game::plannerFor(*game::makeRules(rules_)))
   {
-    const int target = game::makeRules(rules_)->defaultTarget();
+    const auto rules = game::makeRules(rules_);
+    const int target = rules->defaultTarget();
     if (options.race > 0 && target == 0)
       throw std::invalid_argument("race: " + rules_ + " keeps no score; race must be 0");
     if (options.max_shots == 0 && target > 0)
       cap_ = kRaceShotsPerPoint * (race_ > 0 ? race_ : target);
-    const bool pockets = !engine.table().pockets().empty();
-    if (pockets != game::makeRules(rules_)->needsPockets())
-      throw std::invalid_argument("task: " + rules_ + " is played on a table " + (pockets ? "without" : "with") +
-                                  " pockets; '" + engine.table().name() + "' has " + (pockets ? "some" : "none"));
+    if (const std::string why = game::whyNotPlayableOn(*rules, rules_, engine.table()); !why.empty())
+      throw std::invalid_argument("task: " + why);
   }
   GameTask(const GameTask& other)
     : Task(other),
