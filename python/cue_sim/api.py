@@ -129,7 +129,8 @@ class Engine:
     table: a bundled table's name (tables()) or a URDF file's path.
     ball_ball_model, cushion_model, ball_table_model, cue_model: models()' names; None for the
     defaults.
-    params: coefficients by name over the defaults (parameters()), e.g. mu_slide=0.2.
+    params: coefficients by name over the table's defaults (parameters(); a table that names its
+    balls, as snooker and carom do, sets ball_radius and ball_mass), e.g. mu_slide=0.2.
     """
 
     def __init__(self, table: str = "7ft", ball_ball_model: Optional[str] = None,

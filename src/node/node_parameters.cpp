@@ -252,8 +252,18 @@ NodeParameters readNodeParameters(ros::NodeHandle& node, ros::NodeHandle& privat
   if (!why.empty())
     throw std::runtime_error("~" + why);
 
+  readTable(node, reader, p);
+  // The table's own balls (a snooker or carom table names them) unless ~ball_radius or
+  // ~ball_mass say otherwise; the values used go on the parameter server, where
+  // dynamic_reconfigure takes its first configuration from.
+  p.physics = physics::tableDefaults(*p.table_model);
   for (const auto& field : physics::physicsParamFields())
     reader.read(field.name, p.physics.*field.member);
+  for (const char* name : {"ball_radius", "ball_mass"})
+    if (!private_node.hasParam(name))
+      for (const auto& field : physics::physicsParamFields())
+        if (std::string(field.name) == name)
+          private_node.setParam(name, p.physics.*field.member);
   const std::string bad_physics = p.physics.validate();
   if (!bad_physics.empty())
     throw std::runtime_error("physics parameter ~" + bad_physics);
@@ -261,7 +271,6 @@ NodeParameters readNodeParameters(ros::NodeHandle& node, ros::NodeHandle& privat
   reader.read("cushion_model", p.models.cushion);
   reader.read("ball_table_model", p.models.ball_table);
   reader.read("cue_model", p.models.cue);
-  readTable(node, reader, p);
   reader.refuseUnknown();
   return p;
 }

@@ -42,10 +42,9 @@ namespace
 using physics::Engine;
 using physics::PhysicsParams;
 
-/// Coefficients by name over the defaults: unknown names and values out of range are refused,
+/// Coefficients by name over `base` (the table's defaults): unknown names and values out of range are refused,
 /// naming them.
-PhysicsParams<double> paramsFrom(const std::map<std::string, double>& given,
-                                 const PhysicsParams<double>& base = PhysicsParams<double>())
+PhysicsParams<double> paramsFrom(const std::map<std::string, double>& given, const PhysicsParams<double>& base)
 {
   PhysicsParams<double> params = base;
   for (const auto& [name, value] : given)
@@ -85,7 +84,7 @@ std::shared_ptr<const Engine<double>> makeEngine(const std::string& table, const
     throw std::invalid_argument("table '" + table + "': " + e.what());
   }
   const physics::ModelChoice models(ball_ball, cushion, ball_table, cue);  // empty: the default
-  return std::make_shared<const Engine<double>>(model, paramsFrom(params), models);
+  return std::make_shared<const Engine<double>>(model, paramsFrom(params, physics::tableDefaults(*model)), models);
 }
 
 py::dict paramFields()

@@ -354,11 +354,12 @@ Scene loadScene(const std::string& yaml_text)
       throw SceneError("a scene is a YAML map");
     onlyKeys(root, "the scene", {"table", "physics", "rack", "rack_gap", "balls", "shot", "duration", "game"});
     Scene scene;
-    if (root["physics"])
-      applyPhysicsNode(root["physics"], scene.params, scene.models);
     if (root["table"])
       scene.table_name = text(root["table"], "table");
     scene.table = std::make_shared<const physics::TableModel>(tableFromUrdfFile(tableUrdfPath(scene.table_name)));
+    scene.params = physics::tableDefaults(*scene.table);  // the table's balls, unless physics: says
+    if (root["physics"])
+      applyPhysicsNode(root["physics"], scene.params, scene.models);
     const double R = scene.params.ball_radius;
     if (root["rack"])
     {

@@ -10,7 +10,7 @@ namespace cue_sim
 {
 std::vector<std::string> tableNames()
 {
-  return {"7ft", "9ft", "carom"};
+  return {"7ft", "9ft", "carom", "snooker"};
 }
 
 namespace

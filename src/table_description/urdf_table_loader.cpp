@@ -8,7 +8,10 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
+
+#include "cue_sim/physics/physics_params.hpp"
 
 namespace cue_sim
 {
@@ -97,10 +100,14 @@ public:
                       ((centre.head<2>() + half) - edge.high).maxCoeff() > 0))
       fail("the rails' outer edges must enclose link 'cloth'");
     TableModel table(model_.getName(), centre.head<2>(), length, width, std::move(segments), std::move(circles),
-                     std::move(pockets), has_rails ? std::optional<physics::TableEdge>(edge) : std::nullopt);
+                     std::move(pockets), has_rails ? std::optional<physics::TableEdge>(edge) : std::nullopt,
+                     ballsOf(model_.getLink("balls")));
     const std::string open = table.whyOpen();
     if (!open.empty())
       fail(open);
+    if (table.balls())
+      if (const std::string why = physics::tableDefaults(table).validate(); !why.empty())
+        fail("link 'balls' does not fit the engine's defaults: " + why);
     return table;
   }
 
@@ -126,6 +133,24 @@ private:
     edge.high = has_rails ? edge.high.cwiseMax(high) : high;
     edge.rail_height = has_rails ? std::max(edge.rail_height, top) : top;
     has_rails = true;
+  }
+
+  /// The balls the table is played with: link 'balls', a collision sphere (their radius) and an
+  /// inertial mass; none when the description has no such link.
+  std::optional<physics::TableBalls> ballsOf(const urdf::LinkConstSharedPtr& link) const
+  {
+    if (!link)
+      return std::nullopt;
+    if (!link->collision || !link->collision->geometry || link->collision->geometry->type != urdf::Geometry::SPHERE)
+      fail("link 'balls' needs a <collision> with <sphere> geometry: the radius of the table's balls");
+    if (!link->inertial)
+      fail("link 'balls' needs an <inertial> with a <mass>: the mass of one of the table's balls");
+    physics::TableBalls balls{static_cast<const urdf::Sphere&>(*link->collision->geometry).radius,
+                              link->inertial->mass};
+    if (!(balls.radius > 0 && balls.mass > 0))
+      fail("link 'balls': the sphere's radius and the mass must be positive, got " + std::to_string(balls.radius) +
+           " m and " + std::to_string(balls.mass) + " kg");
+    return balls;
   }
 
   [[noreturn]] void fail(const std::string& why) const

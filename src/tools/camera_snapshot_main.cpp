@@ -53,7 +53,7 @@ int main(int argc, char** argv)
   {
     using namespace cue_sim;
     const auto table = std::make_shared<const physics::TableModel>(tableFromUrdfFile(tableUrdfPath(table_name)));
-    const auto engine = std::make_shared<const physics::Engine<double>>(table, physics::PhysicsParams<double>(),
+    const auto engine = std::make_shared<const physics::Engine<double>>(table, physics::tableDefaults(*table),
                                                                         physics::ModelChoice("", "", "", cue_model));
     session::LiveTable live(engine, {}, rack, 0);
     const session::Stamp after = static_cast<session::Stamp>(after_ms * 1e6);

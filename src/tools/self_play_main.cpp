@@ -40,7 +40,7 @@ int main(int argc, char** argv)
       const std::string played_on = table_name.empty() ? cue_sim::game::rulesTable(ruleset) : table_name;
       const auto table = std::make_shared<const cue_sim::physics::TableModel>(
           cue_sim::tableFromUrdfFile(cue_sim::tableUrdfPath(played_on)));
-      const cue_sim::physics::Engine<double> engine(table, cue_sim::physics::PhysicsParams<double>());
+      const cue_sim::physics::Engine<double> engine(table, cue_sim::physics::tableDefaults(*table));
       cue_sim::game::SelfPlayOptions options;
       options.rules = ruleset;
       options.games = games;

@@ -47,7 +47,7 @@ def test_imports_and_runs_without_ros():
 
 
 def test_lists_the_registry():
-    assert {"7ft", "9ft", "carom"} <= set(cue_sim.tables())
+    assert {"7ft", "9ft", "carom", "snooker"} <= set(cue_sim.tables())
     models = cue_sim.models()
     assert models["ball_ball"][0] == "frictional" and "mathavan2014" in models["ball_ball"]
     assert models["cushion"][0] == "han2005" and "stronge2018" in models["cushion"]
@@ -198,6 +198,17 @@ def test_the_readme_example_runs(tmp_path, monkeypatch):
     exec(compile(code, "README.md", "exec"), names)
     assert (tmp_path / "shot.png").stat().st_size > 10000
     assert names["out"].positions.shape == (1000, 16, 3) and 0 <= names["best"] < 1000
+
+
+def test_each_table_plays_with_its_own_balls_unless_told_otherwise():
+    assert cue_sim.Engine("7ft").params["ball_radius"] == cue_sim.parameters()["ball_radius"]["default"]
+    snooker = cue_sim.Engine("snooker")
+    assert snooker.params["ball_radius"] == 0.02625 and snooker.params["ball_mass"] == 0.142
+    assert cue_sim.Engine("carom").params["ball_radius"] == 0.03075
+    given = cue_sim.Engine("snooker", ball_radius=0.028575)
+    assert given.params["ball_radius"] == 0.028575 and given.params["ball_mass"] == 0.142
+    rack = snooker.rack("nine")
+    assert np.all(rack.positions[:, 2] == 0.02625)
 
 
 def test_a_table_from_its_urdf_file_is_the_named_table(tmp_path):

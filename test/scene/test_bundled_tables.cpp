@@ -110,7 +110,8 @@ TEST(BundledTables, ABallMeetingAJawOrACushionsEndAndThenTheCushionNeverEntersIt
 {
   for (const std::string& name : tableNames())
   {
-    const Engine<double> engine(bundled(name), PhysicsParams<double>());
+    const auto table = bundled(name);
+    const Engine<double> engine(table, tableDefaults(*table));
     const double R = engine.params().ball_radius;
     std::mt19937 random(15);
     int shots = 0, onto_the_cushion = 0;
@@ -152,10 +153,10 @@ TEST(BundledTables, ABallMeetingAJawOrACushionsEndAndThenTheCushionNeverEntersIt
 
 TEST(BundledTables, BehindAPocketsMouthIsOffTheCloth)
 {
-  const double R = PhysicsParams<double>().ball_radius;
   for (const std::string& name : tableNames())
   {
     const auto table = bundled(name);
+    const double R = tableDefaults(*table).ball_radius;
     for (const auto& pocket : table->pockets())
     {
       // The pocket's axis: from the nearest point of the cloth's rectangle out to its centre.
@@ -182,6 +183,7 @@ TEST(BundledTables, BehindAPocketsMouthIsOffTheCloth)
     }
   }
   // The issue's own case: past the cushion line, beside the side pocket's capture circle.
+  const double R = PhysicsParams<double>().ball_radius;
   const auto seven = bundled("7ft");
   EXPECT_NE(seven->whyNotPlaceable(Eigen::Vector2d(0.12, 0.51), R).find("behind cushion_ypos_foot"), std::string::npos);
   const Engine<double> engine(seven, PhysicsParams<double>());
@@ -198,7 +200,8 @@ TEST(BundledTables, EveryTableWithPocketsHostsAGame)
   // both rulesets rack, break legally and play to the end; a table without pockets is refused.
   for (const std::string& name : tableNames())
   {
-    const Engine<double> engine(bundled(name), PhysicsParams<double>());
+    const auto table = bundled(name);
+    const Engine<double> engine(table, tableDefaults(*table));
     if (engine.table().pockets().empty())
     {
       EXPECT_THROW(game::GamePlay(engine, "eight_ball"), std::invalid_argument) << name;
@@ -218,6 +221,64 @@ TEST(BundledTables, EveryTableWithPocketsHostsAGame)
         EXPECT_FALSE(record.turns.front().ruling.rerack)
             << name << " " << rules << ": " << record.turns.front().ruling.reason;
       }
+    }
+  }
+}
+
+// The snooker table (issue 34): its mouths are those make_table_urdf.py names (89 mm at the
+// corners, 83 mm in the middle, between the cushions' ends), its knuckles leave a 52.5 mm ball a
+// way through, and a ball sent straight at each pocket, slow or fast, drops into it.
+TEST(BundledTables, TheSnookerTablesPocketsTakeABallSentStraightIn)
+{
+  const auto table = bundled("snooker");
+  const PhysicsParams<double> p = tableDefaults(*table);
+  ASSERT_NEAR(p.ball_radius, 0.02625, 1e-12);
+  EXPECT_NEAR(table->clothLength(), 3.569, 1e-9);
+  EXPECT_NEAR(table->clothWidth(), 1.778, 1e-9);
+  ASSERT_EQ(table->pockets().size(), 6u);
+  const auto segment = [&](const std::string& name) {
+    for (const auto& s : table->segments())
+      if (s.name == name)
+        return s;
+    ADD_FAILURE() << "no " << name;
+    return table->segments().front();
+  };
+  EXPECT_NEAR((segment("cushion_yneg_head").start - segment("cushion_head").end).norm(), 0.089, 1e-9);
+  EXPECT_NEAR((segment("cushion_yneg_foot").end - segment("cushion_foot").start).norm(), 0.089, 1e-9);
+  EXPECT_NEAR((segment("cushion_yneg_head").end - segment("cushion_yneg_foot").start).norm(), 0.083, 1e-9);
+  EXPECT_NEAR((segment("cushion_ypos_foot").end - segment("cushion_ypos_head").start).norm(), 0.083, 1e-9);
+  const Engine<double> engine(table, p);
+  for (std::size_t k = 0; k < table->pockets().size(); ++k)
+  {
+    const Pocket& pocket = table->pockets()[k];
+    // The two knuckles nearest the pocket leave more than a ball's width between them.
+    std::vector<const CircularCushion*> jaws;
+    for (const auto& c : table->circles())
+      if ((c.centre - pocket.centre).norm() < pocket.radius + 1e-9 && c.radius > 0)
+        jaws.push_back(&c);
+    ASSERT_EQ(jaws.size(), 2u) << pocket.name;
+    const double gap = (jaws[0]->centre - jaws[1]->centre).norm() - jaws[0]->radius - jaws[1]->radius;
+    EXPECT_GT(gap, 2 * p.ball_radius + 0.01) << pocket.name;
+    EXPECT_LT(gap, 2 * p.ball_radius + 0.03) << pocket.name << ": a snooker pocket is tight";
+    // From 40 cm out along the pocket's axis, rolling, at a crawl and hard.
+    const Eigen::Vector2d mouth = (jaws[0]->centre + jaws[1]->centre) / 2;
+    const Eigen::Vector2d inwards = (mouth - pocket.centre).normalized();
+    for (const double speed : {0.4, 1.5, 5.0})
+    {
+      TableState<double> s;
+      Ball<double> b;
+      b.id = 1;
+      b.r = Eigen::Vector3d(mouth.x() + 0.4 * inwards.x(), mouth.y() + 0.4 * inwards.y(), p.ball_radius);
+      b.v = Eigen::Vector3d(-speed * inwards.x(), -speed * inwards.y(), 0);
+      b.w = Eigen::Vector3d::UnitZ().cross(b.v) / p.ball_radius;
+      b.motion = Motion::Rolling;
+      s.balls.push_back(b);
+      ASSERT_EQ(engine.whyInvalid(s), "") << pocket.name;
+      const ShotResult<double> result = simulateToRest(engine, s);
+      ASSERT_FALSE(result.events.empty()) << pocket.name << " at " << speed << " m/s";
+      EXPECT_EQ(result.events.back().kind, EventKind::Pocketed) << pocket.name << " at " << speed << " m/s";
+      EXPECT_EQ(result.events.back().obstacle, static_cast<int>(k)) << pocket.name << " at " << speed << " m/s";
+      EXPECT_FALSE(s.balls[0].inPlay());
     }
   }
 }

@@ -37,15 +37,27 @@ TEST(SceneFile, ConfigPhysicsYamlHoldsTheBuiltInDefaults)
 {
   // The node reads config/physics.yaml, simulate falls back to the compiled defaults: both
   // must describe the same physics.
+  // The ball's radius and mass are not in it: they are the table's (its URDF's `balls` link),
+  // and a value in the file would override every table's.
+  const physics::PhysicsParams<double> defaults;
+  const auto isBall = [](const physics::ParamField& field) {
+    return std::string(field.name) == "ball_radius" || std::string(field.name) == "ball_mass";
+  };
   physics::PhysicsParams<double> from_yaml;
   for (const auto& field : physics::physicsParamFields())
-    from_yaml.*field.member = -1;
+    if (!isBall(field))
+      from_yaml.*field.member = -1;
+  from_yaml.ball_radius = 0.0262;  // a sentinel ball the file must leave alone
+  from_yaml.ball_mass = 0.15;
   physics::ModelChoice models;
   models.ball_ball = models.cushion = "";
   applyPhysicsYaml(readConfig(), from_yaml, models);
-  const physics::PhysicsParams<double> defaults;
   for (const auto& field : physics::physicsParamFields())
-    EXPECT_NEAR(from_yaml.*field.member, defaults.*field.member, 1e-9 * std::abs(defaults.*field.member)) << field.name;
+    if (!isBall(field))
+      EXPECT_NEAR(from_yaml.*field.member, defaults.*field.member, 1e-9 * std::abs(defaults.*field.member))
+          << field.name;
+  EXPECT_EQ(from_yaml.ball_radius, 0.0262);
+  EXPECT_EQ(from_yaml.ball_mass, 0.15);
   EXPECT_EQ(models.ball_ball, physics::ModelChoice().ball_ball);
   EXPECT_EQ(models.cushion, physics::ModelChoice().cushion);
   // rosparam reads the file as YAML 1.1, where a number with an exponent and no point (1e-5)
@@ -217,4 +229,20 @@ TEST(SceneFile, BadGameBlocksNameTheKey)
                 .find("shot.ball: ball 3 is not struck in a game of eight_ball"),
             std::string::npos);
   EXPECT_NE(errorOf("game: {rules: eight_ball, colour: red}\n").find("unknown key 'colour'"), std::string::npos);
+}
+
+// A scene plays with its table's balls (issue 34) unless its physics: block names others.
+TEST(SceneFile, TheTablesBallsUnlessPhysicsSaysOtherwise)
+{
+  const Scene snooker = loadScene("table: snooker\nrack: empty\n");
+  EXPECT_EQ(snooker.params.ball_radius, 0.02625);
+  EXPECT_EQ(snooker.params.ball_mass, 0.142);
+  const Scene carom = loadScene("table: carom\nrack: carom\n");
+  EXPECT_EQ(carom.params.ball_radius, 0.03075);
+  for (const auto& b : carom.state.balls)
+    EXPECT_EQ(b.r.z(), 0.03075);  // placed with the table's ball
+  const Scene overridden = loadScene("table: snooker\nphysics: {ball_radius: 0.028575}\n");
+  EXPECT_EQ(overridden.params.ball_radius, 0.028575);
+  EXPECT_EQ(overridden.params.ball_mass, 0.142);
+  EXPECT_EQ(loadScene("table: 7ft\n").params.ball_radius, physics::PhysicsParams<double>().ball_radius);
 }

@@ -7,6 +7,7 @@
 #include <map>
 #include <regex>
 #include <sstream>
+#include <tuple>
 
 #include "cue_sim/physics/physics_params.hpp"
 #include "cue_sim/table_description/table_catalog.hpp"
@@ -88,12 +89,12 @@ TEST(UrdfTable, UnknownTableNamesTheKnownOnes)
 {
   try
   {
-    tableUrdfPath("snooker");
+    tableUrdfPath("bagatelle");
     FAIL();
   }
   catch (const TableDescriptionError& e)
   {
-    EXPECT_NE(std::string(e.what()).find("7ft, 9ft, carom"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("7ft, 9ft, carom, snooker"), std::string::npos);
   }
 }
 
@@ -218,4 +219,55 @@ TEST(UrdfTable, TheRailsGiveTheTablesEdgeAndTheirTop)
   const TableModel railed = tableFromUrdf(withRail("0 0 0.01", "3 2 0.02"));
   EXPECT_NEAR(railed.edge().high.x(), 1.5, 1e-12);
   EXPECT_NEAR(railed.edge().rail_height, 0.02, 1e-12);
+}
+
+// The balls a table is played with (issue 34): each bundled table names its own in a 'balls'
+// link, the engine's coefficients start from them, and a description without one keeps the
+// pool ball.
+TEST(UrdfTable, EachBundledTableNamesItsBalls)
+{
+  const PhysicsParams<double> pool;
+  for (const auto& [name, radius, mass] : {std::tuple<std::string, double, double>{"7ft", 0.028575, 0.170097},
+                                           {"9ft", 0.028575, 0.170097},
+                                           {"carom", 0.03075, 0.210},     // UMB: 61-61.5 mm, 205-220 g
+                                           {"snooker", 0.02625, 0.142}})  // WPBSA: 52.5 mm
+  {
+    SCOPED_TRACE(name);
+    const TableModel table = tableFromUrdfFile(tableUrdfPath(name));
+    ASSERT_TRUE(table.balls().has_value());
+    EXPECT_EQ(table.balls()->radius, radius);
+    EXPECT_EQ(table.balls()->mass, mass);
+    const PhysicsParams<double> p = cue_sim::physics::tableDefaults(table);
+    EXPECT_EQ(p.ball_radius, radius);
+    EXPECT_EQ(p.ball_mass, mass);
+    EXPECT_EQ(p.mu_slide, pool.mu_slide);  // nothing else comes from the table
+    EXPECT_EQ(p.cushion_height, pool.cushion_height);
+    EXPECT_EQ(p.validate(), "");
+  }
+  EXPECT_EQ(pool.ball_radius, 0.028575);  // the pool ball, for a table that names none
+  EXPECT_FALSE(TableModel::carom("carom", 2.84, 1.42).balls().has_value());
+}
+
+TEST(UrdfTable, ABallsLinkIsCheckedAndSaysWhatIsWrong)
+{
+  const auto balls = [](const std::string& geometry, const std::string& inertial) {
+    return R"(<link name="balls">)" + inertial + "<collision><geometry>" + geometry + R"(</geometry></collision></link>
+        <joint name="j_balls" type="fixed"><parent link="table"/><child link="balls"/></joint>)";
+  };
+  const std::string mass =
+      R"(<inertial><mass value="0.2"/><inertia ixx="1e-4" ixy="0" ixz="0" iyy="1e-4" iyz="0" izz="1e-4"/></inertial>)";
+  const TableModel read = tableFromUrdf(closedTable("", balls(R"(<sphere radius="0.03"/>)", mass)));
+  ASSERT_TRUE(read.balls().has_value());
+  EXPECT_EQ(read.balls()->radius, 0.03);
+  EXPECT_EQ(read.balls()->mass, 0.2);
+  EXPECT_FALSE(tableFromUrdf(closedTable("", "")).balls().has_value());
+  EXPECT_NE(
+      errorOf(closedTable("", balls(R"(<box size="1 1 1"/>)", mass))).find("'balls' needs a <collision> with <sphere>"),
+      std::string::npos);
+  EXPECT_NE(errorOf(closedTable("", balls(R"(<sphere radius="0.03"/>)", ""))).find("'balls' needs an <inertial>"),
+            std::string::npos);
+  // A ball too small for the engine's cushion nose (h must lie between R and 2R).
+  const std::string why = errorOf(closedTable("", balls(R"(<sphere radius="0.01"/>)", mass)));
+  EXPECT_NE(why.find("link 'balls'"), std::string::npos) << why;
+  EXPECT_NE(why.find("cushion_height"), std::string::npos) << why;
 }

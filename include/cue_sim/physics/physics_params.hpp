@@ -72,5 +72,13 @@ struct ParamField
 /// range of its own besides: strictly between R and 2R (validate says why).
 const std::vector<ParamField>& physicsParamFields();
 
+class TableModel;
+
+/// The coefficients a table is played with before any are set: the defaults above, with the
+/// ball's radius and mass from the table's description where it names its balls (a snooker
+/// table's, a carom table's). Adapters start from these and then apply what a user sets, so an
+/// explicit ball_radius or ball_mass wins.
+PhysicsParams<double> tableDefaults(const TableModel& table);
+
 }  // namespace physics
 }  // namespace cue_sim

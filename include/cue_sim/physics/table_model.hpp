@@ -52,6 +52,15 @@ struct TableEdge
   double rail_height = std::numeric_limits<double>::quiet_NaN();
 };
 
+/// The balls a table is played with, as its description names them (a `balls` link in URDF): a
+/// snooker table's 52.5 mm balls, a carom table's 61.5 mm. The engine's coefficients start from
+/// them (tableDefaults in physics_params.hpp); a ball_radius or ball_mass set explicitly wins.
+struct TableBalls
+{
+  double radius = 0;  ///< [m]
+  double mass = 0;    ///< [kg]
+};
+
 /// How far the table reaches beyond the cloth when its description does not say: a 5 cm
 /// cushion and a 10 cm rail, as the tables in urdf/ (scripts/make_table_urdf.py).
 constexpr double kCushionAndRailWidth = 0.15;  // [m]
@@ -61,10 +70,10 @@ class TableModel
 public:
   /// The playing surface is the rectangle |x - cx| <= length/2, |y - cy| <= width/2. Without an
   /// `edge`, the table's edge is kCushionAndRailWidth beyond the cloth's and its rails are flush
-  /// with the cushions.
+  /// with the cushions. Without `balls`, the table names none and takes the pool ball.
   TableModel(std::string name, Eigen::Vector2d cloth_centre, double cloth_length, double cloth_width,
              std::vector<CushionSegment> segments, std::vector<CircularCushion> circles, std::vector<Pocket> pockets,
-             std::optional<TableEdge> edge = std::nullopt);
+             std::optional<TableEdge> edge = std::nullopt, std::optional<TableBalls> balls = std::nullopt);
 
   /// A segment from start to end whose playing side is to the left of start -> end.
   static CushionSegment makeSegment(std::string name, const Eigen::Vector2d& start, const Eigen::Vector2d& end);
@@ -87,6 +96,8 @@ public:
   const std::vector<Pocket>& pockets() const { return pockets_; }
   /// The rails and the table's outer edge.
   const TableEdge& edge() const { return edge_; }
+  /// The balls the table's description names, if it names them.
+  const std::optional<TableBalls>& balls() const { return balls_; }
   /// The index of the pocket named `name` (an empty name: -1, no pocket), or why there is none,
   /// listing the pockets' names.
   std::string whyNoPocket(const std::string& name, int& index) const;
@@ -120,6 +131,7 @@ private:
   std::vector<CircularCushion> circles_;
   std::vector<Pocket> pockets_;
   TableEdge edge_;
+  std::optional<TableBalls> balls_;
 };
 
 }  // namespace physics

@@ -6,7 +6,7 @@
 
 namespace cue_sim
 {
-/// "7ft", "9ft", "carom".
+/// "7ft", "9ft", "carom", "snooker".
 std::vector<std::string> tableNames();
 
 /// The URDF file of a shipped table, or of `name_or_path` itself if it names a file. Looks in

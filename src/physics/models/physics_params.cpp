@@ -3,6 +3,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "cue_sim/physics/table_model.hpp"
+
 namespace cue_sim
 {
 namespace physics
@@ -65,6 +67,17 @@ const std::vector<ParamField>& physicsParamFields()
 #undef CUE_SIM_PARAM
   };
   return fields;
+}
+
+PhysicsParams<double> tableDefaults(const TableModel& table)
+{
+  PhysicsParams<double> params;
+  if (const auto& balls = table.balls())
+  {
+    params.ball_radius = balls->radius;
+    params.ball_mass = balls->mass;
+  }
+  return params;
 }
 
 }  // namespace physics

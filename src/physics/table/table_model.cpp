@@ -46,14 +46,15 @@ std::vector<CircularCushion> withEndCaps(const std::vector<CushionSegment>& segm
 
 TableModel::TableModel(std::string name, Eigen::Vector2d cloth_centre, double cloth_length, double cloth_width,
                        std::vector<CushionSegment> segments, std::vector<CircularCushion> circles,
-                       std::vector<Pocket> pockets, std::optional<TableEdge> edge)
+                       std::vector<Pocket> pockets, std::optional<TableEdge> edge, std::optional<TableBalls> balls)
   : name_(std::move(name)),
     cloth_centre_(std::move(cloth_centre)),
     cloth_length_(cloth_length),
     cloth_width_(cloth_width),
     segments_(std::move(segments)),
     circles_(withEndCaps(segments_, std::move(circles))),
-    pockets_(std::move(pockets))
+    pockets_(std::move(pockets)),
+    balls_(balls)
 {
   if (edge)
     edge_ = *edge;
