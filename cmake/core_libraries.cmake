@@ -22,6 +22,7 @@ add_library(cue_sim_physics
   # tables and racks
   ${CUE_SIM_ROOT}/src/physics/table/table_model.cpp
   ${CUE_SIM_ROOT}/src/physics/table/table_closure.cpp
+  ${CUE_SIM_ROOT}/src/physics/table/snooker_markings.cpp
   ${CUE_SIM_ROOT}/src/physics/table/rack.cpp
   # the engine: the immutable model, and the table's geometry as the search reads it
   ${CUE_SIM_ROOT}/src/physics/engine/engine.cpp

@@ -26,10 +26,10 @@ RAIL_BELOW = 0.005  # [m] how far the rail reaches below the cloth's top
 JAW_RADIUS = 0.01  # [m] the rounded end of a cushion at a pocket (pool tables)
 CAPTURE_RADIUS = 0.15  # [m] pocket capture circles
 
-# The balls each table is played with: (radius [m], mass [kg]).
-POOL_BALL = (0.028575, 0.170097)  # WPA: 2 1/4 in, 5 1/2 to 6 oz (physics_params.def's default)
-CAROM_BALL = (0.03075, 0.210)  # UMB: 61 to 61.5 mm, 205 to 220 g
-SNOOKER_BALL = (0.02625, 0.142)  # WPBSA: 52.5 mm (+/- 0.05 mm); the rules name no mass, 142 g is a match set's
+# The balls each table is played with: (radius [m], mass [kg], the set's name).
+POOL_BALL = (0.028575, 0.170097, "pool")  # WPA: 2 1/4 in, 5 1/2 to 6 oz (physics_params.def's default)
+CAROM_BALL = (0.03075, 0.210, "carom")  # UMB: 61 to 61.5 mm, 205 to 220 g
+SNOOKER_BALL = (0.02625, 0.142, "snooker")  # WPBSA: 52.5 mm (+/- 0.05 mm); no mass in the rules, 142 g a match set's
 # A snooker table's pockets. The WPBSA's templates are not public. The mouths, between the
 # cushions' noses where their rounded knuckles begin, are those of one public project
 # (polymorvic/deep-peep-snooker: corner 89 mm, middle 83 mm); pooltool's generic snooker table
@@ -90,8 +90,9 @@ def sphere(r):
     return f'<sphere radius="{r:.9f}"/>'
 
 
-def balls_link(radius, mass):
-    """The balls the table is played with: their radius as a sphere, their mass as an inertial."""
+def balls_link(radius, mass, ball_set):
+    """The balls the table is played with: their radius as a sphere (the collision named for the
+    set, for pictures), their mass as an inertial."""
     inertia = 0.4 * mass * radius**2
     return [
         '  <link name="balls">',
@@ -99,7 +100,7 @@ def balls_link(radius, mass):
         f'      <mass value="{mass:.9f}"/>',
         f'      <inertia ixx="{inertia:.12e}" ixy="0" ixz="0" iyy="{inertia:.12e}" iyz="0" izz="{inertia:.12e}"/>',
         "    </inertial>",
-        "    <collision>",
+        f'    <collision name="{ball_set}">',
         f"      <geometry>{sphere(radius)}</geometry>",
         "    </collision>",
         "  </link>",

@@ -31,7 +31,8 @@ target_compile_definitions(physics_tests PRIVATE CUE_SIM_SOURCE_DIR="${PROJECT_S
 # The second longest (1 to 2 minutes): early, beside the others.
 set_tests_properties(_ctest_cue_sim_gtest_physics_tests PROPERTIES COST 500)
 
-catkin_add_gtest(game_tests test/game/test_referee.cpp test/game/test_ten_ball.cpp test/game/test_three_cushion.cpp)
+catkin_add_gtest(game_tests test/game/test_referee.cpp test/game/test_ten_ball.cpp test/game/test_three_cushion.cpp
+                 test/game/test_snooker.cpp)
 target_link_libraries(game_tests cue_sim_game gtest_main)
 
 catkin_add_gtest(accuracy_tests test/physics/test_accuracy.cpp)

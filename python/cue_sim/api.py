@@ -27,7 +27,7 @@ EVENT_DTYPE = np.dtype([("time", "f8"), ("kind", "i4"), ("ball", "i4"), ("other"
 
 
 def tables() -> List[str]:
-    """The bundled tables' names ("7ft", "9ft", "carom"); Engine also takes a URDF file's path."""
+    """The bundled tables' names ("7ft", "9ft", "carom", "snooker"); Engine also takes a URDF file's path."""
     return list(_core.table_names())
 
 
@@ -107,20 +107,21 @@ class TableGeometry:
     pockets: Dict[str, Tuple[float, float, float]]
 
 
-def ball_colour(ball: int, carom: bool = False) -> Tuple[float, float, float]:
+def ball_colour(ball: int, carom: bool = False, ball_set: Optional[str] = None) -> Tuple[float, float, float]:
     """A ball's colour (r, g, b in [0, 1]) as rviz shows it: standard pool colours, 9-15 the
     stripes of 1-7, 0 the cue ball; with `carom` (a table without pockets) carom's set, 0 white,
-    1 yellow, 2 red."""
-    return tuple(_core.ball_colour(int(ball), bool(carom)))
+    1 yellow, 2 red. `ball_set` ("pool", "carom", "snooker"; Engine.ball_set) names the set
+    instead: snooker's 1-15 are the reds, 16-21 yellow, green, brown, blue, pink and black."""
+    return tuple(_core.ball_colour(int(ball), bool(carom), ball_set or ""))
 
 
-def is_striped(ball: int, carom: bool = False) -> bool:
-    return bool(_core.is_striped(int(ball), bool(carom)))
+def is_striped(ball: int, carom: bool = False, ball_set: Optional[str] = None) -> bool:
+    return bool(_core.is_striped(int(ball), bool(carom), ball_set or ""))
 
 
-def is_numbered(ball: int, carom: bool = False) -> bool:
-    """Whether the ball carries its number: pool's object balls; no carom ball does."""
-    return bool(_core.is_numbered(int(ball), bool(carom)))
+def is_numbered(ball: int, carom: bool = False, ball_set: Optional[str] = None) -> bool:
+    """Whether the ball carries its number: pool's object balls; no carom or snooker ball does."""
+    return bool(_core.is_numbered(int(ball), bool(carom), ball_set or ""))
 
 
 class Engine:
@@ -163,6 +164,11 @@ class Engine:
         return dict(self._engine.params)
 
     @property
+    def ball_set(self) -> str:
+        """The balls the table is played with, for pictures: "pool", "carom" or "snooker"."""
+        return self._engine.ball_set
+
+    @property
     def pockets(self) -> Dict[str, Tuple[float, float, float]]:
         """Each pocket by its URDF link name: the centre (x, y) [m] and radius [m] of its capture
         circle (a ball whose centre enters it drops)."""
@@ -183,7 +189,7 @@ class Engine:
                 "ball_table": self._engine.ball_table_model, "cue": self._engine.cue_model}
 
     def rack(self, layout: str = "eight", gap: float = 1e-5, jitter: float = 0.0, seed: int = 0) -> State:
-        """A standard rack ("eight", "nine", "ten" or "empty": the cue ball only) with `gap` [m] between
+        """A standard rack ("eight", "nine", "ten", "carom", "snooker" or "empty": the cue ball only) with `gap` [m] between
         neighbouring balls and each ball but the apex moved by up to `jitter` [m] (from `seed`)."""
         return State._of(self._engine.rack(layout, gap, jitter, seed))
 

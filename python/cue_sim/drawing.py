@@ -115,18 +115,18 @@ def _draw_table(ax, engine: Engine) -> None:
                 alpha=0.25, lw=0.8, zorder=2)
 
 
-def _draw_ball(ax, xy, ball: int, radius: float, final: bool, carom: bool) -> None:
+def _draw_ball(ax, xy, ball: int, radius: float, final: bool, ball_set: str) -> None:
     from matplotlib.patches import Circle
 
-    colour = ball_colour(ball, carom)
+    colour = ball_colour(ball, ball_set=ball_set)
     if not final:  # where it started: an outline
         ax.add_patch(Circle(xy, radius, fill=False, edgecolor=colour, lw=1.0, ls="--", zorder=6))
         return
-    striped = is_striped(ball, carom)
+    striped = is_striped(ball, ball_set=ball_set)
     ax.add_patch(Circle(xy, radius, facecolor=colour, edgecolor="black", lw=0.6, zorder=7))
     if striped:  # from above, a white cap in a coloured ring
         ax.add_patch(Circle(xy, 0.55 * radius, facecolor=ball_colour(0), lw=0, zorder=8))
-    if is_numbered(ball, carom):
+    if is_numbered(ball, ball_set=ball_set):
         ax.text(xy[0], xy[1], str(ball), ha="center", va="center", fontsize=5.5, zorder=9,
                 color=_core.number_colour(ball))
 
@@ -171,16 +171,16 @@ def draw_shot(engine: Engine, start: State, shot: Shot, path: Optional[str] = No
     else:
         figure = ax.figure
     _draw_table(ax, engine)
-    carom = not engine.geometry.pockets  # a table without pockets is played with carom's balls
+    ball_set = engine.ball_set  # the table's own balls: pool's, carom's or snooker's
     for ball, i in index.items():
         track = positions[:, i]
         if np.nanmax(np.abs(track - start.positions[i, :2]), initial=0.0) > 1e-6:
-            ax.plot(track[:, 0], track[:, 1], color=ball_colour(ball, carom), lw=1.1, zorder=5,
+            ax.plot(track[:, 0], track[:, 1], color=ball_colour(ball, ball_set=ball_set), lw=1.1, zorder=5,
                     solid_capstyle="round",
                     path_effects=[Stroke(linewidth=2.0, foreground=(0, 0, 0, 0.45)), Normal()])  # seen on any cloth
-        _draw_ball(ax, start.positions[i, :2], ball, radius, final=False, carom=carom)
+        _draw_ball(ax, start.positions[i, :2], ball, radius, final=False, ball_set=ball_set)
         if shot.final.motion[i] != 4:
-            _draw_ball(ax, shot.final.positions[i, :2], ball, radius, final=True, carom=carom)
+            _draw_ball(ax, shot.final.positions[i, :2], ball, radius, final=True, ball_set=ball_set)
     _draw_events(ax, shot, exact, index, radius)
     s = shot.strike
     ax.set_title(title if title is not None else

@@ -1,5 +1,5 @@
-"""Games under the WPA rules (8-ball, 9-ball, 10-ball) and the UMB rules (three-cushion): rules(),
-refereed as on the node and in `simulate`."""
+"""Games under the WPA rules (8-ball, 9-ball, 10-ball), the UMB rules (three-cushion) and the WPBSA
+rules (snooker): rules(), refereed as on the node and in `simulate`."""
 from __future__ import annotations
 
 import json
@@ -14,9 +14,10 @@ import numpy as np  # noqa: E402 (after cue_sim.api, which checks this Python ca
 class Ruling:
     """The referee's ruling on one shot: whether it was a foul, the rule it rests on (e.g.
     "WPA 6.1", "UMB Art. 83") and why, whether the shooter continues, who shoots next (0 or 1),
-    ball in hand for the next shot ("anywhere", "behind_head_string" or "none"), the balls
+    ball in hand for the next shot ("anywhere", "behind_head_string", "in_d" or "none"), the balls
     spotted, a re-rack, whether the game is over and who won (-1 for nobody), each player's
-    group, and the points the shooter scored (three-cushion)."""
+    group, the points the shooter scored (three-cushion, snooker) and those a foul gave the
+    opponent (snooker), and whether a colour is on next (snooker, after a red)."""
     foul: bool
     rule: str
     reason: str
@@ -29,12 +30,15 @@ class Ruling:
     winner: int
     groups: Tuple[str, str]
     points: int = 0
+    penalty: int = 0
+    colour_next: bool = False
 
     @staticmethod
     def _of(text: str) -> "Ruling":
         r = json.loads(text)
         return Ruling(r["foul"], r["rule"], r["reason"], r["continues"], r["next_player"], r["ball_in_hand"],
-                      list(r["respot"]), r["rerack"], r["game_over"], r["winner"], tuple(r["groups"]), r["points"])
+                      list(r["respot"]), r["rerack"], r["game_over"], r["winner"], tuple(r["groups"]), r["points"],
+                      r["penalty"], r["colour_next"])
 
 
 class Game:
@@ -43,8 +47,8 @@ class Game:
     position. Copy it to try shots (copy()).
 
     rules: one of rules() ("eight_ball", "nine_ball", "ten_ball" on a table with pockets,
-    "three_cushion" on one without: Engine(table="carom")). target: the points that win where the
-    game keeps a score (three-cushion; 0 for the rules' 40).
+    "three_cushion" on one without: Engine(table="carom"); "snooker", best on Engine(table="snooker")).
+    target: the points that win where the game is a race (three-cushion; 0 for the rules' 40).
     """
 
     def __init__(self, engine: Engine, rules: str = "eight_ball", players: Tuple[str, str] = ("player 1", "player 2"),
@@ -113,5 +117,5 @@ class Game:
 
 
 def rules() -> List[str]:
-    """The rulesets (the referee's registry): "eight_ball", "nine_ball", "ten_ball", "three_cushion"."""
+    """The rulesets (the referee's registry): "eight_ball", "nine_ball", "ten_ball", "three_cushion", "snooker"."""
     return list(_core.rules_names())

@@ -4,6 +4,7 @@
 
 #include "cue_sim/physics/rack.hpp"
 #include "cue_sim/physics/simulation.hpp"
+#include "cue_sim/physics/snooker_markings.hpp"
 
 namespace cue_sim
 {
@@ -202,21 +203,29 @@ void GamePlay::returnCueBall()
   cue.v.setZero();
   cue.w.setZero();
   cue.time = table_.time;
-  const Eigen::Vector2d start = breakSpot(engine_->table(), R);
+  // Where the incoming player has it in hand: in the D (snooker), else behind the head string.
+  const BallInHand region = state_.ball_in_hand == BallInHand::InD ? BallInHand::InD : BallInHand::BehindHeadString;
+  Eigen::Vector2d start = breakSpot(engine_->table(), R);
+  if (region == BallInHand::InD)
+  {
+    const physics::SnookerMarkings m = physics::snookerMarkings(engine_->table());
+    start = m.d_centre - Eigen::Vector2d(0, m.d_radius / 2);  // between the yellow and brown spots
+  }
   physics::TableState<double> others = table_;
   others.balls.erase(others.balls.begin() + others.indexOf(0));
-  // Behind the head string, stepping back from the break spot until it stands.
+  // Stepping back from the start until it stands.
   for (double back = 0; back < engine_->table().clothLength() / 4; back += R)
     for (const double side : {0.0, 2.0 * R, -2.0 * R, 4.0 * R, -4.0 * R})
     {
       const Eigen::Vector2d p(start.x() - back, start.y() + side);
-      if (whyNotInHand(engine_->table(), R, others, p, BallInHand::BehindHeadString).empty())
+      if (whyNotInHand(engine_->table(), R, others, p, region).empty())
       {
         cue.r = physics::Vec3<double>(p.x(), p.y(), R);
         return;
       }
     }
-  throw std::runtime_error("no room behind the head string for the cue ball");
+  throw std::runtime_error(std::string("no room ") +
+                           (region == BallInHand::InD ? "in the D" : "behind the head string") + " for the cue ball");
 }
 
 }  // namespace game

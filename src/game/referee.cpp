@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "cue_sim/game/game_play.hpp"
+#include "cue_sim/physics/snooker_markings.hpp"
 #include "game/rules/rules_factories.hpp"
 
 namespace cue_sim
@@ -38,6 +39,8 @@ const char* ballInHandName(BallInHand place)
       return "anywhere";
     case BallInHand::BehindHeadString:
       return "behind_head_string";
+    case BallInHand::InD:
+      return "in_d";
     default:
       return "";
   }
@@ -178,6 +181,10 @@ GameState afterRuling(GameState state, const Ruling& ruling)
   state.groups = ruling.groups;
   state.push_out_allowed = ruling.push_out_next;
   state.score[shooter] += ruling.points;
+  state.score[1 - shooter] += ruling.penalty;
+  state.colour_next = ruling.colour_next;
+  state.free_ball = false;  // the rules' beforeShot() says whether the next shot has one
+  state.last_shot_foul = ruling.foul;
   if (ruling.next_player != shooter && !ruling.game_over)  // the table passes: the other's inning begins
     ++state.innings[ruling.next_player];
   state.turn = ruling.next_player;
@@ -287,6 +294,12 @@ bool inHandRegion(const physics::TableModel& table, double ball_radius, BallInHa
   high = table.clothCentre() + half;
   if (place == BallInHand::BehindHeadString)
     high.x() = table.headStringX();
+  if (place == BallInHand::InD)
+  {
+    const physics::SnookerMarkings m = physics::snookerMarkings(table);
+    low = low.cwiseMax(m.d_centre - Eigen::Vector2d(m.d_radius, m.d_radius));
+    high = high.cwiseMin(Eigen::Vector2d(m.baulk_line_x, m.d_centre.y() + m.d_radius));
+  }
   return true;
 }
 
@@ -306,6 +319,13 @@ std::string whyNotInHand(const physics::TableModel& table, double ball_radius, c
   else if (place == BallInHand::BehindHeadString && !(p.x() < table.headStringX()))
     why << "the cue ball must be placed behind the head string, not on it (WPA 8.1: x < " << table.headStringX()
         << " m), got x = " << p.x() << " m";
+  else if (place == BallInHand::InD && !physics::snookerMarkings(table).inD(p))
+  {
+    const physics::SnookerMarkings m = physics::snookerMarkings(table);
+    why << "the cue ball must be placed in the D (WPBSA Section 3: its centre at most " << m.d_radius
+        << " m from the middle of the baulk line, (" << m.d_centre.x() << ", " << m.d_centre.y()
+        << "), and not beyond the line, x <= " << m.baulk_line_x << " m), got (" << p.x() << ", " << p.y() << ")";
+  }
   else if (const std::string where = table.whyNotPlaceable(p, ball_radius); !where.empty())
     why << where;
   else if (!clearOfBalls(state, p, ball_radius, 0))

@@ -111,9 +111,24 @@ Choice breakChoice(const GamePlay& game)
 }
 }  // namespace
 
+/// Where the cue ball in hand may go besides behind a pot's ghost: a grid of kInHandGrid x
+/// kInHandGrid points over the region the rules allow (the D, behind the head string, the cloth).
+std::vector<Eigen::Vector2d> inHandPlaces(const GamePlay& game)
+{
+  std::vector<Eigen::Vector2d> places;
+  Eigen::Vector2d low, high;
+  if (!inHandRegion(game.engine().table(), game.engine().params().ball_radius, game.state().ball_in_hand, low, high))
+    return places;
+  for (int i = 0; i < PottingPlanner::kInHandGrid; ++i)
+    for (int j = 0; j < PottingPlanner::kInHandGrid; ++j)
+      places.push_back(low + Eigen::Vector2d((i + 0.5) / PottingPlanner::kInHandGrid * (high.x() - low.x()),
+                                             (j + 0.5) / PottingPlanner::kInHandGrid * (high.y() - low.y())));
+  return places;
+}
+
 Choice PottingPlanner::choose(const GamePlay& game) const
 {
-  if (game.state().break_shot)
+  if (game.state().break_shot && game.rules().breaksOpen())
     return breakChoice(game);
   const auto& table = game.engine().table();
   const double R = game.engine().params().ball_radius;
@@ -130,8 +145,16 @@ Choice PottingPlanner::choose(const GamePlay& game) const
       const Eigen::Vector2d to_pocket =
           (table.pockets()[static_cast<std::size_t>(pocket)].centre - object).normalized();
       const Eigen::Vector2d ghost = object - 2 * R * to_pocket;
-      for (const double back : {0.3, 0.15})
+      // In hand: behind the ghost on the line of the pot, else anywhere the rules allow.
+      std::vector<Eigen::Vector2d> places{ghost - 0.3 * to_pocket, ghost - 0.15 * to_pocket};
+      if (in_hand)
+        for (const Eigen::Vector2d& p : inHandPlaces(game))
+          places.push_back(p);
+      int tried = 0;
+      for (const Eigen::Vector2d& place : places)
       {
+        if (tried == (in_hand ? kInHandTrials : 1))
+          break;
         Choice c;
         if (calls)
         {
@@ -142,7 +165,7 @@ Choice PottingPlanner::choose(const GamePlay& game) const
         if (in_hand)
         {
           c.place_cue_ball = true;
-          c.cue_ball = ghost - back * to_pocket;
+          c.cue_ball = place;
           if (!trial.placeCueBall(c.cue_ball).empty())
             continue;
         }
@@ -152,6 +175,7 @@ Choice PottingPlanner::choose(const GamePlay& game) const
           continue;
         if (calls && !trial.call(c.ball, c.pocket).empty())
           continue;
+        ++tried;
         for (const double speed : {1.5, 3.0})
         {
           c.strike = aimedAt(cue, ghost, speed);
@@ -164,10 +188,47 @@ Choice PottingPlanner::choose(const GamePlay& game) const
             best = c;
           }
         }
-        if (!in_hand)
-          break;  // the placement distance matters only with the ball in hand
       }
     }
+  // Safeties: each ball that may be met first, full and half-ball either side, softly and firmly,
+  // from where the cue ball lies (or the first place in hand it may go): kept when no pot beats a
+  // shot without a foul that leaves the opponent fewer open shots.
+  if (!(best_score > 0) && !legal.empty())
+  {
+    GamePlay trial = game;
+    Choice c;
+    if (in_hand)
+      for (const Eigen::Vector2d& p : inHandPlaces(game))
+        if (trial.placeCueBall(p).empty())
+        {
+          c.place_cue_ball = true;
+          c.cue_ball = p;
+          break;
+        }
+    const Eigen::Vector2d cue = positionOf(trial, 0);
+    for (const int ball : legal)
+    {
+      const Eigen::Vector2d object = positionOf(trial, ball);
+      const Eigen::Vector2d across = Eigen::Vector2d(cue.y() - object.y(), object.x() - cue.x()).normalized();
+      for (const double offset : {0.0, -R, R})
+        for (const double speed : {1.0, 2.5})
+        {
+          c.strike = aimedAt(cue, object + offset * across, speed);
+          if (calls && !trial.call(ball, -1).empty())
+            continue;
+          c.ball = calls ? ball : -1;
+          c.pocket = -1;
+          GamePlay play = trial;
+          const Turn t = play.shoot(c.strike);
+          const double s = score(t.ruling, shooter, speed, openShots(play));
+          if (s > best_score)
+          {
+            best_score = s;
+            best = c;
+          }
+        }
+    }
+  }
   if (best_score > -std::numeric_limits<double>::infinity())
     return best;
   Choice fallback;
@@ -268,6 +329,7 @@ SelfPlaySummary selfPlay(const physics::Engine<double>& engine, const SelfPlayOp
     if (options.target > 0)
       if (const std::string why = game.setTarget(options.target); !why.empty())
         throw std::invalid_argument(why);
+    int visit = 0;  // the points of the shooter's visit so far: their break
     while (!game.state().over)
     {
       Choice choice = planner->choose(game);
@@ -280,6 +342,11 @@ SelfPlaySummary selfPlay(const physics::Engine<double>& engine, const SelfPlayOp
       const Turn turn = game.shoot(executed);
       summary.shots += 1;
       summary.fouls += turn.ruling.foul;
+      summary.penalty_points += turn.ruling.penalty;
+      visit += turn.ruling.points;
+      summary.highest_break = std::max(summary.highest_break, visit);
+      if (!turn.ruling.continues)
+        visit = 0;
       record.turns.push_back(turn);
     }
     record.end = game.state();

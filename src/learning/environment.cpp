@@ -124,7 +124,7 @@ Environment::Environment(std::shared_ptr<const physics::Engine<double>> engine, 
   spaces_.action = layout_->box();
   if (options_.observation != "pixels")
   {
-    addBallBlock(spaces_.state);
+    addBallBlock(spaces_.state, task_->ballSlots());
     task_->addFeatures(spaces_.state);
   }
   if (options_.observation != "state")
@@ -232,8 +232,8 @@ void Environment::observe(const ObservationBuffers& out) const
 {
   if (out.state && !spaces_.state.names.empty())
   {
-    writeBallBlock(engine_->table(), task_->table(), out.state);
-    task_->writeFeatures(out.state + 3 * kBallSlots);
+    writeBallBlock(engine_->table(), task_->table(), out.state, task_->ballSlots());
+    task_->writeFeatures(out.state + 3 * task_->ballSlots());
   }
   if (out.pixels && spaces_.pixel_width > 0)
   {

@@ -6,9 +6,9 @@ namespace cue_sim
 {
 namespace learning
 {
-void addBallBlock(BoxSpec& box)
+void addBallBlock(BoxSpec& box, int slots)
 {
-  for (int id = 0; id < kBallSlots; ++id)
+  for (int id = 0; id < slots; ++id)
   {
     const std::string ball = "ball" + std::to_string(id) + "_";
     for (const char* field : {"x", "y"})
@@ -23,14 +23,14 @@ void addBallBlock(BoxSpec& box)
   }
 }
 
-void writeBallBlock(const physics::TableModel& table, const physics::TableState<double>& state, float* out)
+void writeBallBlock(const physics::TableModel& table, const physics::TableState<double>& state, float* out, int slots)
 {
-  std::fill(out, out + 3 * kBallSlots, 0.0f);
+  std::fill(out, out + 3 * slots, 0.0f);
   const Eigen::Vector2d centre = table.clothCentre();
   const Eigen::Vector2d half(table.clothLength() / 2, table.clothWidth() / 2);
   for (const auto& ball : state.balls)
   {
-    if (ball.id < 0 || ball.id >= kBallSlots || !ball.inPlay())
+    if (ball.id < 0 || ball.id >= slots || !ball.inPlay())
       continue;
     const Eigen::Vector2d p = (ball.r.head<2>() - centre).cwiseQuotient(half);
     float* slot = out + 3 * ball.id;

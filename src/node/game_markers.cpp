@@ -41,6 +41,8 @@ std::string statusText(const GameState& s)
       text << " (ball " << rules->cueBall(static_cast<int>(i)) << "): " << s.score[i]
            << (s.score[i] == 1 ? " point, " : " points, ") << s.innings[i]
            << (s.innings[i] == 1 ? " inning" : " innings");
+    else if (rules->keepsScore())
+      text << ": " << s.score[i] << (s.score[i] == 1 ? " point" : " points");
     else
       text << ", fouls " << s.consecutive_fouls[i];
   }
@@ -51,7 +53,14 @@ std::string statusText(const GameState& s)
     else if (s.break_shot)
       text << "\nto break";
     if (!s.ball_in_hand.empty() && !s.shot_in_progress)
-      text << "\nball in hand " << (s.ball_in_hand == "anywhere" ? "anywhere" : "behind the head string");
+      text << "\nball in hand "
+           << (s.ball_in_hand == "anywhere" ? "anywhere"
+               : s.ball_in_hand == "in_d"   ? "in the D"
+                                            : "behind the head string");
+    if (s.free_ball && !s.shot_in_progress)
+      text << "\nfree ball";
+    else if (s.colour_next && !s.shot_in_progress)
+      text << "\non: a colour";
     if (s.called_ball >= 0)
       text << "\ncalled " << s.called_ball << (s.called_pocket.empty() ? "" : " in " + s.called_pocket);
     if (s.push_out_called)
@@ -59,10 +68,13 @@ std::string statusText(const GameState& s)
   }
   if (s.last_ruling.refereed)
     text << "\nlast: "
-         << (s.last_ruling.foul         ? "foul"
-             : s.last_ruling.points > 0 ? "point"
-             : s.target > 0             ? "no point"
-                                        : "legal")
+         << (s.last_ruling.foul
+                 ? "foul" + (s.last_ruling.penalty > 0 ? ", " + std::to_string(s.last_ruling.penalty) + " away"
+                                                       : std::string())
+             : s.target > 0 && s.last_ruling.points > 0 ? std::string("point")
+             : s.last_ruling.points > 0                 ? std::to_string(s.last_ruling.points) + " scored"
+             : s.target > 0                             ? std::string("no point")
+                                                        : std::string("legal"))
          << " (" << s.last_ruling.rule << ")";
   if (!s.before_shot.empty() && !s.shot_in_progress)
     text << "\nballs re-spotted before this shot";

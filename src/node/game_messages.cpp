@@ -34,6 +34,7 @@ Ruling toRulingMsg(const game::Ruling& ruling, bool refereed)
   msg.respot.assign(ruling.respot.begin(), ruling.respot.end());
   msg.rerack = ruling.rerack;
   msg.points = ruling.points;
+  msg.penalty = ruling.penalty;
   msg.game_over = ruling.game_over;
   msg.winner = ruling.winner;
   return msg;
@@ -83,6 +84,8 @@ GameState toGameStateMsg(const session::LiveTable& table, const ros::Time& stamp
     msg.place_max = pointAt(high);
   }
   msg.shots = state.shots;
+  msg.colour_next = state.colour_next;
+  msg.free_ball = state.free_ball;
   msg.shot_in_progress = table.game().pendingTurn().has_value();
   msg.over = state.over;
   msg.winner = state.winner;

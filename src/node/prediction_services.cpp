@@ -112,7 +112,7 @@ bool PredictionServices::onPredict(Predict::Request& request, Predict::Response&
   {
     const visualization_msgs::MarkerArray preview =
         previewMarkers(session::previewPaths(prediction, start.engine->params()), parameters_.table_frame,
-                       ballSetFor(!start.engine->table().pockets().empty()));
+                       ballSetFor(start.engine->table()));
     // Drawn only if the table has not moved on meanwhile (the publishing thread clears a preview
     // when it does, under the same lock).
     std::lock_guard<std::mutex> lock(shared_.mutex);

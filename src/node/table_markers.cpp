@@ -151,7 +151,7 @@ visualization_msgs::MarkerArray tableMarkers(const physics::TableModel& table, c
     if (!m.points.empty())
       array.markers.push_back(m);
   }
-  const BallSet set = ballSetFor(!table.pockets().empty());
+  const BallSet set = ballSetFor(table);
   for (const auto& b : state.balls)
   {
     const std::string frame = frames.ball_prefix + std::to_string(b.id);

@@ -229,12 +229,13 @@ enum InfoKey
   kOpponentReason,
   kOpenShots,
   kPoints,
+  kPenalty,
   kInfoKeys
 };
 constexpr std::array<const char*, kInfoKeys> kInfoKeyNames{
-    "shots",  "pocketed",       "scratch",         "first_contact", "foul",
-    "events", "shot_time",      "reason",          "player",        "next_player",
-    "winner", "opponent_shots", "opponent_reason", "open_shots",    "points"};
+    "shots",           "pocketed",   "scratch", "first_contact", "foul",   "events",
+    "shot_time",       "reason",     "player",  "next_player",   "winner", "opponent_shots",
+    "opponent_reason", "open_shots", "points",  "penalty"};
 
 /// The keys as Python strings, made once and kept for the module's life.
 const std::array<py::str, kInfoKeys>& infoKeys()
@@ -287,6 +288,7 @@ py::dict infoDict(const learning::StepInfo& info, bool game, bool position)
     putInfo(p, kOpponentShots, PyLong_FromLong(info.opponent_shots));
     putInfo(p, kOpponentReason, stringObject(info.opponent_reason));
     putInfo(p, kPoints, PyLong_FromLong(info.points));
+    putInfo(p, kPenalty, PyLong_FromLong(info.penalty));
   }
   if (position)
     putInfo(p, kOpenShots, PyLong_FromLong(info.open_shots));
@@ -547,7 +549,7 @@ struct PyVectorEnvironment
   {
     const auto n = static_cast<py::ssize_t>(infos.size());
     py::array_t<int> shots(n), pocketed(n), first_contact(n), events(n), player(n), next_player(n), winner(n),
-        opponent_shots(n), points(n);
+        opponent_shots(n), points(n), penalty(n);
     py::array_t<bool> scratch(n), foul(n);
     py::array_t<double> shot_time(n);
     py::list reason;
@@ -566,13 +568,15 @@ struct PyVectorEnvironment
       winner.mutable_at(i) = s.winner;
       opponent_shots.mutable_at(i) = s.opponent_shots;
       points.mutable_at(i) = s.points;
+      penalty.mutable_at(i) = s.penalty;
       reason.append(s.reason);
     }
     return py::dict(py::arg("shots") = shots, py::arg("pocketed") = pocketed, py::arg("scratch") = scratch,
                     py::arg("first_contact") = first_contact, py::arg("foul") = foul, py::arg("events") = events,
                     py::arg("shot_time") = shot_time, py::arg("reason") = reason, py::arg("player") = player,
                     py::arg("next_player") = next_player, py::arg("winner") = winner,
-                    py::arg("opponent_shots") = opponent_shots, py::arg("points") = points);
+                    py::arg("opponent_shots") = opponent_shots, py::arg("points") = points,
+                    py::arg("penalty") = penalty);
   }
 };
 }  // namespace
@@ -611,12 +615,12 @@ void bindLearning(py::module_& m)
           [](const PyEnvironment& e) {
             py::list turns;
             for (const learning::PlayedTurn& t : e.env.lastTurns())
-              turns.append(py::dict(py::arg("player") = t.player, py::arg("ball") = t.ball, py::arg("placed") = t.placed,
-                                    py::arg("x") = t.x,
-                                    py::arg("y") = t.y, py::arg("called_ball") = t.called_ball,
-                                    py::arg("called_pocket") = t.called_pocket, py::arg("push_out") = t.push_out,
-                                    py::arg("strike") = py::make_tuple(t.strike.speed, t.strike.phi, t.strike.theta,
-                                                                       t.strike.a, t.strike.b)));
+              turns.append(
+                  py::dict(py::arg("player") = t.player, py::arg("ball") = t.ball, py::arg("placed") = t.placed,
+                           py::arg("x") = t.x, py::arg("y") = t.y, py::arg("called_ball") = t.called_ball,
+                           py::arg("called_pocket") = t.called_pocket, py::arg("push_out") = t.push_out,
+                           py::arg("strike") =
+                               py::make_tuple(t.strike.speed, t.strike.phi, t.strike.theta, t.strike.a, t.strike.b)));
             return turns;
           })
       .def_property_readonly("last_strike",

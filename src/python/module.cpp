@@ -87,6 +87,15 @@ std::shared_ptr<const Engine<double>> makeEngine(const std::string& table, const
   return std::make_shared<const Engine<double>>(model, paramsFrom(params, physics::tableDefaults(*model)), models);
 }
 
+/// A ball set by name ("pool", "carom", "snooker"), else carom's or pool's by the flag.
+BallSet ballSetOf(bool carom, const std::string& name)
+{
+  BallSet set = carom ? BallSet::Carom : BallSet::Pool;
+  if (!name.empty() && !ballSetNamed(name, set))
+    throw std::invalid_argument("ball_set must be pool, carom or snooker; got '" + name + "'");
+  return set;
+}
+
 py::dict paramFields()
 {
   py::dict fields;
@@ -273,17 +282,17 @@ PYBIND11_MODULE(_core, m)
   m.def("rack_names", &physics::rackNames);
   m.def(
       "ball_colour",
-      [](int id, bool carom) {
-        const Rgb c = ballColour(id, carom ? BallSet::Carom : BallSet::Pool);
+      [](int id, bool carom, const std::string& set) {
+        const Rgb c = ballColour(id, ballSetOf(carom, set));
         return std::make_tuple(c.r, c.g, c.b);
       },
-      py::arg("id"), py::arg("carom") = false);
+      py::arg("id"), py::arg("carom") = false, py::arg("ball_set") = "");
   m.def(
-      "is_striped", [](int id, bool carom) { return isStriped(id, carom ? BallSet::Carom : BallSet::Pool); },
-      py::arg("id"), py::arg("carom") = false);
+      "is_striped", [](int id, bool carom, const std::string& set) { return isStriped(id, ballSetOf(carom, set)); },
+      py::arg("id"), py::arg("carom") = false, py::arg("ball_set") = "");
   m.def(
-      "is_numbered", [](int id, bool carom) { return isNumbered(id, carom ? BallSet::Carom : BallSet::Pool); },
-      py::arg("id"), py::arg("carom") = false);
+      "is_numbered", [](int id, bool carom, const std::string& set) { return isNumbered(id, ballSetOf(carom, set)); },
+      py::arg("id"), py::arg("carom") = false, py::arg("ball_set") = "");
   m.def("number_colour", [](int id) {
     const Rgb c = numberColour(id);
     return std::make_tuple(c.r, c.g, c.b);
@@ -306,6 +315,7 @@ PYBIND11_MODULE(_core, m)
            py::arg("table"), py::arg("params"), py::arg("ball_ball_model"), py::arg("cushion_model"),
            py::arg("ball_table_model") = "", py::arg("cue_model") = "")
       .def_property_readonly("table_name", [](const Engine<double>& e) { return e.table().name(); })
+      .def_property_readonly("ball_set", [](const Engine<double>& e) { return ballSetName(ballSetFor(e.table())); })
       .def_property_readonly("ball_ball_model", [](const Engine<double>& e) { return e.models().ball_ball; })
       .def_property_readonly("cushion_model", [](const Engine<double>& e) { return e.models().cushion; })
       .def_property_readonly("ball_table_model", [](const Engine<double>& e) { return e.models().ball_table; })

@@ -9,8 +9,56 @@ BallSet ballSetFor(bool table_has_pockets)
   return table_has_pockets ? BallSet::Pool : BallSet::Carom;
 }
 
+BallSet ballSetFor(const physics::TableModel& table)
+{
+  BallSet set;
+  if (table.balls() && ballSetNamed(table.balls()->set, set))
+    return set;
+  return ballSetFor(!table.pockets().empty());
+}
+
+const char* ballSetName(BallSet set)
+{
+  switch (set)
+  {
+    case BallSet::Carom:
+      return "carom";
+    case BallSet::Snooker:
+      return "snooker";
+    default:
+      return "pool";
+  }
+}
+
+bool ballSetNamed(const std::string& name, BallSet& set)
+{
+  for (const BallSet s : {BallSet::Pool, BallSet::Carom, BallSet::Snooker})
+    if (name == ballSetName(s))
+    {
+      set = s;
+      return true;
+    }
+  return false;
+}
+
 Rgb ballColour(int id, BallSet set)
 {
+  if (set == BallSet::Snooker)
+  {
+    // The cue ball, the reds (1-15), then the colours by value (16-21).
+    static const std::array<Rgb, 8> snooker = {{
+        {0.97f, 0.97f, 0.93f},  // cue ball
+        {0.8f, 0.04f, 0.04f},   // red
+        {1.0f, 0.85f, 0.05f},   // yellow
+        {0.0f, 0.3f, 0.12f},    // green: darker than the cloth
+        {0.42f, 0.22f, 0.08f},  // brown
+        {0.05f, 0.25f, 0.85f},  // blue
+        {1.0f, 0.5f, 0.65f},    // pink
+        {0.05f, 0.05f, 0.05f},  // black
+    }};
+    const int index = id >= 1 && id <= 15 ? 1 : id >= 16 && id <= 21 ? id - 14 : 0;
+    return snooker[static_cast<std::size_t>(index)];
+  }
   if (set == BallSet::Carom)
   {
     // The yellow and the red of a carom set, as pool's 1 and 3.

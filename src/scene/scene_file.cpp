@@ -243,7 +243,7 @@ int calledPocket(const YAML::Node& node, const physics::TableModel& table)
 }
 
 const std::vector<std::string> kGroupNames{"open", "solids", "stripes"};
-const std::vector<std::string> kBallInHandNames{"none", "anywhere", "behind_head_string"};
+const std::vector<std::string> kBallInHandNames{"none", "anywhere", "behind_head_string", "in_d"};
 
 /// A pair of counts of a game block, each in [0, high].
 std::array<int, 2> countsFrom(const YAML::Node& node, const std::string& field, int high)
@@ -265,7 +265,7 @@ game::GameState gameFrom(const YAML::Node& node)
 {
   onlyKeys(node, "game",
            {"rules", "players", "turn", "break", "groups", "called_ball", "called_pocket", "ball_in_hand", "fouls",
-            "push_out_allowed", "score", "target", "innings"});
+            "push_out_allowed", "score", "target", "innings", "colour_next", "free_ball"});
   game::GameState g;
   if (!node["rules"])
   {
@@ -299,6 +299,10 @@ game::GameState gameFrom(const YAML::Node& node)
                        : (g.break_shot ? rules->ballInHandOnBreak() : game::BallInHand::None);
   if (!rules->needsPockets() && g.ball_in_hand != game::BallInHand::None)
     throw SceneError("game.ball_in_hand: " + g.rules + " has no ball in hand; it must be none");
+  const bool in_d = rules->ballInHandOnBreak() == game::BallInHand::InD;  // snooker: the D or nowhere
+  if (g.ball_in_hand != game::BallInHand::None && (g.ball_in_hand == game::BallInHand::InD) != in_d)
+    throw SceneError("game.ball_in_hand: " + g.rules + " has the cue ball in hand " +
+                     (in_d ? "only in the D: in_d or none" : "anywhere or behind the head string, not in_d"));
   if (node["groups"])
   {
     for (std::size_t k = 0; k < 2; ++k)
@@ -316,9 +320,10 @@ game::GameState gameFrom(const YAML::Node& node)
     for (std::size_t k = 0; k < 2; ++k)
     {
       const int fouls = integer(pairOf(node["fouls"], "game.fouls")[k], "game.fouls[" + std::to_string(k) + "]");
-      if (fouls < 0 || fouls > 2)
-        throw SceneError("game.fouls[" + std::to_string(k) + "] must be 0, 1 or 2 (fouls in a row), got " +
-                         std::to_string(fouls));
+      const int most = rules->threeFoulsLose() ? 2 : 1000000;  // a third loses the game, where it does
+      if (fouls < 0 || fouls > most)
+        throw SceneError("game.fouls[" + std::to_string(k) + "] must be in [0, " + std::to_string(most) +
+                         "] (fouls in a row), got " + std::to_string(fouls));
       g.consecutive_fouls[k] = fouls;
     }
   g.push_out_allowed = node["push_out_allowed"] ? flag(node["push_out_allowed"], "game.push_out_allowed") : false;
@@ -335,12 +340,15 @@ game::GameState gameFrom(const YAML::Node& node)
   }
   if (node["score"])
   {
-    if (g.target == 0)
+    if (!rules->keepsScore())
       throw SceneError("game.score: " + g.rules + " keeps no score");
-    g.score = countsFrom(node["score"], "game.score", g.target - 1);
+    g.score = countsFrom(node["score"], "game.score", g.target > 0 ? g.target - 1 : 1000000);
   }
   if (node["innings"])
     g.innings = countsFrom(node["innings"], "game.innings", 1000000);
+  // Snooker's: a colour on after a red, and a free ball after a foul that snookers.
+  g.colour_next = node["colour_next"] ? flag(node["colour_next"], "game.colour_next") : false;
+  g.free_ball = node["free_ball"] ? flag(node["free_ball"], "game.free_ball") : false;
   return g;
 }
 }  // namespace
@@ -507,9 +515,13 @@ std::string sceneYaml(const Scene& scene, const std::string& comment)
         << "\n  ball_in_hand: " << kBallInHandNames[static_cast<std::size_t>(g.ball_in_hand)] << "\n  fouls: ["
         << g.consecutive_fouls[0] << ", " << g.consecutive_fouls[1]
         << "]\n  push_out_allowed: " << (g.push_out_allowed ? "true" : "false") << "\n";
-    if (g.target > 0)
+    if (game::makeRules(g.rules)->keepsScore())
       out << "  target: " << g.target << "\n  score: [" << g.score[0] << ", " << g.score[1] << "]\n  innings: ["
           << g.innings[0] << ", " << g.innings[1] << "]\n";
+    if (g.colour_next)
+      out << "  colour_next: true\n";
+    if (g.free_ball)
+      out << "  free_ball: true\n";
   }
   return out.str();
 }

@@ -66,6 +66,8 @@ json rulingJson(const game::Ruling& r)
           {"game_over", r.game_over},
           {"winner", r.winner},
           {"points", r.points},
+          {"penalty", r.penalty},
+          {"colour_next", r.colour_next},
           {"groups", {game::groupName(r.groups[0]), game::groupName(r.groups[1])}}};
 }
 
@@ -89,6 +91,8 @@ json gameStateJson(const game::GameState& g, const physics::TableModel& table)
           {"target", g.target},
           {"innings", g.innings},
           {"before_shot", g.before_shot},
+          {"colour_next", g.colour_next},
+          {"free_ball", g.free_ball},
           {"over", g.over},
           {"winner", g.winner}};
 }

@@ -63,9 +63,17 @@ int main(int argc, char** argv)
           "%.1f shots and %.1f fouls per game\n",
           ruleset.c_str(), summary.games, summary.finished, summary.capped, max_shots, summary.wins[0], summary.wins[1],
           static_cast<double>(summary.shots) / summary.games, static_cast<double>(summary.fouls) / summary.games);
-      if (summary.innings > 0 && cue_sim::game::makeRules(ruleset)->defaultTarget() > 0)
+      const auto rules = cue_sim::game::makeRules(ruleset);
+      if (summary.innings > 0 && rules->defaultTarget() > 0)
         std::printf("%s: %.3f points per inning (%d points in %d innings)\n", ruleset.c_str(),
                     static_cast<double>(summary.points) / summary.innings, summary.points, summary.innings);
+      else if (rules->keepsScore())
+        std::printf("%s: %.1f points per frame, %.1f of them from fouls; %.2f points per visit to the table; "
+                    "highest break %d\n",
+                    ruleset.c_str(), static_cast<double>(summary.points) / summary.games,
+                    static_cast<double>(summary.penalty_points) / summary.games,
+                    static_cast<double>(summary.points - summary.penalty_points) / summary.innings,
+                    summary.highest_break);
     }
     return 0;
   }

@@ -220,7 +220,8 @@ TEST(ThreeCushion, ACueBallFrozenToABallIsRespottedBeforeTheShot)
   const Eigen::Vector2d red(0.4, -0.1);
   TableState<double> s =
       balls({ball(kWhite, red.x() - 2 * R(), red.y()), ball(kYellow, -0.5, 0.3), ball(kRed, red.x(), red.y())});
-  const std::string why = rules->beforeShot(t, R(), threeCushion(0), s);
+  GameState state = threeCushion(0);
+  const std::string why = rules->beforeShot(t, R(), state, s);
   EXPECT_NE(why.find("UMB Art. 27"), std::string::npos) << why;
   EXPECT_EQ((at(s, kRed) - t.footSpot()).norm(), 0.0);
   EXPECT_EQ((at(s, kWhite) - t.headSpot()).norm(), 0.0);
@@ -229,7 +230,7 @@ TEST(ThreeCushion, ACueBallFrozenToABallIsRespottedBeforeTheShot)
   s = balls({ball(kWhite, red.x() - 2 * R() - 1e-3, red.y()), ball(kYellow, red.x(), red.y() + 2 * R()),
              ball(kRed, red.x(), red.y())});
   const TableState<double> before = s;
-  EXPECT_EQ(rules->beforeShot(t, R(), threeCushion(0), s), "");
+  EXPECT_EQ(rules->beforeShot(t, R(), state, s), "");
   for (std::size_t k = 0; k < s.balls.size(); ++k)
     EXPECT_EQ(s.balls[k].r, before.balls[k].r);
 }

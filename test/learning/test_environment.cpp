@@ -25,9 +25,8 @@ namespace
 {
 std::shared_ptr<const physics::Engine<double>> engineOf(const std::string& table)
 {
-  return std::make_shared<const physics::Engine<double>>(
-      std::make_shared<const physics::TableModel>(tableFromUrdfFile(tableUrdfPath(table))),
-      physics::PhysicsParams<double>());
+  const auto model = std::make_shared<const physics::TableModel>(tableFromUrdfFile(tableUrdfPath(table)));
+  return std::make_shared<const physics::Engine<double>>(model, physics::tableDefaults(*model));
 }
 
 std::vector<float> stateOf(const Environment& env)
@@ -144,7 +143,7 @@ TEST(LearningOptions, WrongOptionsNameTheField)
     }
   };
   EnvOptions o;
-  o.task = "snooker";
+  o.task = "bagatelle";
   refused(o, "task");
   o = {};
   o.balls = 16;
@@ -539,6 +538,15 @@ TEST(LearningPosition, APotScoresOneAndLeavingShotsUpToOneMore)
   EXPECT_GT(partial, 50);
 }
 
+/// Where the feature of that name is in the state observation.
+std::size_t featureIndex(const Environment& env, const std::string& name)
+{
+  const auto& names = env.spaces().state.names;
+  const auto at = std::find(names.begin(), names.end(), name);
+  EXPECT_NE(at, names.end()) << name;
+  return static_cast<std::size_t>(at - names.begin());
+}
+
 /// A game's episode to its end with random actions: the rewards, rulings and features agree
 /// with the game's own state at every step.
 void checkGame(const std::string& rules, const std::string& opponent, std::uint64_t seed)
@@ -552,16 +560,17 @@ void checkGame(const std::string& rules, const std::string& opponent, std::uint6
   std::vector<float> state = stateOf(env);
   Random random(seed);
   env.reset(seed, {state.data(), nullptr});
-  const std::size_t features = 3 * kBallSlots;
+  const std::size_t features = featureIndex(env, "group_open"), in_hand = featureIndex(env, "in_hand_none");
+  const std::size_t legal = featureIndex(env, "legal_first1");
   for (int step = 0; step < 400 && !env.done(); ++step)
   {
     for (std::size_t i = 0; i < state.size(); ++i)
       ASSERT_TRUE(state[i] >= env.spaces().state.low[i] && state[i] <= env.spaces().state.high[i]) << i;
     // Exactly one group and one ball-in-hand flag; the legal balls are on the table.
     EXPECT_EQ(state[features] + state[features + 1] + state[features + 2], 1.0f);
-    EXPECT_EQ(state[features + 3] + state[features + 4] + state[features + 5], 1.0f);
+    EXPECT_EQ(state[in_hand] + state[in_hand + 1] + state[in_hand + 2] + state[in_hand + 3], 1.0f);
     for (int id = 1; id < 16; ++id)
-      if (state[features + 9 + id] > 0)
+      if (state[legal - 1 + id] > 0)
       {
         EXPECT_EQ(state[3 * id + 2], 1.0f) << "ball " << id << " is legal but not on the table";
       }
@@ -665,7 +674,6 @@ TEST(LearningGames, ThreeCushionSeesItsOwnCueBallAndScoreAndEndsOnTheRace)
   // Self-play with random strikes: before each step the features say which cue ball the shooter
   // strikes and both scores (as shares of the race), as the points each step reports add up;
   // the episode ends when a player reaches the race, which is that player's +1.
-  const std::size_t f = 3 * kBallSlots;
   for (std::uint64_t seed = 0; seed < 3; ++seed)
   {
     EnvOptions o;
@@ -681,7 +689,8 @@ TEST(LearningGames, ThreeCushionSeesItsOwnCueBallAndScoreAndEndsOnTheRace)
     int steps = 0, points = 0;
     while (!env.done() && steps < 1000)
     {
-      const float yellow = state[f + 26], own = state[f + 27], other = state[f + 28];
+      const float yellow = state[featureIndex(env, "cue_ball_1")], own = state[featureIndex(env, "own_score")],
+                  other = state[featureIndex(env, "opponent_score")];
       const std::vector<double> a = actionAt(env.spaces().action, random);
       const StepResult r = env.step(a.data(), a.size(), {state.data(), nullptr});
       ++steps;
@@ -745,5 +754,50 @@ TEST(LearningGames, ThreeCushionAgainstThePlannerIsARaceTheCaromPlannerPlays)
 }
 
 }  // namespace
+
+TEST(LearningGames, SnookerSeesEachOfItsBallsTheDAndBothScores)
+{
+  // A frame in self-play with random strikes on the snooker table: a slot for each of the 22
+  // balls, the cue ball in hand in the D at the break, the balls that may be met first on the
+  // table, a colour on after a red, and both scores as shares of 147 as the points and penalties
+  // each step reports add up.
+  EnvOptions o;
+  o.task = "snooker";
+  o.opponent = "self";
+  o.max_shots = 300;
+  Environment env(engineOf("snooker"), o);
+  const auto& names = env.spaces().state.names;
+  ASSERT_NE(std::find(names.begin(), names.end(), "ball21_on_table"), names.end());
+  ASSERT_NE(std::find(names.begin(), names.end(), "legal_first21"), names.end());
+  std::vector<float> state = stateOf(env);
+  Random random(7);
+  env.reset(7, {state.data(), nullptr});
+  EXPECT_EQ(state[featureIndex(env, "in_hand_d")], 1.0f);
+  EXPECT_EQ(state[featureIndex(env, "ball21_on_table")], 1.0f) << "the black on its spot";
+  const std::size_t legal = featureIndex(env, "legal_first1");
+  std::array<int, 2> score{0, 0};
+  int colours_on = 0;
+  while (!env.done())
+  {
+    for (int id = 1; id <= 21; ++id)
+      if (state[legal - 1 + static_cast<std::size_t>(id)] > 0)
+      {
+        EXPECT_EQ(state[3 * static_cast<std::size_t>(id) + 2], 1.0f) << "ball " << id;
+      }
+    colours_on += state[featureIndex(env, "colour_next")] > 0;
+    const float own = state[featureIndex(env, "own_score")], other = state[featureIndex(env, "opponent_score")];
+    const std::vector<double> a = actionAt(env.spaces().action, random);
+    const StepResult r = env.step(a.data(), a.size(), {state.data(), nullptr});
+    const std::size_t me = static_cast<std::size_t>(r.info.player);
+    EXPECT_FLOAT_EQ(own, std::min(1.0f, score[me] / 147.0f));
+    EXPECT_FLOAT_EQ(other, std::min(1.0f, score[1 - me] / 147.0f));
+    score[me] += r.info.points;
+    score[1 - me] += r.info.penalty;
+    EXPECT_EQ(r.info.foul, r.info.penalty >= 4) << r.info.reason;
+  }
+  EXPECT_GT(score[0] + score[1], 0);
+  EXPECT_GT(colours_on, 0) << "a red went down and a colour was on";
+}
+
 }  // namespace learning
 }  // namespace cue_sim

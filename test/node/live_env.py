@@ -113,7 +113,7 @@ class LiveEpisodes(unittest.TestCase):
 
     def test_unknown_tasks_are_refused_with_a_reason(self):
         with self.assertRaisesRegex(ValueError, "live table plays"):
-            LiveTableEnv("snooker")
+            LiveTableEnv("bagatelle")
 
 
 if __name__ == "__main__":

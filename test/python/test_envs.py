@@ -103,7 +103,7 @@ def test_bad_actions_are_refused_and_change_nothing(action, field):
 
 
 def test_bad_options_name_the_option():
-    for options, field in [(dict(task="snooker"), "task"), (dict(balls=0), "balls"), (dict(colour=1), "colour"),
+    for options, field in [(dict(task="bagatelle"), "task"), (dict(balls=0), "balls"), (dict(colour=1), "colour"),
                            (dict(observation="rgb"), "observation"), (dict(balls="two"), "balls"),
                            (dict(render_mode="human"), "render_mode")]:
         with pytest.raises(ValueError, match=field):
@@ -286,6 +286,14 @@ def test_every_task_has_an_id_and_the_games_come_from_the_rulesets():
     assert info["points"] in (0, 1)
     with pytest.raises(ValueError, match="table without pockets"):
         TableEnv("three_cushion", table="7ft")
+    # Snooker on the snooker table: a slot for each of its 22 balls, the D, and the penalty a foul gives.
+    assert TASK_IDS["cue_sim/Snooker-v0"] == "snooker"
+    snooker = TableEnv("snooker", opponent="self")
+    assert "ball21_on_table" in snooker.observation_names and "in_hand_d" in snooker.observation_names
+    obs, _ = snooker.reset(seed=1)
+    assert obs[snooker.observation_names.index("in_hand_d")] == 1.0
+    _, _, _, _, info = snooker.step(snooker.action_space.sample())
+    assert info["foul"] == (info["penalty"] >= 4)
     # The push-out is in the action of the games whose rules have one.
     assert TableEnv("ten_ball", action="relative").action_names[-1] == "push_out"
     assert "push_out" not in TableEnv("eight_ball", action="relative").action_names

@@ -160,3 +160,44 @@ def test_a_three_cushion_race_is_played_with_each_players_own_ball():
         assert list(game.state["score"]) == scores
         assert len(events) > 0
     assert game.state["over"] and max(scores) == 2 and game.state["winner"] == scores.index(2)
+
+
+def test_a_snooker_frame_keeps_score_with_penalties_and_plays_from_the_d():
+    """Snooker from Python on the snooker table: the rack of 22 balls in their colours, the cue
+    ball in hand in the D, the reds on first; a foul gives the opponent at least 4; the scores
+    are the points and penalties ruled; and a frame played by a simple potter ends."""
+    snooker = cue_sim.Engine("snooker")
+    assert snooker.ball_set == "snooker" and snooker.params["ball_radius"] == 0.02625
+    assert cue_sim.ball_colour(7, ball_set="snooker") == cue_sim.ball_colour(1, ball_set="snooker")  # the reds
+    assert not cue_sim.is_numbered(21, ball_set="snooker")
+    game = cue_sim.Game(snooker, "snooker", seed=3)
+    assert sorted(int(i) for i in game.table.ids) == list(range(22))
+    assert game.state["ball_in_hand"] == "in_d" and game.legal_first == list(range(1, 16))
+    with pytest.raises(ValueError, match="in the D"):
+        game.copy().place_cue_ball(0.0, 0.0)
+    missed, _ = game.copy().shoot(1.0, math.pi)  # away from every ball: a foul of 4
+    assert missed.foul and missed.penalty == 4 and missed.points == 0 and "no miss is called" in missed.reason
+    scores = [0, 0]
+    positions = {int(i): tuple(p[:2]) for i, p in zip(game.table.ids, game.table.positions)}
+    while not game.state["over"] and game.state["shots"] < 400:
+        shooter = game.state["turn"]
+        table = game.table
+        cue = [p for i, p in zip(table.ids, table.positions) if i == 0][0]
+        best, choice = -1e9, None
+        for ball in game.legal_first:
+            target = [p for i, p in zip(table.ids, table.positions) if i == ball][0]
+            for offset in (-0.6, -0.3, 0.0, 0.3, 0.6):
+                phi = math.atan2(target[1] - cue[1], target[0] - cue[0]) + offset * 0.05
+                for speed in (1.5, 3.0):
+                    ruling, _ = game.copy().shoot(speed, phi)
+                    score = ruling.points * 10 - ruling.penalty * 10 - speed
+                    if score > best:
+                        best, choice = score, (speed, phi)
+        ruling, _ = game.shoot(*choice)
+        scores[shooter] += ruling.points
+        scores[1 - shooter] += ruling.penalty
+        assert list(game.state["score"]) == scores
+        assert ruling.foul == (ruling.penalty >= 4)
+    assert game.state["over"], game.state
+    assert game.state["winner"] == scores.index(max(scores)) and scores[0] != scores[1]
+    assert positions[21] != ()  # the black was racked

@@ -53,9 +53,13 @@ TEST(SceneFile, ConfigPhysicsYamlHoldsTheBuiltInDefaults)
   models.ball_ball = models.cushion = "";
   applyPhysicsYaml(readConfig(), from_yaml, models);
   for (const auto& field : physics::physicsParamFields())
+  {
     if (!isBall(field))
+    {
       EXPECT_NEAR(from_yaml.*field.member, defaults.*field.member, 1e-9 * std::abs(defaults.*field.member))
           << field.name;
+    }
+  }
   EXPECT_EQ(from_yaml.ball_radius, 0.0262);
   EXPECT_EQ(from_yaml.ball_mass, 0.15);
   EXPECT_EQ(models.ball_ball, physics::ModelChoice().ball_ball);
@@ -210,12 +214,28 @@ TEST(SceneFile, ACalledPocketIsNamedByItsLinkOrItsIndexInLinkNameOrder)
 TEST(SceneFile, BadGameBlocksNameTheKey)
 {
   EXPECT_NE(errorOf("game: {turn: 0}\n").find("game needs 'rules'"), std::string::npos);
-  EXPECT_NE(errorOf("game: {rules: snooker}\n").find("unknown rules 'snooker'"), std::string::npos);
+  EXPECT_NE(errorOf("game: {rules: bagatelle}\n").find("unknown rules 'bagatelle'"), std::string::npos);
   EXPECT_NE(errorOf("game: {rules: eight_ball, turn: 2}\n").find("game.turn must be 0 or 1"), std::string::npos);
   EXPECT_NE(errorOf("game: {rules: eight_ball, groups: [solids, open]}\n").find("game.groups"), std::string::npos);
-  EXPECT_NE(errorOf("game: {rules: eight_ball, fouls: [3, 0]}\n").find("game.fouls[0] must be 0, 1 or 2"),
+  EXPECT_NE(errorOf("game: {rules: eight_ball, fouls: [3, 0]}\n").find("game.fouls[0] must be in [0, 2]"),
             std::string::npos);
   EXPECT_NE(errorOf("game: {rules: eight_ball, called_pocket: 6}\n").find("game.called_pocket"), std::string::npos);
+  // Snooker: the cue ball in hand only in the D, fouls in a row without end, a frame's score with
+  // no target; and pool without the D.
+  EXPECT_NE(errorOf("table: snooker\ngame: {rules: snooker, ball_in_hand: anywhere}\n").find("only in the D"),
+            std::string::npos);
+  EXPECT_NE(errorOf("game: {rules: nine_ball, ball_in_hand: in_d}\n").find("not in_d"), std::string::npos);
+  const auto frame = cue_sim::loadScene(
+      "table: snooker\nrack: snooker\ngame: {rules: snooker, break: false, ball_in_hand: none, fouls: [5, 0], "
+      "score: [40, 72], colour_next: true}\n");
+  EXPECT_EQ(frame.game->consecutive_fouls[0], 5);
+  EXPECT_EQ(frame.game->score[1], 72);
+  EXPECT_TRUE(frame.game->colour_next);
+  EXPECT_FALSE(frame.game->free_ball);
+  const auto again = cue_sim::loadScene(cue_sim::sceneYaml(frame));  // written back as read
+  EXPECT_EQ(again.game->score, frame.game->score);
+  EXPECT_TRUE(again.game->colour_next);
+  EXPECT_NE(errorOf("game: {rules: nine_ball, score: [1, 0]}\n").find("keeps no score"), std::string::npos);
   EXPECT_NE(errorOf("game: {rules: eight_ball, called_pocket: pocket_nowhere}\n")
                 .find("game.called_pocket must be a pocket of table 'cue_sim_table_7ft' by name (pocket_foot_yneg, "
                       "pocket_foot_ypos, pocket_head_yneg, pocket_head_ypos, pocket_side_yneg, pocket_side_ypos) or "

@@ -185,8 +185,9 @@ TEST(SimulateProgram, AThreeCushionSceneCountsItsCushionsAndKeepsTheScore)
 TEST(SimulateProgram, ASelfPlayRecordReplaysShotByShot)
 {
   // Each shot of a recorded game, written as a scene, gives the same ruling through `simulate`:
-  // a 9-ball game, and a three-cushion race to 3.
-  for (const std::string rules : {"nine_ball", "three_cushion"})
+  // a 9-ball game, a three-cushion race to 3, and a frame of snooker (whose scenes carry the
+  // colour on and the free ball, its scores are the points and penalties ruled, and it ends).
+  for (const std::string rules : {"nine_ball", "three_cushion", "snooker"})
   {
     const std::string dir = ::testing::TempDir() + "/self_play_record";
     const std::string command = std::string(CUE_SIM_SELF_PLAY) + " --rules " + rules +
@@ -197,6 +198,8 @@ TEST(SimulateProgram, ASelfPlayRecordReplaysShotByShot)
     const auto summary = nlohmann::json::parse(summary_file);
     ASSERT_GT(summary["shots"].size(), 1u);
     int points = 0;
+    std::array<int, 2> scores{0, 0};
+    bool over = false;
     for (const auto& shot : summary["shots"])
     {
       std::ifstream scene(dir + "/" + rules + "_0/" + shot["file"].get<std::string>());
@@ -205,6 +208,16 @@ TEST(SimulateProgram, ASelfPlayRecordReplaysShotByShot)
       ASSERT_EQ(run.status, 0) << run.out;
       EXPECT_EQ(nlohmann::json::parse(run.out)["ruling"], shot["ruling"]) << shot["file"];
       points += shot["ruling"]["points"].get<int>();
+      const int player = shot["player"].get<int>();
+      scores[static_cast<std::size_t>(player)] += shot["ruling"]["points"].get<int>();
+      scores[static_cast<std::size_t>(1 - player)] += shot["ruling"]["penalty"].get<int>();
+      over = shot["ruling"]["game_over"].get<bool>();
+    }
+    EXPECT_TRUE(over) << rules;
+    if (rules == "snooker")
+    {
+      EXPECT_NE(scores[0], scores[1]) << "a frame is not drawn";
+      EXPECT_GE(scores[0] + scores[1], 15 + 27) << "every red and every colour went down once at least";
     }
     if (rules == "three_cushion")
     {

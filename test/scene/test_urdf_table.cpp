@@ -10,6 +10,7 @@
 #include <tuple>
 
 #include "cue_sim/physics/physics_params.hpp"
+#include "cue_sim/scene/ball_colours.hpp"
 #include "cue_sim/table_description/table_catalog.hpp"
 #include "cue_sim/table_description/urdf_table_loader.hpp"
 
@@ -243,6 +244,8 @@ TEST(UrdfTable, EachBundledTableNamesItsBalls)
     EXPECT_EQ(p.mu_slide, pool.mu_slide);  // nothing else comes from the table
     EXPECT_EQ(p.cushion_height, pool.cushion_height);
     EXPECT_EQ(p.validate(), "");
+    EXPECT_EQ(table.balls()->set, name == "carom" || name == "snooker" ? name : "pool");
+    EXPECT_EQ(cue_sim::ballSetName(cue_sim::ballSetFor(table)), table.balls()->set);
   }
   EXPECT_EQ(pool.ball_radius, 0.028575);  // the pool ball, for a table that names none
   EXPECT_FALSE(TableModel::carom("carom", 2.84, 1.42).balls().has_value());
@@ -266,6 +269,15 @@ TEST(UrdfTable, ABallsLinkIsCheckedAndSaysWhatIsWrong)
       std::string::npos);
   EXPECT_NE(errorOf(closedTable("", balls(R"(<sphere radius="0.03"/>)", ""))).find("'balls' needs an <inertial>"),
             std::string::npos);
+  // The collision's name is the set of balls, for pictures.
+  const std::string named = balls(R"(<sphere radius="0.03"/>)", mass);
+  const auto withSet = [&](const std::string& set) {
+    std::string link = named;
+    link.replace(link.find("<collision>"), 11, "<collision name=\"" + set + "\">");
+    return closedTable("", link);
+  };
+  EXPECT_EQ(tableFromUrdf(withSet("snooker")).balls()->set, "snooker");
+  EXPECT_NE(errorOf(withSet("bagatelle")).find("pool, carom or snooker; got 'bagatelle'"), std::string::npos);
   // A ball too small for the engine's cushion nose (h must lie between R and 2R).
   const std::string why = errorOf(closedTable("", balls(R"(<sphere radius="0.01"/>)", mass)));
   EXPECT_NE(why.find("link 'balls'"), std::string::npos) << why;

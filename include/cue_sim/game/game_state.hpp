@@ -26,6 +26,7 @@ enum class BallInHand
   None,              ///< play it where it lies
   Anywhere,          ///< anywhere on the cloth (WPA 1.5), after a standard foul
   BehindHeadString,  ///< its centre behind the head string (WPA Definitions), on a break
+  InD,               ///< its centre in the D (snooker: WPBSA Section 3, Play from in-hand)
 };
 
 const char* groupName(Group group);
@@ -52,6 +53,13 @@ struct GameState
   /// What the rules did to the balls at rest before the next shot, and why (three-cushion
   /// re-spots a cue ball frozen to an object ball); empty for nothing.
   std::string before_shot;
+  /// Snooker: a red has just been potted, so the ball on is a colour, the one the cue ball meets
+  /// first (the simulator's nomination).
+  bool colour_next = false;
+  /// Snooker: a free ball (WPBSA Section 3, Free Ball): the last shot was a foul that left the
+  /// incoming player snookered on every ball on, so any ball may be nominated as one.
+  bool free_ball = false;
+  bool last_shot_foul = false;  ///< the last shot's ruling was a foul
   bool over = false;
   int winner = -1;  ///< 0 or 1 once over; -1 for none (a game stopped by the shot cap)
 };
@@ -72,6 +80,8 @@ struct Ruling
   std::array<Group, 2> groups{Group::Open, Group::Open};  ///< each player's group after the shot (8-ball)
   bool push_out_next = false;  ///< the next shot may be a push-out (9- and 10-ball, after a legal break)
   int points = 0;              ///< scored by the shooter (three-cushion: 1 for a carom)
+  int penalty = 0;             ///< scored by the shooter's opponent for a foul (snooker)
+  bool colour_next = false;    ///< snooker: the next ball on is a colour (a red was just potted)
 };
 
 }  // namespace game

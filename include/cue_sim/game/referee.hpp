@@ -71,6 +71,9 @@ public:
   virtual bool pushOutAfterBreak() const { return false; }
   /// Whether the players are given groups of balls (8-ball's solids and stripes).
   virtual bool playsGroups() const { return false; }
+  /// Whether the break must open the rack (pool: driven hard into it); snooker's break-off is a
+  /// shot like any other.
+  virtual bool breaksOpen() const { return true; }
   /// Whether a third foul in a row loses the game (WPA 6.14).
   virtual bool threeFoulsLose() const { return true; }
 
@@ -86,8 +89,10 @@ public:
   /// Where the breaker may place the cue ball: behind the head string in pool; carom's starting
   /// position has no ball in hand.
   virtual BallInHand ballInHandOnBreak() const { return BallInHand::BehindHeadString; }
-  /// The points that win, where the game keeps a score; 0 for none.
+  /// The points that win, where the game is a race to them; 0 for none.
   virtual int defaultTarget() const { return 0; }
+  /// Whether the game keeps a score: a race's (three-cushion), or a frame's (snooker, no target).
+  virtual bool keepsScore() const { return defaultTarget() > 0; }
   /// Whether a shot scores by caroms (the cue ball meeting both object balls), which planners
   /// then search for, rather than by pots.
   virtual bool scoresCaroms() const { return false; }
@@ -99,10 +104,11 @@ public:
   /// the long string by default (WPA 1.4, spotBalls()).
   virtual void respot(const physics::TableModel& table, double ball_radius, const std::vector<int>& ids,
                       const GameState& state, physics::TableState<double>& balls) const;
-  /// What the rules do with the balls at rest before `state`'s next shot (three-cushion re-spots a
-  /// cue ball frozen to an object ball); empty if nothing, otherwise what was done and why.
-  virtual std::string beforeShot(const physics::TableModel& /*table*/, double /*ball_radius*/,
-                                 const GameState& /*state*/, physics::TableState<double>& /*balls*/) const
+  /// What the rules do before `state`'s next shot, with the balls at rest (three-cushion re-spots
+  /// a cue ball frozen to an object ball; snooker calls a free ball into `state`); empty if
+  /// nothing, otherwise what was done and why.
+  virtual std::string beforeShot(const physics::TableModel& /*table*/, double /*ball_radius*/, GameState& /*state*/,
+                                 physics::TableState<double>& /*balls*/) const
   {
     return "";
   }
@@ -140,14 +146,15 @@ void spotBalls(const physics::TableModel& table, double ball_radius, const std::
                physics::TableState<double>& state);
 
 /// The rectangle the cue ball's centre may be placed in with `place` in hand: the cloth kept R
-/// from its edges, up to the head string for BehindHeadString; false (and nothing set) for None.
+/// from its edges, up to the head string for BehindHeadString, around the D for InD; false (and
+/// nothing set) for None.
 /// Within it whyNotInHand still keeps the cue ball off the pockets' mouths and other balls.
 bool inHandRegion(const physics::TableModel& table, double ball_radius, BallInHand place, Eigen::Vector2d& low,
                   Eigen::Vector2d& high);
 
 /// Empty if the cue ball may be placed with its centre at p: on the cloth clear of the cushions,
 /// pockets and every other ball, and behind the head string if `place` says so; otherwise why
-/// not.
+/// not. InD asks for the D of the table's snooker markings (physics/snooker_markings.hpp).
 std::string whyNotInHand(const physics::TableModel& table, double ball_radius, const physics::TableState<double>& state,
                          const Eigen::Vector2d& p, BallInHand place);
 

@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cue_sim/game/game_play.hpp"
@@ -60,6 +61,8 @@ public:
   static constexpr double kBreakSpeed = 8.0;                            ///< [m/s]
   static constexpr double kPositionWeight = 5;                          ///< per open shot, against 100 for a pot
   static constexpr int kOpenShotsCounted = 10;                          ///< more open shots than this add nothing
+  static constexpr int kInHandGrid = 4;    ///< places in hand tried per pot, on a grid over the region
+  static constexpr int kInHandTrials = 2;  ///< places in hand played per pot, the first that stand
 };
 
 /// Searches cue-ball paths that make a point. Every candidate (kDirections headings round the
@@ -108,6 +111,8 @@ struct SelfPlaySummary
   std::array<int, 2> wins{0, 0};
   int shots = 0, fouls = 0;
   int points = 0, innings = 0;  ///< where the game keeps a score: points scored, innings played
+  int penalty_points = 0;       ///< of those, given for fouls (snooker)
+  int highest_break = 0;        ///< the most points one visit to the table scored
   std::vector<GameRecord> records;
 };
 

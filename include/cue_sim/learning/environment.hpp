@@ -125,6 +125,7 @@ struct StepInfo
   int next_player = 0;          ///< games: who is to play next
   int winner = -1;              ///< games: 0 or 1 once won, else -1
   int points = 0;               ///< games that keep a score (three-cushion): the shooter's points for the shot
+  int penalty = 0;              ///< snooker: the points a foul on the shot gave the shooter's opponent
   int opponent_shots = 0;       ///< games against the planner: its turns within this step
   std::string opponent_reason;  ///< ... and the ruling on its last
   int open_shots = -1;          ///< position: open shots on the next ball after a pot (-1: not asked)

@@ -25,7 +25,7 @@ struct RackOptions
 
 /// The names rackLayout() accepts.
 std::vector<std::string> rackNames();
-/// rackNames() for a message: "eight, nine, ten, carom, empty".
+/// rackNames() for a message: "eight, nine, ten, carom, snooker, empty".
 std::string rackNamesText();
 
 /// "eight": cue ball on the head string, balls 1-15 in a triangle with the apex on the foot
@@ -33,8 +33,11 @@ std::string rackNamesText();
 /// diamond, 1 at the apex, 9 in the centre. "ten": balls 1-10 in a triangle, 10 in the centre.
 /// "carom": three-cushion's starting position, the red (2) on the foot spot, the yellow (1) on
 /// the head spot and the white (0) on the head string 18.2 cm to its left (UMB Art. 13, 23).
-/// "empty": the cue ball alone on the head string.
-/// The cue ball stands on TableModel::headSpot(), the apex on footSpot(). Throws
+/// "snooker": the reds (1-15) in a triangle whose apex is as near the pink spot as the gap allows,
+/// the colours (16 yellow, 17 green, 18 brown, 19 blue, 20 pink, 21 black) on their spots and the
+/// cue ball in the D midway between the yellow and brown spots (snooker_markings.hpp; WPBSA
+/// Section 3, 2). "empty": the cue ball alone on the head string.
+/// Otherwise the cue ball stands on TableModel::headSpot(), the apex on footSpot(). Throws
 /// std::invalid_argument for another name.
 template <typename S>
 TableState<S> rackLayout(const std::string& name, const TableModel& table, S ball_radius,

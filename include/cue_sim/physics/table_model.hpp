@@ -59,6 +59,9 @@ struct TableBalls
 {
   double radius = 0;  ///< [m]
   double mass = 0;    ///< [kg]
+  /// The set they are, for pictures (scene/ball_colours.hpp): "pool", "carom" or "snooker";
+  /// empty: told by the table's pockets.
+  std::string set;
 };
 
 /// How far the table reaches beyond the cloth when its description does not say: a 5 cm

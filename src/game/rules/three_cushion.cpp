@@ -119,7 +119,7 @@ public:
     spotOnCaromSpots(table, ball_radius, ids, state.turn, balls);
   }
 
-  std::string beforeShot(const physics::TableModel& table, double ball_radius, const GameState& state,
+  std::string beforeShot(const physics::TableModel& table, double ball_radius, GameState& state,
                          physics::TableState<double>& balls) const override
   {
     if (state.over)

@@ -3,6 +3,7 @@
 // caroms in three-cushion; with execution noise and a skill), whose turns are played within the
 // agent's step; or in self-play, where every step is the shot of whoever is to play and everything
 // is seen from the shooter's side (its own cue ball, its own score).
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -10,6 +11,7 @@
 
 #include "cue_sim/game/game_play.hpp"
 #include "cue_sim/game/self_play.hpp"
+#include "cue_sim/physics/rack.hpp"
 #include "learning/tasks/task.hpp"
 
 namespace cue_sim
@@ -45,6 +47,8 @@ public:
       cap_ = kRaceShotsPerPoint * (race_ > 0 ? race_ : target);
     if (const std::string why = game::whyNotPlayableOn(*rules, rules_, engine.table()); !why.empty())
       throw std::invalid_argument("task: " + why);
+    for (const auto& b : physics::rackLayout<double>(rules->rack(), engine.table(), engine.params().ball_radius).balls)
+      slots_ = std::max(slots_, b.id + 1);
   }
   GameTask(const GameTask& other)
     : Task(other),
@@ -56,6 +60,7 @@ public:
       shaping_(other.shaping_),
       race_(other.race_),
       cap_(other.cap_),
+      slots_(other.slots_),
       planner_(other.planner_),
       game_(other.game_ ? std::make_unique<game::GamePlay>(*other.game_) : nullptr),
       start_(other.start_),
@@ -142,6 +147,16 @@ public:
   std::optional<GameStart> gameStart() const override { return start_; }
   std::vector<PlayedTurn> lastTurns() const override { return turns_; }
 
+  int ballSlots() const override { return slots_; }
+
+  // The features: the shooter's group (3), ball in hand (4: none, anywhere, behind the head
+  // string, in the D), break shot, push-out allowed, fouls in a row (2), which balls may be met
+  // first (one per object ball slot), the share of the shot cap used, snooker's colour on and
+  // free ball, whether the shooter strikes ball 1, and both scores.
+  static constexpr int kLegalFirst = 11;  ///< where the legal-first block starts
+  int afterLegal() const { return kLegalFirst + slots_ - 1; }
+  int featureCount() const { return afterLegal() + 6; }
+
   void addFeatures(BoxSpec& box) const override
   {
     const auto add = [&box](const std::string& name) {
@@ -151,15 +166,17 @@ public:
     };
     for (const char* group : {"group_open", "group_solids", "group_stripes"})
       add(group);
-    for (const char* place : {"in_hand_none", "in_hand_anywhere", "in_hand_behind_head_string"})
+    for (const char* place : {"in_hand_none", "in_hand_anywhere", "in_hand_behind_head_string", "in_hand_d"})
       add(place);
     add("break_shot");
     add("push_out_allowed");
     add("own_fouls");
     add("opponent_fouls");
-    for (int id = 1; id < 16; ++id)
+    for (int id = 1; id < slots_; ++id)
       add("legal_first" + std::to_string(id));
     add("shots_used");
+    add("colour_next");     // snooker: a colour is on (a red was just potted)
+    add("free_ball");       // snooker: any ball may be met first
     add("cue_ball_1");      // the shooter strikes ball 1 (three-cushion's yellow), not ball 0
     add("own_score");       // where the game keeps a score: the shooter's, as a share of the target
     add("opponent_score");  // and the other player's
@@ -168,24 +185,27 @@ public:
   {
     const game::GameState& s = game_->state();
     const int me = s.turn, other = 1 - s.turn;
-    std::fill(out, out + kFeatures, 0.0f);
+    std::fill(out, out + featureCount(), 0.0f);
     out[static_cast<int>(s.groups[static_cast<std::size_t>(me)])] = 1;
     out[3 + static_cast<int>(s.ball_in_hand)] = 1;
-    out[6] = s.break_shot;
-    out[7] = s.push_out_allowed;
-    out[8] = static_cast<float>(std::min(2, s.consecutive_fouls[static_cast<std::size_t>(me)])) / 2;
-    out[9] = static_cast<float>(std::min(2, s.consecutive_fouls[static_cast<std::size_t>(other)])) / 2;
+    out[7] = s.break_shot;
+    out[8] = s.push_out_allowed;
+    out[9] = static_cast<float>(std::min(2, s.consecutive_fouls[static_cast<std::size_t>(me)])) / 2;
+    out[10] = static_cast<float>(std::min(2, s.consecutive_fouls[static_cast<std::size_t>(other)])) / 2;
     for (const int id : game_->legalFirst())
-      if (id >= 1 && id < 16)
-        out[9 + id] = 1;
-    out[25] = static_cast<float>(std::min(1.0, static_cast<double>(s.shots) / cap_));
-    out[26] = game_->cueBall() == 1;
-    if (s.target > 0)
+      if (id >= 1 && id < slots_)
+        out[kLegalFirst - 1 + id] = 1;
+    float* rest = out + afterLegal();
+    rest[0] = static_cast<float>(std::min(1.0, static_cast<double>(s.shots) / cap_));
+    rest[1] = s.colour_next;
+    rest[2] = s.free_ball;
+    rest[3] = game_->cueBall() == 1;
+    // A race's scores as shares of its target; a frame's (snooker) of the highest break.
+    const double scale = s.target > 0 ? s.target : game_->rules().keepsScore() ? kFrameScoreScale : 0;
+    if (scale > 0)
     {
-      out[27] =
-          static_cast<float>(std::min(1.0, static_cast<double>(s.score[static_cast<std::size_t>(me)]) / s.target));
-      out[28] =
-          static_cast<float>(std::min(1.0, static_cast<double>(s.score[static_cast<std::size_t>(other)]) / s.target));
+      rest[4] = static_cast<float>(std::min(1.0, s.score[static_cast<std::size_t>(me)] / scale));
+      rest[5] = static_cast<float>(std::min(1.0, s.score[static_cast<std::size_t>(other)] / scale));
     }
   }
 
@@ -286,8 +306,10 @@ private:
     // No free place at all: the cue ball stays where it is (where the game put it), which is free.
   }
 
-  static constexpr int kAgent = 0;      ///< against the opponent, the agent is player 0
-  static constexpr int kFeatures = 29;  ///< addFeatures' count
+  static constexpr int kAgent = 0;  ///< against the opponent, the agent is player 0
+  /// Snooker's scores are given as shares of the highest break, 147: a frame without fouls
+  /// scores at most that for the winner.
+  static constexpr double kFrameScoreScale = 147;
 
   const physics::Engine<double>& engine_;
   std::string rules_;
@@ -297,6 +319,7 @@ private:
   double shaping_;
   int race_;
   int cap_;
+  int slots_ = kBallSlots;  ///< the ball block's slots: the rack's highest id + 1, at least kBallSlots
   std::shared_ptr<const game::Planner> planner_;  ///< the opponent's (game::plannerFor)
   std::unique_ptr<game::GamePlay> game_;
   GameStart start_;

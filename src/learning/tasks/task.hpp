@@ -14,6 +14,7 @@
 #include "cue_sim/physics/cue_strike.hpp"
 #include "cue_sim/physics/table_state.hpp"
 #include "learning/actions.hpp"
+#include "learning/state_observation.hpp"
 
 namespace cue_sim
 {
@@ -47,6 +48,9 @@ public:
   virtual std::optional<GameStart> gameStart() const { return std::nullopt; }
   virtual std::vector<PlayedTurn> lastTurns() const { return {}; }
 
+  /// The ball ids the observation has a slot for (state_observation.hpp): kBallSlots, or more
+  /// where the task's balls need them (snooker's 22).
+  virtual int ballSlots() const { return kBallSlots; }
   /// The task's own features after the ball block: their names and bounds (appended to `box`)...
   virtual void addFeatures(BoxSpec& box) const = 0;
   /// ...and their values now.

@@ -51,6 +51,7 @@ void describeTurn(const game::Turn& turn, StepInfo& info)
   info.first_contact = turn.facts.first_contact;
   info.foul = turn.ruling.foul;
   info.points = turn.ruling.points;
+  info.penalty = turn.ruling.penalty;
   info.reason = turn.ruling.reason;
 }
 

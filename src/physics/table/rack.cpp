@@ -1,8 +1,11 @@
 #include "cue_sim/physics/rack.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <stdexcept>
+
+#include "cue_sim/physics/snooker_markings.hpp"
 
 namespace cue_sim
 {
@@ -10,7 +13,7 @@ namespace physics
 {
 std::vector<std::string> rackNames()
 {
-  return {"eight", "nine", "ten", "carom", "empty"};
+  return {"eight", "nine", "ten", "carom", "snooker", "empty"};
 }
 
 std::string rackNamesText()
@@ -47,6 +50,9 @@ TableState<S> rackLayout(const std::string& name, const TableModel& table, S bal
   static const std::vector<std::vector<int>> eight_rows = {{1}, {11, 5}, {2, 8, 10}, {9, 7, 14, 4}, {6, 15, 13, 3, 12}};
   static const std::vector<std::vector<int>> nine_rows = {{1}, {2, 3}, {4, 9, 5}, {6, 7}, {8}};
   static const std::vector<std::vector<int>> ten_rows = {{1}, {6, 4}, {7, 10, 5}, {2, 8, 9, 3}};
+  // Snooker (WPBSA Section 3, 2): the 15 reds (1-15) in a triangle of five rows.
+  static const std::vector<std::vector<int>> snooker_rows = {
+      {1}, {2, 3}, {4, 5, 6}, {7, 8, 9, 10}, {11, 12, 13, 14, 15}};
   const std::vector<std::vector<int>>* rows = nullptr;
   if (name == "eight")
     rows = &eight_rows;
@@ -54,10 +60,12 @@ TableState<S> rackLayout(const std::string& name, const TableModel& table, S bal
     rows = &nine_rows;
   else if (name == "ten")
     rows = &ten_rows;
+  else if (name == "snooker")
+    rows = &snooker_rows;
   else if (name != "empty" && name != "carom")
     throw std::invalid_argument("unknown rack '" + name + "' (known: " + rackNamesText() + ")");
 
-  const Eigen::Vector2d head = table.headSpot(), foot = table.footSpot();
+  Eigen::Vector2d head = table.headSpot(), foot = table.footSpot();
   TableState<S> state;
   if (name == "carom")
   {
@@ -68,12 +76,24 @@ TableState<S> rackLayout(const std::string& name, const TableModel& table, S bal
     state.balls.push_back(restingBall<S>(2, foot.x(), foot.y(), ball_radius));
     return state;
   }
-  state.balls.push_back(restingBall<S>(0, head.x(), head.y(), ball_radius));
+  const double spacing = 2 * static_cast<double>(ball_radius) + options.gap;
+  if (name == "snooker")
+  {
+    // The colours (16 yellow to 21 black) on their spots, the cue ball in the D on the baulk line
+    // midway between the yellow and brown spots, and the reds' apex as near the pink as the gap
+    // allows, on the long string behind it (WPBSA Section 3, 2).
+    const SnookerMarkings m = snookerMarkings(table);
+    head = (m.spotOf(SnookerColour::Yellow) + m.spotOf(SnookerColour::Brown)) / 2;
+    foot = m.spotOf(SnookerColour::Pink) + Eigen::Vector2d(spacing, 0);
+    for (int k = 0; k < 6; ++k)
+      state.balls.push_back(restingBall<S>(16 + k, m.spots[static_cast<std::size_t>(k)].x(),
+                                           m.spots[static_cast<std::size_t>(k)].y(), ball_radius));
+  }
+  state.balls.insert(state.balls.begin(), restingBall<S>(0, head.x(), head.y(), ball_radius));
   if (!rows)
     return state;
   if (!(options.jitter >= 0 && options.jitter <= options.gap / 2))
     throw std::invalid_argument("rack jitter must be in [0, gap / 2] so that no balls overlap");
-  const double spacing = 2 * static_cast<double>(ball_radius) + options.gap;
   const double row_step = spacing * std::sqrt(3.0) / 2;
   // std::mt19937 and the arithmetic below are fully specified, so a seed gives the same rack
   // everywhere (std:: distributions are not, and are not used).
@@ -100,6 +120,8 @@ TableState<S> rackLayout(const std::string& name, const TableModel& table, S bal
       state.balls.push_back(restingBall<S>(row[j], x, y, ball_radius));
     }
   }
+  if (name == "snooker")  // by id, as the colours came first
+    std::sort(state.balls.begin(), state.balls.end(), [](const Ball<S>& a, const Ball<S>& b) { return a.id < b.id; });
   return state;
 }
 
