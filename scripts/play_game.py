@@ -149,10 +149,11 @@ def best_shot(game, balls, pockets, radius, predict_batch, call_shot):
 
 
 def same_ruling(node, recorded):
-    """The node's ruling against the record's: the same foul, next player and reason (a capped
-    game's last reason carries the cap's note, which the node does not add)."""
+    """The node's ruling against the record's: the same foul, next player, points, penalty and
+    reason (a capped game's last reason carries the cap's note, which the node does not add)."""
     reason = recorded["reason"].split(CAP_NOTE)[0]
-    return node.foul == recorded["foul"] and node.next_player == recorded["next_player"] and node.reason == reason
+    return (node.foul == recorded["foul"] and node.next_player == recorded["next_player"] and node.reason == reason
+            and node.points == recorded.get("points", 0) and node.penalty == recorded.get("penalty", 0))
 
 
 def replay(record_dir, services, game_state, table_state):
@@ -206,7 +207,7 @@ def main():
     parser = argparse.ArgumentParser(description="Plays a game on table_node through its services.")
     parser.add_argument("--rules", default="eight_ball",
                         help="a ruleset the node knows: eight_ball, nine_ball, ten_ball on a table with pockets, "
-                             "three_cushion on the carom table (~start_game refuses others)")
+                             "three_cushion on the carom table, snooker (~start_game refuses others)")
     parser.add_argument("--target", type=int, default=0,
                         help="the points that win a game that keeps a score (three_cushion; 0: its 40)")
     parser.add_argument("--shots", type=int, default=-1, help="stop after this many shots (default: at the game's end)")

@@ -104,6 +104,8 @@ add_rostest(test/node/game_replay.test DEPENDENCIES game_node_tests self_play)
 set_tests_properties(_ctest_cue_sim_rostest_test_node_game_replay.test PROPERTIES RUN_SERIAL TRUE)
 add_rostest(test/node/game_replay_carom.test DEPENDENCIES game_node_tests self_play)
 set_tests_properties(_ctest_cue_sim_rostest_test_node_game_replay_carom.test PROPERTIES RUN_SERIAL TRUE)
+add_rostest(test/node/game_replay_snooker.test DEPENDENCIES game_node_tests self_play)
+set_tests_properties(_ctest_cue_sim_rostest_test_node_game_replay_snooker.test PROPERTIES RUN_SERIAL TRUE)
 
 # The same scenes through the Python module, the simulate program and the node's ~predict.
 add_rostest(test/node/same_answers.test DEPENDENCIES table_node simulate cue_sim_python)

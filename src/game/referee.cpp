@@ -274,14 +274,19 @@ void spotBalls(const physics::TableModel& table, double ball_radius, const std::
           chosen = x;
     if (std::isnan(chosen))
       throw std::runtime_error("nowhere on the long string to spot ball " + std::to_string(id));
-    auto& ball = state.balls[static_cast<std::size_t>(index)];
-    ball.r = physics::Vec3<double>(chosen, spot.y(), ball_radius);
-    ball.v.setZero();
-    ball.w.setZero();
-    ball.motion = physics::Motion::Stationary;
-    ball.pocket = -1;
-    ball.time = state.time;
+    spotAt(state, id, Eigen::Vector2d(chosen, spot.y()), ball_radius);
   }
+}
+
+void spotAt(physics::TableState<double>& balls, int id, const Eigen::Vector2d& p, double ball_radius)
+{
+  auto& ball = balls.balls[static_cast<std::size_t>(balls.indexOf(id))];
+  ball.r = physics::Vec3<double>(p.x(), p.y(), ball_radius);
+  ball.v.setZero();
+  ball.w.setZero();
+  ball.motion = physics::Motion::Stationary;
+  ball.pocket = -1;
+  ball.time = balls.time;
 }
 
 bool inHandRegion(const physics::TableModel& table, double ball_radius, BallInHand place, Eigen::Vector2d& low,

@@ -109,7 +109,20 @@ Choice breakChoice(const GamePlay& game)
   c.strike = aimedAt(from, table.footSpot(), PottingPlanner::kBreakSpeed);
   return c;
 }
-}  // namespace
+
+/// Plays `candidate` on a copy of `trial` (the cue ball placed and the call made) and keeps it in
+/// `best` if it scores above `best_score`.
+void keepIfBetter(const GamePlay& trial, const Choice& candidate, int shooter, Choice& best, double& best_score)
+{
+  GamePlay play = trial;
+  const Turn t = play.shoot(candidate.strike);
+  const double s = score(t.ruling, shooter, candidate.strike.speed, openShots(play));
+  if (s > best_score)
+  {
+    best_score = s;
+    best = candidate;
+  }
+}
 
 /// Where the cue ball in hand may go besides behind a pot's ghost: a grid of kInHandGrid x
 /// kInHandGrid points over the region the rules allow (the D, behind the head string, the cloth).
@@ -125,6 +138,8 @@ std::vector<Eigen::Vector2d> inHandPlaces(const GamePlay& game)
                                              (j + 0.5) / PottingPlanner::kInHandGrid * (high.y() - low.y())));
   return places;
 }
+
+}  // namespace
 
 Choice PottingPlanner::choose(const GamePlay& game) const
 {
@@ -179,14 +194,7 @@ Choice PottingPlanner::choose(const GamePlay& game) const
         for (const double speed : {1.5, 3.0})
         {
           c.strike = aimedAt(cue, ghost, speed);
-          GamePlay play = trial;
-          const Turn t = play.shoot(c.strike);
-          const double s = score(t.ruling, shooter, speed, openShots(play));
-          if (s > best_score)
-          {
-            best_score = s;
-            best = c;
-          }
+          keepIfBetter(trial, c, shooter, best, best_score);
         }
       }
     }
@@ -218,14 +226,7 @@ Choice PottingPlanner::choose(const GamePlay& game) const
             continue;
           c.ball = calls ? ball : -1;
           c.pocket = -1;
-          GamePlay play = trial;
-          const Turn t = play.shoot(c.strike);
-          const double s = score(t.ruling, shooter, speed, openShots(play));
-          if (s > best_score)
-          {
-            best_score = s;
-            best = c;
-          }
+          keepIfBetter(trial, c, shooter, best, best_score);
         }
     }
   }

@@ -521,4 +521,21 @@ TEST(GameReplay, ThreeCushionRecordsReplayOnTheCaromTableWithTheSameRulingsAndSc
   }
 }
 
+TEST(GameReplay, SnookerRecordsReplayOnTheSnookerTableWithTheSameRulingsAndScores)
+{
+  // On a node running the snooker table: the cue ball in hand in the D, the colours re-spotted,
+  // every ruling (points and penalties with it) and every ball where the record has it.
+  const std::string dir = std::string(CUE_SIM_TEST_DIR) + "/game_replay_snooker_records";
+  std::system(("rm -rf '" + dir + "'").c_str());
+  const auto [played, output] =
+      runCommand("rosrun cue_sim self_play --rules snooker --games 1 --seed 4 --out '" + dir + "'");
+  ASSERT_EQ(played, 0) << output;
+  const auto [code, replay] = runCommand("rosrun cue_sim play_game.py --replay '" + dir + "/snooker_0'");
+  EXPECT_EQ(code, 0) << replay;
+  EXPECT_NE(replay.find("every ruling as recorded"), std::string::npos) << replay;
+  EXPECT_NE(replay.find("the frame ends on the black"), std::string::npos) << "the frame is played out: " << replay;
+  const std::size_t summary = replay.rfind("replayed");
+  std::printf("snooker_0: %s", summary == std::string::npos ? "" : replay.substr(summary).c_str());
+}
+
 }  // namespace

@@ -23,6 +23,9 @@ Ruling standardFoul(int shooter, const std::string& rule, const std::string& rea
 /// shooter may hit first. Empty rule if none.
 Ruling generalFoul(int shooter, const ShotFacts& facts, const std::vector<int>& legal_first, bool check_first_and_rail);
 
+/// Puts ball `id` back on the table at rest with its centre at p: spotted.
+void spotAt(physics::TableState<double>& balls, int id, const Eigen::Vector2d& p, double ball_radius);
+
 /// "balls 3, 5 and 9" for a ruling's text.
 std::string ballList(const std::vector<int>& ids);
 

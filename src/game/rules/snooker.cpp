@@ -358,13 +358,7 @@ private:
           placed = standsFree(table, R, balls, place = own + Eigen::Vector2d(step, 0));
       if (!placed)
         throw std::runtime_error("no room on the table to spot " + ballName(id));
-      auto& ball = balls.balls[static_cast<std::size_t>(balls.indexOf(id))];
-      ball.r = physics::Vec3<double>(place.x(), place.y(), R);
-      ball.v.setZero();
-      ball.w.setZero();
-      ball.motion = physics::Motion::Stationary;
-      ball.pocket = -1;
-      ball.time = balls.time;
+      spotAt(balls, id, place, R);
     }
   }
 

@@ -215,13 +215,7 @@ private:
               break;
             }
       }
-      auto& ball = balls.balls[static_cast<std::size_t>(balls.indexOf(id))];
-      ball.r = physics::Vec3<double>(place.x(), place.y(), ball_radius);
-      ball.v.setZero();
-      ball.w.setZero();
-      ball.motion = physics::Motion::Stationary;
-      ball.pocket = -1;
-      ball.time = balls.time;
+      spotAt(balls, id, place, ball_radius);
     }
   }
 
