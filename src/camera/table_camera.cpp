@@ -64,7 +64,7 @@ class TableCamera::Scene
 {
 public:
   Scene(const physics::TableModel& table, const Intrinsics& k)
-    : texture(table), set(ballSetFor(table))
+    : texture(table, ballSetFor(table) == BallSet::Snooker), set(ballSetFor(table))
   {
     rays.resize(static_cast<std::size_t>(k.width) * k.height);
     for (int y = 0; y < k.height; ++y)

@@ -17,6 +17,9 @@ constexpr double kRubber = 0.03;
 constexpr double kRail = 0.14;
 
 const Bgr kCloth{0.22f, 0.50f, 0.05f};
+const Bgr kChalk{0.85f, 0.88f, 0.85f};
+/// A snooker table's chalk lines' half-width and its spots' radius [m], as urdf/'s markings.
+constexpr double kChalkHalfWidth = 0.0015, kSpotRadius = 0.004;
 const Bgr kCushion{0.15f, 0.36f, 0.02f};
 const Bgr kRailWood{0.10f, 0.22f, 0.42f};
 const Bgr kPocket{0.02f, 0.02f, 0.02f};
@@ -29,10 +32,25 @@ bool behindSegment(const physics::CushionSegment& s, const Eigen::Vector2d& p)
   const double depth = -d.dot(s.normal);
   return along >= 0 && along <= s.length && depth >= 0 && depth <= kRubber;
 }
+
+/// Whether p is on a marking: the baulk line, the D's arc, or a spot.
+bool onMarking(const physics::SnookerMarkings& m, const Eigen::Vector2d& p)
+{
+  if (std::abs(p.x() - m.baulk_line_x) <= kChalkHalfWidth)
+    return true;
+  if (p.x() <= m.baulk_line_x && std::abs((p - m.d_centre).norm() - m.d_radius) <= kChalkHalfWidth)
+    return true;
+  for (const Eigen::Vector2d& spot : m.spots)
+    if ((p - spot).norm() <= kSpotRadius)
+      return true;
+  return false;
+}
 }  // namespace
 
-TableTexture::TableTexture(const physics::TableModel& table)
+TableTexture::TableTexture(const physics::TableModel& table, bool snooker_markings)
 {
+  if (snooker_markings)
+    markings_ = physics::snookerMarkings(table);
   const Eigen::Vector2d half(table.clothLength() / 2, table.clothWidth() / 2);
   cloth_low_ = table.clothCentre() - half;
   cloth_high_ = table.clothCentre() + half;
@@ -65,6 +83,8 @@ Surface TableTexture::classify(const physics::TableModel& table, const Eigen::Ve
     if ((p - pocket.centre).norm() <= pocket.radius)
       return Surface::Pocket;
   const bool on_cloth = (p.array() >= cloth_low_.array()).all() && (p.array() <= cloth_high_.array()).all();
+  if (on_cloth && markings_ && onMarking(*markings_, p))
+    return Surface::Chalk;
   return on_cloth ? Surface::Cloth : Surface::Cushion;
 }
 
@@ -88,6 +108,8 @@ Bgr TableTexture::colourAt(const Eigen::Vector2d& p) const
   {
     case Surface::Cloth:
       return kCloth;
+    case Surface::Chalk:
+      return kChalk;
     case Surface::Pocket:
       return kPocket;
     case Surface::Cushion:

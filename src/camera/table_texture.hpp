@@ -4,8 +4,10 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
+#include "cue_sim/physics/snooker_markings.hpp"
 #include "cue_sim/physics/table_model.hpp"
 
 namespace cue_sim
@@ -15,6 +17,7 @@ namespace camera
 enum class Surface : std::uint8_t
 {
   Cloth,
+  Chalk,  ///< a marking on the cloth: a snooker table's baulk line, D and spots
   Pocket,
   Cushion,  ///< raised: its top is at the cushion height
   Rail,     ///< raised
@@ -30,7 +33,8 @@ struct Bgr
 class TableTexture
 {
 public:
-  explicit TableTexture(const physics::TableModel& table);
+  /// With `snooker_markings`, the cloth carries the baulk line, the D and the six spots.
+  explicit TableTexture(const physics::TableModel& table, bool snooker_markings = false);
 
   Surface surfaceAt(const Eigen::Vector2d& p) const;
   Bgr colourAt(const Eigen::Vector2d& p) const;
@@ -44,6 +48,7 @@ private:
   int columns_ = 0, rows_ = 0;
   std::vector<Surface> texels_;
   Eigen::Vector2d cloth_low_, cloth_high_;
+  std::optional<physics::SnookerMarkings> markings_;
 };
 
 }  // namespace camera

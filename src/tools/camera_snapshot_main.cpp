@@ -24,7 +24,7 @@ int main(int argc, char** argv)
   std::string cue_model;  // empty: the default
   int width = 0, image_height = 0;
   std::string calibration;  // empty: the package's default
-  app.add_option("--table", table_name, "a bundled table (7ft, 9ft, carom) or a URDF file");
+  app.add_option("--table", table_name, "a bundled table (7ft, 9ft, carom, snooker) or a URDF file");
   app.add_option("--rack", rack, cue_sim::physics::rackNamesText());
   app.add_option("--after-ms", after_ms, "photograph this long after the break's strike; 0: the rack, not struck")
       ->check(CLI::Range(0.0, 60000.0));

@@ -27,7 +27,7 @@ int main(int argc, char** argv)
   app.add_option("--max-shots", max_shots, "the shot cap: a game not over by then ends without a winner")
       ->check(CLI::Range(1, 100000));
   app.add_option("--table", table_name,
-                 "a bundled table (7ft, 9ft, carom) or a URDF file; by default each ruleset's own (7ft, carom)");
+                 "a bundled table (7ft, 9ft, carom, snooker) or a URDF file; by default each ruleset's own (7ft, carom, snooker)");
   app.add_option("--target", target, "the points that win where the game keeps a score (3-cushion: 40)")
       ->check(CLI::Range(1, cue_sim::game::GamePlay::kMaxTarget));
   app.add_flag("--no-noise", no_noise, "strike exactly as planned");

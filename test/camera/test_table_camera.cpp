@@ -13,6 +13,7 @@
 #include "cue_sim/camera/calibration_file.hpp"
 #include "cue_sim/camera/exposure.hpp"
 #include "cue_sim/camera/table_camera.hpp"
+#include "cue_sim/physics/snooker_markings.hpp"
 
 namespace cue_sim
 {
@@ -255,6 +256,54 @@ TEST(TableCamera, ACaromTablesBallsAreWhiteYellowAndRedWithoutNumbers)
   EXPECT_GT(red[2], 120);
   EXPECT_LT(red[1], 60);
   EXPECT_LT(red[0], 60) << "the red, where a pool 2 would show its number disc";
+}
+
+TEST(TableCamera, TheSnookerTableShowsItsMarkingsAndItsBallsInSnookersColours)
+{
+  // The snooker table's balls (named by its description) are snooker's: every red red without a
+  // number, the pink pink, the black black; and the cloth carries its chalk: the baulk line, the D
+  // and the spots, white on the green.
+  const auto table = std::make_shared<const physics::TableModel>(tableFromUrdfFile(tableUrdfPath("snooker")));
+  const auto engine = std::make_shared<const physics::Engine<double>>(table, physics::tableDefaults(*table));
+  TableCamera camera = overheadCamera(*engine);
+  const double R = engine->params().ball_radius;
+  const physics::SnookerMarkings m = physics::snookerMarkings(*table);
+  const Frame frame = camera.render(still({{0, Eigen::Vector3d(-0.5, 0.3, R)},
+                                           {7, Eigen::Vector3d(0.3, 0.2, R)},
+                                           {20, Eigen::Vector3d(0.3, -0.2, R)},
+                                           {21, Eigen::Vector3d(0.6, 0.0, R)}}));
+  const auto pixelOf = [&](const Eigen::Vector2d& p) {
+    Eigen::Vector2d uv;
+    EXPECT_TRUE(project(camera.intrinsics(), camera.pose().inverse() * Eigen::Vector3d(p.x(), p.y(), 0), uv));
+    return frame.image.at<cv::Vec3b>(static_cast<int>(std::lround(uv.y())), static_cast<int>(std::lround(uv.x())));
+  };
+  const auto at = [&](const Eigen::Vector2d& px) {
+    return frame.image.at<cv::Vec3b>(static_cast<int>(std::lround(px.y())), static_cast<int>(std::lround(px.x())));
+  };
+  const cv::Vec3b red = at(frame.balls[1].pixel), pink = at(frame.balls[2].pixel), black = at(frame.balls[3].pixel);
+  EXPECT_GT(red[2], 120);
+  EXPECT_LT(red[1], 60);
+  EXPECT_LT(red[0], 60) << "a red, with no number disc";
+  EXPECT_GT(pink[2], 150);
+  EXPECT_GT(pink[0], 90) << "the pink: red with blue in it";
+  EXPECT_LT(std::max({black[0], black[1], black[2]}), 50) << "the black";
+  // Chalk: the blue spot (no ball on it) and the baulk line away from the D; green cloth beside.
+  const cv::Vec3b spot = pixelOf(m.spotOf(physics::SnookerColour::Blue));
+  const cv::Vec3b line = pixelOf(Eigen::Vector2d(m.baulk_line_x, 0.6));
+  const cv::Vec3b cloth = pixelOf(Eigen::Vector2d(m.baulk_line_x + 0.05, 0.6));
+  EXPECT_GT(std::min({spot[0], spot[1], spot[2]}), 150) << "the blue spot";
+  EXPECT_GT(std::min({line[0], line[1], line[2]}), 120) << "the baulk line";
+  EXPECT_LT(cloth[2], 100);
+  EXPECT_GT(cloth[1], cloth[2]) << "the cloth beside it";
+  // A pool table's cloth has none.
+  const auto pool = engineOn("7ft");
+  TableCamera pool_camera = overheadCamera(*pool);
+  const Frame pool_frame = pool_camera.render(still({}));
+  Eigen::Vector2d uv;
+  ASSERT_TRUE(project(pool_camera.intrinsics(), pool_camera.pose().inverse() * Eigen::Vector3d(0, 0, 0), uv));
+  const cv::Vec3b centre =
+      pool_frame.image.at<cv::Vec3b>(static_cast<int>(std::lround(uv.y())), static_cast<int>(std::lround(uv.x())));
+  EXPECT_GT(centre[1], centre[2]) << "green at the centre of a pool table";
 }
 
 TEST(TableCamera, AMovingBallSmearsAsFarAsItTravels)

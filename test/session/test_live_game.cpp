@@ -113,7 +113,7 @@ TEST_F(LiveGameTest, StartingAGameRacksForTheBreakAndRefusesFreeEdits)
 TEST_F(LiveGameTest, BadGameRequestsAreRefusedNamingTheField)
 {
   GameRequest request;
-  request.rules = "snooker";
+  request.rules = "bagatelle";
   Outcome r = table_.startGame(request, kStart);
   EXPECT_FALSE(r.success);
   EXPECT_NE(r.message.find("eight_ball, nine_ball"), std::string::npos) << r.message;
