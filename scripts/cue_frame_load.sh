@@ -39,9 +39,13 @@ run() {  # label, extra node arguments
   rosrun cue_sim table_node __name:=table _urdf_file:="$CUE_SIM_ROOT/urdf/table_7ft.urdf" _rack:=eight \
     _camera/enabled:=false "$@" > "$ROS_LOG_DIR/cue_frame_load_node.log" 2>&1 &
   local launched=$!
-  for _ in $(seq 100); do rosservice list 2>/dev/null | grep -q '^/table/strike$' && break; sleep 0.2; done
-  local node
-  node=$(pgrep -f 'cue_sim/table_node' | head -1)
+  cue_sim_pids+=("$launched")  # stopped on any exit, never left running
+  # Ready when this node says so in its own log (rosrun execs it, so $launched is the node). The
+  # master is no witness: the last run's node may still be listed there for a moment, and a
+  # search by name could find rosrun before it execs (both once ended this script early, on
+  # 2026-11-29, leaving the node running for its EXIT trap to wait on).
+  for _ in $(seq 150); do grep -q "cue_sim: table '" "$ROS_LOG_DIR/cue_frame_load_node.log" && break; sleep 0.2; done
+  local node="$launched"
   sleep 2
   local before after start end
   before=$(awk '{ print $14 + $15 }' "/proc/$node/stat"); start=$(date +%s.%N)

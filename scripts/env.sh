@@ -52,7 +52,8 @@ cue_sim_stop_all() {
     sleep 0.1
   done
   for p in "${cue_sim_pids[@]}"; do kill -9 "$p" 2>/dev/null || true; done
-  wait 2>/dev/null || true
+  # Only those: a child the script did not list must not hold its exit for ever.
+  wait "${cue_sim_pids[@]}" 2>/dev/null || true
 }
 
 # A screenshot of rviz: the table launched with rviz under Xvfb (its master on port $1, more
