@@ -99,8 +99,9 @@ target_link_libraries(game_node_tests cue_sim_table_description ${catkin_LIBRARI
 add_dependencies(game_node_tests table_node ${PROJECT_NAME}_generate_messages_cpp)
 target_compile_definitions(game_node_tests PRIVATE CUE_SIM_TEST_DIR="${CMAKE_CURRENT_BINARY_DIR}")
 add_rostest(test/node/game_replay.test DEPENDENCIES game_node_tests self_play)
-# Sim time as fast as possible keeps a core busy; beside pytest's Dask workers on 2 cores the replay
-# twice waited out its 120 s for a game state (fresh clones, 2026-11-25): alone.
+# Sim time as fast as possible keeps a core busy while balls move: alone. (The replays that waited out
+# their 120 s for ~state, 2026-11-25 and 2026-11-29, lagged behind a node that published still frames
+# as fast as it could at rest; at rest the clock now steps once a period.)
 set_tests_properties(_ctest_cue_sim_rostest_test_node_game_replay.test PROPERTIES RUN_SERIAL TRUE)
 add_rostest(test/node/game_replay_carom.test DEPENDENCIES game_node_tests self_play)
 set_tests_properties(_ctest_cue_sim_rostest_test_node_game_replay_carom.test PROPERTIES RUN_SERIAL TRUE)

@@ -58,8 +58,13 @@ CameraPublisher::CameraPublisher(ros::NodeHandle& private_node, const CameraPara
     throw std::runtime_error("~camera/info_url '" + parameters.info_url + "': " + why);
   info_ = infoOf(intrinsics_, parameters.frame);
   transport_ = std::make_unique<image_transport::ImageTransport>(camera_node_);
-  image_publisher_ = transport_->advertiseCamera("image_raw", static_cast<uint32_t>(parameters.queue_size));
-  truth_publisher_ = camera_node_.advertise<cue_sim::CameraGroundTruth>("ground_truth", 10);
+  const auto image_joined = [this](const image_transport::SingleSubscriberPublisher&) { listenerJoined(); };
+  const auto image_left = [this](const image_transport::SingleSubscriberPublisher&) { listenerLeft(); };
+  const auto joined = [this](const ros::SingleSubscriberPublisher&) { listenerJoined(); };
+  const auto left = [this](const ros::SingleSubscriberPublisher&) { listenerLeft(); };
+  image_publisher_ = transport_->advertiseCamera("image_raw", static_cast<uint32_t>(parameters.queue_size),
+                                                 image_joined, image_left, joined, left);
+  truth_publisher_ = camera_node_.advertise<cue_sim::CameraGroundTruth>("ground_truth", 10, joined, left);
   if (!parameters.publish_frame)
   {
     // Something else places the frame (a robot's tf): listen from the start, so that the first
@@ -85,7 +90,7 @@ bool CameraPublisher::due(const ros::Time& stamp) const
   std::lock_guard<std::mutex> lock(mutex_);
   if (busy_ || job_ || stamp < next_due_)
     return false;
-  return image_publisher_.getNumSubscribers() > 0 || truth_publisher_.getNumSubscribers() > 0;
+  return listeners_ > 0;
 }
 
 void CameraPublisher::take(const session::LiveTable& table, const ros::Time& stamp)

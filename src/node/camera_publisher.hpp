@@ -14,6 +14,7 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
+#include <atomic>
 #include <condition_variable>
 #include <memory>
 #include <mutex>
@@ -51,6 +52,12 @@ private:
   };
   void loop();
   void photograph(Job& job);
+  /// Counts the subscribers to the image (any transport), its camera_info and the ground truth,
+  /// as roscpp connects and disconnects them (on a service thread). due() reads the count: asking
+  /// roscpp (getNumSubscribers) takes locks its network thread holds, and the publishing thread
+  /// then waited up to 18 ms behind that normal-priority thread on a busy machine.
+  void listenerJoined() { ++listeners_; }
+  void listenerLeft() { --listeners_; }
   /// The camera's pose in the table frame: where the node put its frame, else from tf, else (warned
   /// about) the default overhead pose.
   camera::Pose lookUpPose(const physics::TableModel& table);
@@ -67,6 +74,7 @@ private:
   std::unique_ptr<image_transport::ImageTransport> transport_;
   image_transport::CameraPublisher image_publisher_;
   ros::Publisher truth_publisher_;
+  std::atomic<int> listeners_{0};
   std::unique_ptr<tf2_ros::Buffer> tf_buffer_;  ///< only when something else places the frame
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
   std::optional<camera::TableCamera> camera_;

@@ -106,7 +106,7 @@ void FollowedCue::sample()
   std::vector<physics::Ball<double>> balls;
   physics::PhysicsParams<double> params;
   {
-    std::lock_guard<std::mutex> lock(shared_.mutex);
+    std::lock_guard<PriorityInheritingMutex> lock(shared_.mutex);
     balls = shared_.live->ballsAt(toStamp(t.header.stamp));
     params = shared_.live->engine().params();
   }

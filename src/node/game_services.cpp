@@ -51,7 +51,7 @@ bool GameServices::onStartGame(StartGame::Request& request, StartGame::Response&
   game.seed = request.seed;
   game.target = request.target;
   game.balls = toBallInputs(request.balls);
-  std::lock_guard<std::mutex> lock(shared_.mutex);
+  std::lock_guard<PriorityInheritingMutex> lock(shared_.mutex);
   const ros::Time now = shared_.now();
   const session::Outcome outcome = shared_.live->startGame(game, toStamp(now));
   response.success = outcome.success;
@@ -62,7 +62,7 @@ bool GameServices::onStartGame(StartGame::Request& request, StartGame::Response&
 
 bool GameServices::onEndGame(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response)
 {
-  std::lock_guard<std::mutex> lock(shared_.mutex);
+  std::lock_guard<PriorityInheritingMutex> lock(shared_.mutex);
   const session::Outcome outcome = shared_.live->endGame(toStamp(shared_.now()));
   response.success = outcome.success;
   response.message = outcome.message;
@@ -71,7 +71,7 @@ bool GameServices::onEndGame(std_srvs::Trigger::Request&, std_srvs::Trigger::Res
 
 bool GameServices::onPlaceCueBall(PlaceCueBall::Request& request, PlaceCueBall::Response& response)
 {
-  std::lock_guard<std::mutex> lock(shared_.mutex);
+  std::lock_guard<PriorityInheritingMutex> lock(shared_.mutex);
   const ros::Time now = shared_.now();
   const session::Outcome outcome =
       shared_.live->placeCueBall(Eigen::Vector2d(request.position.x, request.position.y), toStamp(now));
@@ -88,7 +88,7 @@ bool GameServices::onCallShot(CallShot::Request& request, CallShot::Response& re
   call.ball = request.ball;
   call.pocket = request.pocket;
   call.push_out = request.push_out;
-  std::lock_guard<std::mutex> lock(shared_.mutex);
+  std::lock_guard<PriorityInheritingMutex> lock(shared_.mutex);
   const session::Outcome outcome = shared_.live->callShot(call, toStamp(shared_.now()));
   response.success = outcome.success;
   response.message = outcome.message;

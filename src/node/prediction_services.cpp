@@ -87,7 +87,7 @@ bool PredictionServices::onPredict(Predict::Request& request, Predict::Response&
   long layout = 0, strikes = 0;  // the table the preview is of
   if (why.empty())
   {
-    std::lock_guard<std::mutex> lock(shared_.mutex);
+    std::lock_guard<PriorityInheritingMutex> lock(shared_.mutex);
     why = shared_.live->predictionStart(toBallInputs(request.balls), toStamp(shared_.now()), start);
     layout = shared_.live->motion().layoutVersion();
     strikes = shared_.live->motion().strikeCount();
@@ -115,7 +115,7 @@ bool PredictionServices::onPredict(Predict::Request& request, Predict::Response&
                        ballSetFor(start.engine->table()));
     // Drawn only if the table has not moved on meanwhile (the publishing thread clears a preview
     // when it does, under the same lock).
-    std::lock_guard<std::mutex> lock(shared_.mutex);
+    std::lock_guard<PriorityInheritingMutex> lock(shared_.mutex);
     if (shared_.live->motion().layoutVersion() == layout && shared_.live->motion().strikeCount() == strikes)
       preview_publisher_.publish(preview);
   }
@@ -133,7 +133,7 @@ bool PredictionServices::onPredictBatch(PredictBatch::Request& request, PredictB
           " shots, at most ~max_batch_shots = " + std::to_string(limits.max_batch_shots);
   if (why.empty())
   {
-    std::lock_guard<std::mutex> lock(shared_.mutex);
+    std::lock_guard<PriorityInheritingMutex> lock(shared_.mutex);
     why = shared_.live->predictionStart(toBallInputs(request.balls), toStamp(shared_.now()), start);
   }
   std::vector<session::ShotPrediction> predictions;

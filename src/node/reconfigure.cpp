@@ -27,7 +27,7 @@ std::string PhysicsReconfigure::apply(const TableNodeConfig& config)
     return "real_time_factor 0 (as fast as possible) needs use_sim_time";
   dynamic_reconfigure::Config message;
   config.__toMessage__(message);
-  std::lock_guard<std::mutex> lock(shared_.mutex);
+  std::lock_guard<PriorityInheritingMutex> lock(shared_.mutex);
   session::LiveTable& table = *shared_.live;
   physics::PhysicsParams<double> params = table.engine().params();
   for (const auto& field : physics::physicsParamFields())

@@ -11,12 +11,15 @@
 #include <optional>
 
 #include "cue_sim/session/live_table.hpp"
+#include "node/thread_priority.hpp"
 
 namespace cue_sim
 {
 struct SharedTable
 {
-  std::mutex mutex;  ///< guards live, sim_now and last_published
+  /// Guards live, sim_now and last_published. Priority-inheriting: the publishing thread never
+  /// waits behind the machine's other work for a background thread that holds it.
+  PriorityInheritingMutex mutex;
   std::optional<session::LiveTable> live;
   bool sim_time = false;
   ros::Time sim_now;                      ///< with sim_time: the time last published on /clock

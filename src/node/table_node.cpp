@@ -38,6 +38,34 @@ constexpr int kLightServiceThreads = 2;
 /// rviz shows every ball on a replay (frame-locked markers that came before their frames are not
 /// shown).
 const ros::WallDuration kMarkerRefresh(1.0);
+
+/// With sim time as fast as possible, /clock runs this many times the wall clock while no ball
+/// moves, a step each publish period: a sim-time client's waits still pass at once, but tf, ~state
+/// and /clock go out at the publish rate, not as fast as the loop turns. Still frames by the
+/// thousand buried subscribers on a busy machine (a Python client fell two minutes behind ~state).
+constexpr double kAtRestClockFactor = session::kMaxRealTimeFactor;
+
+/// How far /clock moves in one turn of the sim-time loop, and whether the loop then waits a period.
+struct ClockStep
+{
+  ros::Duration by;
+  bool waits = true;
+};
+
+/// The step for `wall` elapsed since the last: at `factor` times the wall clock; as fast as
+/// possible (`factor` 0), one `period` at once while balls move, at the wall clock's pace while
+/// paused (a sim-time client never waits on the clock), kAtRestClockFactor times it at rest.
+ClockStep simClockStep(double factor, bool paused, bool at_rest, const ros::WallDuration& wall,
+                       const ros::WallDuration& period)
+{
+  if (factor > 0)
+    return {ros::Duration(wall.toSec() * factor), true};
+  if (paused)
+    return {ros::Duration(wall.toSec()), true};
+  if (at_rest)
+    return {ros::Duration(wall.toSec() * kAtRestClockFactor), true};
+  return {ros::Duration(period.toSec()), false};
+}
 }  // namespace
 
 TableNode::TableNode(const ros::NodeHandle& node, const ros::NodeHandle& private_node)
@@ -159,23 +187,15 @@ void TableNode::run()
     }
     return;
   }
-  // Sim time: /clock moves at real_time_factor x wall time, or one publish period per loop
-  // without waiting (as fast as possible) while the table runs; paused, at wall time, so that
-  // sim-time clients never wait on it.
+  // Sim time: the node drives /clock (simClockStep says how), ticking at every step.
   const ros::WallDuration period(1.0 / parameters_.publish_rate);
   ros::WallTime last = ros::WallTime::now();
   while (running())
   {
     const ros::WallTime wall = ros::WallTime::now();
-    bool paused = false;
-    {
-      std::lock_guard<std::mutex> lock(shared_.mutex);
-      paused = shared_.live->clock().paused();
-    }
-    const double factor = paused && shared_.clock_factor == 0 ? 1.0 : shared_.clock_factor.load();
-    advanceSimClock(factor == 0 ? ros::Duration(period.toSec()) : ros::Duration((wall - last).toSec() * factor));
+    const bool waits = advanceSimClock(wall - last, period);
     last = wall;
-    if (factor > 0)
+    if (waits)
       period.sleep();
   }
 }
@@ -190,18 +210,24 @@ void TableNode::raisePublishingPriority()
     ROS_DEBUG("cue_sim: no real-time priority for the publishing thread; it runs at the normal one");
 }
 
-void TableNode::advanceSimClock(const ros::Duration& by)
+bool TableNode::advanceSimClock(const ros::WallDuration& wall, const ros::WallDuration& period)
 {
-  if (by <= ros::Duration(0))
-    return;
   rosgraph_msgs::Clock clock;
+  ClockStep step;
   {
-    std::lock_guard<std::mutex> lock(shared_.mutex);
-    shared_.sim_now += by;
+    // The step is chosen and taken under one lock: a strike cannot land between a look at the
+    // resting table and a step of a thousand periods, which would skip its shot's frames.
+    std::lock_guard<PriorityInheritingMutex> lock(shared_.mutex);
+    const session::LiveTable& table = *shared_.live;
+    step = simClockStep(shared_.clock_factor, table.clock().paused(), table.motion().atRest(), wall, period);
+    if (step.by <= ros::Duration(0))
+      return step.waits;
+    shared_.sim_now += step.by;
     clock.clock = shared_.sim_now;
   }
   clock_publisher_.publish(clock);
   tick();
+  return step.waits;
 }
 
 void TableNode::tick()
@@ -215,7 +241,7 @@ void TableNode::tick()
   {
     // The stamp is taken under the lock, as the services take theirs: no request can come
     // between it and the table it shows.
-    std::lock_guard<std::mutex> lock(shared_.mutex);
+    std::lock_guard<PriorityInheritingMutex> lock(shared_.mutex);
     stamp = shared_.clock();
     if (stamp <= shared_.last_published)
       return;  // tf must never see the same stamp twice (TF_REPEATED_DATA)

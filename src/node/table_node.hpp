@@ -49,8 +49,9 @@ private:
   void tick();
   /// Without sim time: the calling (publishing) thread at a real-time priority, where granted.
   void raisePublishingPriority();
-  /// With use_sim_time: moves the node's /clock on by `by` and ticks there.
-  void advanceSimClock(const ros::Duration& by);
+  /// With use_sim_time: moves the node's /clock on by its step for `wall` elapsed (simClockStep)
+  /// and ticks there; true if the loop should wait a `period` before the next.
+  bool advanceSimClock(const ros::WallDuration& wall, const ros::WallDuration& period);
   void publishStaticFrames(const std::string& urdf_xml);
   /// ~markers, from the table as it is (call it holding the lock).
   void publishMarkers(const session::LiveTable& table);

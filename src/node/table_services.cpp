@@ -63,7 +63,7 @@ session::StrikeOutcome TableServices::strike(const session::Shot& shot, const ch
 {
   session::StrikeOutcome outcome;
   {
-    std::lock_guard<std::mutex> lock(shared_.mutex);
+    std::lock_guard<PriorityInheritingMutex> lock(shared_.mutex);
     outcome = shared_.live->strike(shot, toStamp(shared_.now()));
   }
   if (outcome.success)
@@ -92,7 +92,7 @@ session::StrikeOutcome TableServices::strikeWithCue(const physics::CueStick& cue
 {
   session::StrikeOutcome outcome;
   {
-    std::lock_guard<std::mutex> lock(shared_.mutex);
+    std::lock_guard<PriorityInheritingMutex> lock(shared_.mutex);
     outcome = shared_.live->strikeWithCue(cue, speed, toStamp(stamp ? *stamp : shared_.now()), aimed);
   }
   if (outcome.success)
@@ -130,7 +130,7 @@ bool TableServices::onRack(Rack::Request& request, Rack::Response& response)
     rack.positions.emplace_back(p.x, p.y);
   rack.jitter = request.jitter;
   rack.seed = request.seed;
-  std::lock_guard<std::mutex> lock(shared_.mutex);
+  std::lock_guard<PriorityInheritingMutex> lock(shared_.mutex);
   response.stamp = shared_.now();
   answer(shared_.live->rack(rack, toStamp(response.stamp)), response);
   return true;
@@ -138,14 +138,14 @@ bool TableServices::onRack(Rack::Request& request, Rack::Response& response)
 
 bool TableServices::onReset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response)
 {
-  std::lock_guard<std::mutex> lock(shared_.mutex);
+  std::lock_guard<PriorityInheritingMutex> lock(shared_.mutex);
   answer(shared_.live->reset(toStamp(shared_.now())), response);
   return true;
 }
 
 bool TableServices::onSetState(SetState::Request& request, SetState::Response& response)
 {
-  std::lock_guard<std::mutex> lock(shared_.mutex);
+  std::lock_guard<PriorityInheritingMutex> lock(shared_.mutex);
   response.stamp = shared_.now();
   answer(shared_.live->setState(toBallInputs(request.balls), toStamp(response.stamp)), response);
   return true;
@@ -153,7 +153,7 @@ bool TableServices::onSetState(SetState::Request& request, SetState::Response& r
 
 bool TableServices::onPlaceBall(PlaceBall::Request& request, PlaceBall::Response& response)
 {
-  std::lock_guard<std::mutex> lock(shared_.mutex);
+  std::lock_guard<PriorityInheritingMutex> lock(shared_.mutex);
   response.stamp = shared_.now();
   answer(shared_.live->placeBall(toBallInput(request.ball), toStamp(response.stamp)), response);
   return true;
@@ -161,7 +161,7 @@ bool TableServices::onPlaceBall(PlaceBall::Request& request, PlaceBall::Response
 
 bool TableServices::onRemoveBall(RemoveBall::Request& request, RemoveBall::Response& response)
 {
-  std::lock_guard<std::mutex> lock(shared_.mutex);
+  std::lock_guard<PriorityInheritingMutex> lock(shared_.mutex);
   response.stamp = shared_.now();
   answer(shared_.live->removeBall(request.ball_id, toStamp(response.stamp)), response);
   return true;
@@ -169,14 +169,14 @@ bool TableServices::onRemoveBall(RemoveBall::Request& request, RemoveBall::Respo
 
 bool TableServices::onPause(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response)
 {
-  std::lock_guard<std::mutex> lock(shared_.mutex);
+  std::lock_guard<PriorityInheritingMutex> lock(shared_.mutex);
   answer(shared_.live->pause(request.data, toStamp(shared_.now())), response);
   return true;
 }
 
 bool TableServices::onStep(Step::Request& request, Step::Response& response)
 {
-  std::lock_guard<std::mutex> lock(shared_.mutex);
+  std::lock_guard<PriorityInheritingMutex> lock(shared_.mutex);
   response.stamp = shared_.now();
   answer(shared_.live->step(request.duration, toStamp(response.stamp)), response);
   return true;
