@@ -185,10 +185,12 @@ class LiveTableEnv:
                 answer = self._call(ball=turn["called_ball"], pocket=pocket, push_out=turn["push_out"])
                 if not answer.success:
                     raise RuntimeError(f"{self.namespace}/call_shot refused the twin's call: {answer.message}")
-            self._send_strike(turn["strike"], turn["ball"])
+            struck = self._send_strike(turn["strike"], turn["ball"])
             self._shots += 1
-            # The referee has ruled and the table is ready for the next shot.
-            self._game_state.wait_for(lambda g, n=self._shots: g.shots >= n and not g.shot_in_progress, self.timeout)
+            # The referee has ruled and the table is ready for the next shot, in a game state
+            # stamped from the strike on: the last one seen may still be the last episode's game's.
+            self._game_state.wait_for(lambda g, n=self._shots: g.header.stamp >= struck and g.shots >= n
+                                      and not g.shot_in_progress, self.timeout)
         try:
             self._state.wait_for(lambda m: not m.moving and self._difference(m) is None, self.timeout)
         except TimeoutError:
