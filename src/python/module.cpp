@@ -87,12 +87,12 @@ std::shared_ptr<const Engine<double>> makeEngine(const std::string& table, const
   return std::make_shared<const Engine<double>>(model, paramsFrom(params, physics::tableDefaults(*model)), models);
 }
 
-/// A ball set by name ("pool", "carom", "snooker"), else carom's or pool's by the flag.
+/// A ball set by name (physics::kBallSetNames), else carom's or pool's by the flag.
 BallSet ballSetOf(bool carom, const std::string& name)
 {
   BallSet set = carom ? BallSet::Carom : BallSet::Pool;
   if (!name.empty() && !ballSetNamed(name, set))
-    throw std::invalid_argument("ball_set must be pool, carom or snooker; got '" + name + "'");
+    throw std::invalid_argument("ball_set must be " + physics::ballSetNameList() + "; got '" + name + "'");
   return set;
 }
 

@@ -17,25 +17,20 @@ BallSet ballSetFor(const physics::TableModel& table)
   return ballSetFor(!table.pockets().empty());
 }
 
+static_assert(static_cast<std::size_t>(BallSet::Snooker) + 1 == physics::kBallSetNames.size(),
+              "BallSet follows physics::kBallSetNames, one for one");
+
 const char* ballSetName(BallSet set)
 {
-  switch (set)
-  {
-    case BallSet::Carom:
-      return "carom";
-    case BallSet::Snooker:
-      return "snooker";
-    default:
-      return "pool";
-  }
+  return physics::kBallSetNames[static_cast<std::size_t>(set)];
 }
 
 bool ballSetNamed(const std::string& name, BallSet& set)
 {
-  for (const BallSet s : {BallSet::Pool, BallSet::Carom, BallSet::Snooker})
-    if (name == ballSetName(s))
+  for (std::size_t i = 0; i < physics::kBallSetNames.size(); ++i)
+    if (name == physics::kBallSetNames[i])
     {
-      set = s;
+      set = static_cast<BallSet>(i);
       return true;
     }
   return false;

@@ -147,8 +147,9 @@ private:
       fail("link 'balls' needs an <inertial> with a <mass>: the mass of one of the table's balls");
     physics::TableBalls balls{static_cast<const urdf::Sphere&>(*link->collision->geometry).radius, link->inertial->mass,
                               link->collision->name};
-    if (!balls.set.empty() && balls.set != "pool" && balls.set != "carom" && balls.set != "snooker")
-      fail("link 'balls': the collision's name is the set of balls, pool, carom or snooker; got '" + balls.set + "'");
+    if (!balls.set.empty() && !physics::isBallSetName(balls.set))
+      fail("link 'balls': the collision's name is the set of balls, " + physics::ballSetNameList() + "; got '" +
+           balls.set + "'");
     if (!(balls.radius > 0 && balls.mass > 0))
       fail("link 'balls': the sphere's radius and the mass must be positive, got " + std::to_string(balls.radius) +
            " m and " + std::to_string(balls.mass) + " kg");

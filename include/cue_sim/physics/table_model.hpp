@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <limits>
 #include <optional>
 #include <string>
@@ -59,10 +60,19 @@ struct TableBalls
 {
   double radius = 0;  ///< [m]
   double mass = 0;    ///< [kg]
-  /// The set they are, for pictures (scene/ball_colours.hpp): "pool", "carom" or "snooker";
-  /// empty: told by the table's pockets.
+  /// The set they are, for pictures (scene/ball_colours.hpp): one of kBallSetNames; empty: told
+  /// by the table's pockets.
   std::string set;
 };
+
+/// The sets of balls a table may name (TableBalls::set), declared once: the table loader checks a
+/// description's name against them, and the pictures' BallSet (scene/ball_colours.hpp) follows
+/// this order.
+constexpr std::array<const char*, 3> kBallSetNames = {"pool", "carom", "snooker"};
+/// Whether `name` is one of kBallSetNames.
+bool isBallSetName(const std::string& name);
+/// kBallSetNames for a message: "pool, carom or snooker".
+std::string ballSetNameList();
 
 /// How far the table reaches beyond the cloth when its description does not say: a 5 cm
 /// cushion and a 10 cm rail, as the tables in urdf/ (scripts/make_table_urdf.py).

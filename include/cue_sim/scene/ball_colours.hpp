@@ -17,6 +17,7 @@ struct Rgb
 /// The balls a table is played with: pool's numbered set; carom's three (0 the white, 1 the
 /// yellow, 2 the red); snooker's (0 the cue ball, 1-15 the reds, 16 yellow, 17 green, 18 brown,
 /// 19 blue, 20 pink, 21 black). Carom and snooker balls carry no numbers or stripes.
+/// In the order of physics::kBallSetNames, which names them.
 enum class BallSet
 {
   Pool,
@@ -27,7 +28,7 @@ enum class BallSet
 BallSet ballSetFor(bool table_has_pockets);
 /// The set the table's description names (its `balls` link, TableBalls::set), else by its pockets.
 BallSet ballSetFor(const physics::TableModel& table);
-/// "pool", "carom", "snooker".
+/// Its name in physics::kBallSetNames: "pool", "carom", "snooker".
 const char* ballSetName(BallSet set);
 /// The set of that name; false for none.
 bool ballSetNamed(const std::string& name, BallSet& set);

@@ -134,6 +134,22 @@ TableModel TableModel::pool(const std::string& name, double cloth_length, double
                     std::move(pockets));
 }
 
+bool isBallSetName(const std::string& name)
+{
+  for (const char* set : kBallSetNames)
+    if (name == set)
+      return true;
+  return false;
+}
+
+std::string ballSetNameList()
+{
+  std::string list;
+  for (std::size_t i = 0; i < kBallSetNames.size(); ++i)
+    list += (i == 0 ? "" : i + 1 == kBallSetNames.size() ? " or " : ", ") + std::string(kBallSetNames[i]);
+  return list;
+}
+
 TableModel TableModel::carom(const std::string& name, double cloth_length, double cloth_width)
 {
   const double hx = cloth_length / 2, hy = cloth_width / 2;
