@@ -29,6 +29,10 @@ add_library(cue_sim_physics
   ${CUE_SIM_ROOT}/src/physics/engine/table_geometry.cpp
   ${CUE_SIM_ROOT}/src/physics/engine/table_departure.cpp
   ${CUE_SIM_ROOT}/src/physics/engine/held_balls.cpp
+  # balls in sustained contact: where they touch, the contact equations, their integration
+  ${CUE_SIM_ROOT}/src/physics/supports/contact_geometry.cpp
+  ${CUE_SIM_ROOT}/src/physics/supports/contact_system.cpp
+  ${CUE_SIM_ROOT}/src/physics/supports/support_step.cpp
   # the event search: the simulation (and runs of one), its queue and grid, roots and contact
   # times, and the full scan it is checked against
   ${CUE_SIM_ROOT}/src/physics/search/simulation.cpp
@@ -41,8 +45,7 @@ add_library(cue_sim_physics
   ${CUE_SIM_ROOT}/src/physics/contacts/event_resolution.cpp
   ${CUE_SIM_ROOT}/src/physics/contacts/impact_group.cpp
   ${CUE_SIM_ROOT}/src/physics/contacts/sustained_contact.cpp
-  ${CUE_SIM_ROOT}/src/physics/contacts/support_hops.cpp
-  ${CUE_SIM_ROOT}/src/physics/contacts/support_slide.cpp
+  ${CUE_SIM_ROOT}/src/physics/contacts/support_groups.cpp
   # shots: aiming a cue, execution noise, batches on a thread pool
   ${CUE_SIM_ROOT}/src/physics/shots/cue_aim.cpp
   ${CUE_SIM_ROOT}/src/physics/shots/cue_sweep.cpp

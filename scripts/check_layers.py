@@ -14,6 +14,7 @@ from xml.sax.saxutils import escape, quoteattr
 PHYSICS_LAYERS = [
     ("models and table", ["models", "table"]),
     ("engine", ["engine"]),
+    ("supports", ["supports"]),
     ("contacts", ["contacts"]),
     ("search", ["search"]),
     ("shots", ["shots"]),

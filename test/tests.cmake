@@ -6,6 +6,7 @@ catkin_add_gtest(physics_tests
   test/physics/test_motion.cpp
   test/physics/test_slate_bounce.cpp
   test/physics/test_airborne.cpp
+  test/physics/test_resting_contact.cpp
   test/physics/test_orientation.cpp
   test/physics/test_collisions.cpp
   test/physics/test_cushion_models.cpp

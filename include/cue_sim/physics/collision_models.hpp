@@ -27,6 +27,10 @@ public:
   /// True for a model that needs both balls on the cloth (its friction under each): a pair with a
   /// ball in the air then meets by the default model instead (Engine::ballBallModelInAir).
   virtual bool needsCloth() const { return false; }
+  /// The Coulomb friction between two balls in sustained contact (one resting on, rolling or sliding
+  /// round the other: src/physics/supports/), where the slip is slow: the model's friction at zero
+  /// slip speed.
+  virtual S sustainedFriction(const PhysicsParams<S>& p) const = 0;
 };
 
 /// Resolves a ball-cushion impact. `normal` is the unit xy normal of the contact, pointing from
@@ -38,6 +42,10 @@ public:
   using Scalar = S;
   virtual ~CushionModel() = default;
   virtual void resolve(Ball<S>& ball, const Vec3<S>& normal, const PhysicsParams<S>& p) const = 0;
+  /// The Coulomb friction between a ball and the cushion in sustained contact (a ball resting on,
+  /// rolling or sliding round a nose's edge or a post's rim, or pressed on a face:
+  /// src/physics/supports/): the model's own friction coefficient at the cushion.
+  virtual S sustainedFriction(const PhysicsParams<S>& p) const = 0;
 };
 
 /// Resolves one impact of a ball coming down onto the slate: the ball is at it (z = R) with

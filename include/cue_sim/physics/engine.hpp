@@ -90,19 +90,26 @@ public:
   Ball<S> ballAt(const TableState<S>& state, std::size_t index, S t) const;
   /// Every ball at state.time.
   std::vector<Ball<S>> snapshot(const TableState<S>& state) const;
+  /// The balls' mechanical energy at time t [J]: kinetic, and the height's potential of a ball in the
+  /// air (mechanicalEnergy). A ball in sustained contact (Supported, Bearing) counts as at the start of
+  /// its current piece, the state the contact equations gave it: between steps it follows an
+  /// interpolant true to the contact tolerance, not to the energy. The energy never grows.
+  S energyAt(const TableState<S>& state, S t) const;
 
   /// Empty if the strike may be applied to the ball with this id in this state, else why not.
   std::string whyNotStrikable(const TableState<S>& state, int ball_id, const CueStrike<S>& strike) const;
   /// Applies a strike at state.time (check whyNotStrikable first; throws std::invalid_argument):
   /// the cue model's impulse, then the slate's answer to any downward part (the ball may leave
-  /// the cloth).
+  /// the cloth). A struck ball that bore one in the air (Motion::Bearing) lets every group in
+  /// sustained contact go.
   void strike(TableState<S>& state, int ball_id, const CueStrike<S>& strike) const;
   /// Lets fall the balls held in the air (Motion::Held) on state.balls[index], and any held on
   /// them in turn, at state.time. They are held again, a few events later, if their supports
   /// still hold them. Returns their indices. strike calls it for the struck ball.
   std::vector<int> letHeldBallsFallOff(TableState<S>& state, int index) const;
-  /// Lets every held ball fall at state.time (after an edit that may have moved or taken away
-  /// their supports, or new parameters). Returns their indices.
+  /// Lets every held ball fall at state.time, and every ball in sustained contact go back to its
+  /// own closed-form motion (after an edit that may have moved or taken away their supports, or new
+  /// parameters). Returns their indices.
   std::vector<int> letAllHeldBallsFall(TableState<S>& state) const;
 
   /// Empty if the state is valid on this table: finite numbers, unique ids, balls in play on

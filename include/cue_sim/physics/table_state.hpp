@@ -58,6 +58,10 @@ struct TableState
       c.v = b.v.template cast<T>();
       c.w = b.w.template cast<T>();
       c.pocket = b.pocket;
+      c.piece.a = b.piece.a.template cast<T>();
+      c.piece.alpha = b.piece.alpha.template cast<T>();
+      c.piece.v_end = b.piece.v_end.template cast<T>();
+      c.piece.until = T(b.piece.until);
       out.balls.push_back(c);
     }
     return out;
@@ -73,7 +77,11 @@ TableState<S> atTimeZero(TableState<S> state)
   state.time = state.event_time = S(0);
   state.events_this_instant = 0;
   for (auto& b : state.balls)
+  {
+    if (b.supported())
+      b.piece.until -= b.time;  // a piece keeps its length
     b.time = S(0);
+  }
   return state;
 }
 

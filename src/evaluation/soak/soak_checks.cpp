@@ -41,13 +41,9 @@ public:
   void look(const TableState<double>& state, double t, const char* when, std::vector<Violation>& found)
   {
     balls_.clear();
-    double energy = 0;
     for (std::size_t i = 0; i < state.balls.size(); ++i)
-    {
       balls_.push_back(engine_.ballAt(state, i, t));
-      const Ball<double>& b = balls_.back();
-      energy += physics::mechanicalEnergy(b, engine_.params());
-    }
+    const double energy = engine_.energyAt(state, t);
     for (const Ball<double>& b : balls_)
       if (!physics::isFinite(b.r) || !physics::isFinite(b.v) || !physics::isFinite(b.w))
         note(found, "nan", describe(when, t) + ": ball " + std::to_string(b.id) + " is not finite");

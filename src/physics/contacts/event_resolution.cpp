@@ -5,7 +5,6 @@
 
 #include "cue_sim/physics/motion.hpp"
 #include "physics/contacts/event_resolver.hpp"
-#include "physics/contacts/support_hops.hpp"
 #include "physics/engine/held_balls.hpp"
 #include "physics/engine/table_departure.hpp"
 #include "physics/models/ball_table/slate_landing.hpp"
@@ -20,6 +19,14 @@ void resolveEvent(const Engine<S>& engine, TableState<S>& state, const Event<S>&
   EventResolver<S> resolver(engine, state, context);
   resolver.resolve(event);
   resolver.wakeHeldBalls(event.time);
+  resolver.restepTouchedGroups(event.time);
+}
+
+template <typename S>
+void resolveSupportStep(const Engine<S>& engine, TableState<S>& state, S time, const EventContext<S>& context)
+{
+  EventResolver<S> resolver(engine, state, context);
+  resolver.stepGroup(time, context.index);
 }
 
 template <typename S>
@@ -33,9 +40,11 @@ void EventResolver<S>::resolve(const Event<S>& event)
   ball = evolve(ball, event.time, params_);
   changed(context_.index);
   const long allowance = engine_.limits().collapse_events;
-  // A ball in the air is no part of a collapse on the cloth (its pair is resolved as it comes).
+  // A ball in the air, or in sustained contact with one, is no part of a collapse on the cloth (its
+  // pair is resolved as it comes).
+  const auto offTheCloth = [](const Ball<S>& b) { return b.airborne() || b.supported(); };
   const bool in_the_air =
-      ball.airborne() || (context_.other_index >= 0 && state_.balls[context_.other_index].airborne());
+      offTheCloth(ball) || (context_.other_index >= 0 && offTheCloth(state_.balls[context_.other_index]));
   if (at_this_instant > allowance && !in_the_air &&
       (event.kind == EventKind::BallBall || event.kind == EventKind::BallCushion ||
        event.kind == EventKind::BallCircle))
@@ -55,12 +64,14 @@ void EventResolver<S>::resolve(const Event<S>& event)
       resolveWall(ball, event);
       break;
     case EventKind::Pocketed:
+      dissolveGroup(context_.index, event.time);
       pocketBall(ball, event.obstacle);
       break;
     case EventKind::BallSlate:
       landOnSlate(ball, engine_.ballTableModel(), params_);
       break;
     case EventKind::OffTable:
+      dissolveGroup(context_.index, event.time);
       leaveTable(ball);
       break;
     default:
@@ -79,9 +90,9 @@ void EventResolver<S>::resolveBallBall(const Event<S>& event)
   // A pressed pair is joined (with its cluster, held by any wall it touches); any other contact
   // is an impact of the touching group. An event must change something, or it is found again
   // at the same instant forever.
-  if (ball.airborne() || other.airborne())
+  if (ball.airborne() || other.airborne() || ball.supported() || other.supported())
   {
-    resolveAirbornePair(ball, other);
+    resolvePairOffTheCloth(event);
     return;
   }
   const Vec3<S> ball_before = ball.v, other_before = other.v;
@@ -106,82 +117,39 @@ void EventResolver<S>::resolveBallBall(const Event<S>& event)
 }
 
 template <typename S>
-void EventResolver<S>::resolveAirbornePair(Ball<S>& a, Ball<S>& b)
+void EventResolver<S>::resolvePairOffTheCloth(const Event<S>& event)
 {
+  const int ia = context_.index, ib = context_.other_index;
+  // An event within their pieces changes a group in sustained contact: brought to it first.
+  cutGroup(ia, event.time);
+  cutGroup(ib, event.time);
+  Ball<S>& a = state_.balls[ia];
+  Ball<S>& b = state_.balls[ib];
   const Vec3<S> n = (b.r - a.r).normalized();
-  if (a.held() != b.held())
+  // Slow enough, the contact lasts: the group's equations take it (they stop what still closes).
+  // Faster, an impact, in which each ball's group comes apart.
+  if (meetSlowly((a.v - b.v).dot(n)))
   {
-    Ball<S>& other = a.held() ? b : a;
-    const Vec3<S> up = a.held() ? n : Vec3<S>(-n);  // from the held ball to the other
-    if (other.airborne() ? restOnHeldBall(other, a.held() ? context_.other_index : context_.index, up)
-                         : pressOnHeldBall(other, Vec3<S>(-up)))
-      return;
+    stepGroup(event.time, ia);
+    return;
   }
-  for (Ball<S>* ball : {&a, &b})
-    if (ball->held())
-      ball->motion = Motion::Airborne;  // met by a ball: it takes part in the impact, free
+  dissolveGroup(ia, event.time);
+  dissolveGroup(ib, event.time);
+  for (Ball<S>* held : {&a, &b})
+    if (held->held())
+      held->motion = Motion::Airborne;  // met by a ball: it takes part in the impact, free
   const bool a_on_cloth = !a.airborne(), b_on_cloth = !b.airborne();
-  // One resting on the other, pressed on by gravity, closing slower than a hop: a sustained
-  // contact, met without loss (support_hops.hpp). Else an impact.
-  if (a_on_cloth == b_on_cloth)
-    impactInAir(a, b, n);
-  else
-  {
-    Ball<S>& flying = a_on_cloth ? b : a;
-    Ball<S>& support = a_on_cloth ? a : b;
-    const Vec3<S> up = a_on_cloth ? n : Vec3<S>(-n);
-    if (!bounceOffBallOnCloth(flying, support, up))
-    {
-      impactInAir(a, b, n);
-      const int flying_index = a_on_cloth ? context_.other_index : context_.index;
-      passImpactOnThroughCloth(state_.event_time, flying_index, a_on_cloth ? context_.index : context_.other_index);
-    }
-    leaveBallOnCloth(flying, support, up, a_on_cloth ? context_.other_index : context_.index);
-  }
-  for (Ball<S>* ball : {&a, &b})
+  impactInAir(a, b, n);
+  if (a_on_cloth != b_on_cloth)
+    passImpactOnThroughCloth(state_.event_time, a_on_cloth ? ib : ia, a_on_cloth ? ia : ib);
+  for (Ball<S>* one : {&a, &b})
   {
     // A ball coming down from the air meets the slate anew.
-    if (ball->r.z() - params_.ball_radius <= onClothHeight(params_.ball_radius) && ball->v.z() < S(0))
-      landOnSlate(*ball, engine_.ballTableModel(), params_);
+    if (one->r.z() - params_.ball_radius <= onClothHeight(params_.ball_radius) && one->v.z() < S(0))
+      landOnSlate(*one, engine_.ballTableModel(), params_);
     else
-      settleMotion(*ball, params_.ball_radius);
+      settleMotion(*one, params_.ball_radius);
   }
-}
-
-template <typename S>
-bool EventResolver<S>::restOnHeldBall(Ball<S>& flying, int index, const Vec3<S>& up)
-{
-  // A ball held in the air is as fixed as a nose to a ball that comes to rest on it: the held
-  // ball's own supports take the weight.
-  if (flying.held() || !(up.z() > S(0)) || !(-flying.v.dot(up) < S(kSustainedContactSpeed)))
-    return false;
-  bounceOffFixedSupport(flying, up);
-  if (!hopOffFixedSupport(flying, up) && !slideDownSupports(index))
-    holdInTheAir(index);
-  settleMotion(flying, params_.ball_radius);
-  return true;
-}
-
-template <typename S>
-bool EventResolver<S>::pressOnHeldBall(Ball<S>& on_cloth, const Vec3<S>& up)
-{
-  // As at a cushion's face (resolveWall): the closing stopped, a slip into it turned into spin,
-  // and a pressing within rounding parted by a few ulps. The slate takes the vertical part.
-  const Vec3<S> into = Vec3<S>(up.x(), up.y(), S(0)).normalized();
-  const S closing = on_cloth.v.dot(into);
-  if (!(closing < S(kSustainedContactSpeed)) || !(into.squaredNorm() > S(0)))
-    return false;
-  const Vec3<S> v_before = on_cloth.v, w_before = on_cloth.w;
-  if (closing > S(0))
-    on_cloth.v -= closing * into;
-  settleMotion(on_cloth, params_.ball_radius);
-  holdAgainstWall(on_cloth, Vec3<S>(-into));
-  if (on_cloth.v == v_before && on_cloth.w == w_before)
-  {
-    on_cloth.v -= roundingSpeed(on_cloth.v.norm()) * into;
-    settleMotion(on_cloth, params_.ball_radius);
-  }
-  return true;
 }
 
 template <typename S>
@@ -197,7 +165,8 @@ void EventResolver<S>::wakeHeldBalls(S time)
   for (std::size_t k = changed_from_; k < list.size(); ++k)
   {
     const int index = list[k];
-    if (!state_.balls[index].translating())
+    // A ball in a group touches the held balls it moves with: they are in its group.
+    if (!state_.balls[index].translating() || state_.balls[index].supported())
       continue;
     nearBalls(evolve(state_.balls[index], time, params_).r.template head<2>(),
               S(2) * params_.ball_radius + S(kHeldReach), near);
@@ -205,6 +174,33 @@ void EventResolver<S>::wakeHeldBalls(S time)
     letHeldBallsFall(state_, index, time, params_, near, fallen);
     for (int j : fallen)
       changed(j);  // appended to `list`: looked around in turn
+  }
+}
+
+template <typename S>
+void EventResolver<S>::restepTouchedGroups(S time)
+{
+  // A group's step took the balls touching it as they then moved: one that an event changed since
+  // (struck, stopped, turned) is met by the group's next step, taken now.
+  const std::vector<int>& list = context_.changed ? *context_.changed : changed_here_;
+  const std::size_t end = list.size();
+  const S reach = S(2) * params_.ball_radius + supportTouch(params_);
+  std::vector<int> near;
+  for (std::size_t k = changed_from_; k < end; ++k)
+  {
+    const int index = list[k];
+    const Ball<S>& ball = state_.balls[static_cast<std::size_t>(index)];
+    if (!ball.inPlay() || ball.supported())
+      continue;
+    const Vec3<S> r = evolve(ball, time, params_).r;
+    nearBalls(r.template head<2>(), reach, near);
+    for (int j : near)
+    {
+      const Ball<S>& other = state_.balls[static_cast<std::size_t>(j)];
+      if (other.supported() && other.time < time && time < other.piece.until &&
+          (stateAt(j, time).r - r).norm() <= reach)
+        stepGroup(time, j);
+    }
   }
 }
 
@@ -242,17 +238,6 @@ void EventResolver<S>::impactInAir(Ball<S>& a, Ball<S>& b, const Vec3<S>& n)
     b.v += S(0.5) * part * n;
   }
   keepOnCloth();
-}
-
-template <typename S>
-void EventResolver<S>::leaveBallOnCloth(Ball<S>& flying, Ball<S>& support, const Vec3<S>& up, int flying_index)
-{
-  // Gravity presses the flying ball on: a full hop paid by their sliding, else by a slide down
-  // the supports, else the largest hop their sliding pays for.
-  const bool at_rest_on_it = (flying.v - support.v).norm() < S(kSettleSpeed);
-  if (!hopOffBallOnCloth(flying, support, up, S(kSettleSpeed), S(kSettleSpeed)) &&
-      !(at_rest_on_it && (slideDownSupports(flying_index) || holdInTheAir(flying_index))))
-    hopOffBallOnCloth(flying, support, up, S(0.5 * kSettleSpeed), S(kSmallestHop));
 }
 
 template <typename S>
@@ -295,15 +280,14 @@ bool EventResolver<S>::resolveWallTop(Ball<S>& ball, const Event<S>& event)
   }
   const Vec3<S> normal = Vec3<S>(out.x(), out.y(), above).normalized();
   const S approach = ball.v.dot(normal);
-  if (!bounceOffFixedSupport(ball, normal))  // resting on it, a sustained contact; else an impact
+  // Resting on it, or meeting it slowly: a sustained contact, which the contact equations follow.
+  if (meetSlowly(-approach))
   {
-    if (approach < S(0))
-      ball.v -= (S(1) + params_.e_cushion) * approach * normal;
-    else
-      ball.v += roundingSpeed(ball.v.norm()) * normal;  // closing within rounding: moved off
+    stepGroup(event.time, context_.index);
+    return true;
   }
-  if (!hopOffFixedSupport(ball, normal) && !slideDownSupports(context_.index))
-    holdInTheAir(context_.index);
+  dissolveGroup(context_.index, event.time);
+  ball.v -= (S(1) + params_.e_cushion) * approach * normal;
   settleMotion(ball, params_.ball_radius);
   return true;
 }
@@ -311,8 +295,23 @@ bool EventResolver<S>::resolveWallTop(Ball<S>& ball, const Event<S>& event)
 template <typename S>
 void EventResolver<S>::resolveWall(Ball<S>& ball, const Event<S>& event)
 {
+  cutGroup(context_.index, event.time);
   if (resolveWallTop(ball, event))
     return;
+  if (ball.supported())
+  {
+    // A ball of a group meeting a cushion's face or a post's side: slowly, the group's equations
+    // take the contact; faster, an impact, in which its group comes apart.
+    const Vec2<S> n2 = event.kind == EventKind::BallCushion
+                           ? geometry_.segments[event.obstacle].normal
+                           : (ball.r.template head<2>() - geometry_.circles[event.obstacle].centre).normalized();
+    if (meetSlowly(-ball.v.template head<2>().dot(n2)))
+    {
+      stepGroup(event.time, context_.index);
+      return;
+    }
+    dissolveGroup(context_.index, event.time);
+  }
   const Vec2<S> n = event.kind == EventKind::BallCushion
                         ? geometry_.segments[event.obstacle].normal
                         : (ball.r.template head<2>() - geometry_.circles[event.obstacle].centre).normalized();
@@ -374,6 +373,9 @@ template void resolveEvent(const Engine<double>&, TableState<double>&, const Eve
                            const EventContext<double>&);
 template void resolveEvent(const Engine<long double>&, TableState<long double>&, const Event<long double>&,
                            const EventContext<long double>&);
+template void resolveSupportStep(const Engine<double>&, TableState<double>&, double, const EventContext<double>&);
+template void resolveSupportStep(const Engine<long double>&, TableState<long double>&, long double,
+                                 const EventContext<long double>&);
 
 }  // namespace physics
 }  // namespace cue_sim

@@ -37,5 +37,10 @@ struct EventContext
 template <typename S>
 void resolveEvent(const Engine<S>& engine, TableState<S>& state, const Event<S>& event, const EventContext<S>& context);
 
+/// The next step of the group in sustained contact of ball context.index, whose piece ends at `time`
+/// (src/physics/contacts/support_groups.cpp): not an event, but it changes the group's balls.
+template <typename S>
+void resolveSupportStep(const Engine<S>& engine, TableState<S>& state, S time, const EventContext<S>& context);
+
 }  // namespace physics
 }  // namespace cue_sim

@@ -1,7 +1,7 @@
 // The parts of resolving one event (internal to src/physics/contacts/): an impact of a touching
-// group (impact_group.cpp), sustained contact of balls and walls (sustained_contact.cpp), a ball
-// at rest on its supports in the air (support_slide.cpp), and the event itself, pocketing and
-// neighbours (event_resolution.cpp).
+// group (impact_group.cpp), sustained contact of balls and walls on the cloth (sustained_contact.cpp),
+// groups of balls in sustained contact in the air moved by the contact equations (support_groups.cpp),
+// and the event itself, pocketing and neighbours (event_resolution.cpp).
 #pragma once
 
 #include <vector>
@@ -10,6 +10,7 @@
 #include "physics/contacts/event_resolution.hpp"
 #include "physics/engine/table_geometry.hpp"
 #include "physics/models/ball_table/slate_landing.hpp"
+#include "physics/supports/contact_geometry.hpp"
 
 namespace cue_sim
 {
@@ -106,26 +107,18 @@ public:
   void resolve(const Event<S>& event);
   /// Lets fall every ball held in the air that a ball this event changed touches.
   void wakeHeldBalls(S time);
+  /// Takes the next step now of every group in sustained contact touching a ball this event changed.
+  void restepTouchedGroups(S time);
 
 private:
   void resolveBallBall(const Event<S>& event);
-  /// A pair of which at least one ball is in the air: a sustained contact or an impact, then any
-  /// ball driven into the slate lands on it.
-  void resolveAirbornePair(Ball<S>& a, Ball<S>& b);
+  /// A pair of which at least one ball is in the air or moved by the contact equations: slower than
+  /// kSettleSpeed, a sustained contact (their group's next step); else an impact, then any ball
+  /// driven into the slate lands on it.
+  void resolvePairOffTheCloth(const Event<S>& event);
   /// The model's impulse along the line of centres `n` (from a to b) in three dimensions, a ball
   /// on the cloth kept on it.
   void impactInAir(Ball<S>& a, Ball<S>& b, const Vec3<S>& n);
-  /// A flying ball left on a ball on the cloth slower than a hop along `up` (from the support to
-  /// it) hopped off it (support_hops.hpp).
-  void leaveBallOnCloth(Ball<S>& flying, Ball<S>& support, const Vec3<S>& up, int flying_index);
-  /// A ball in the air (state_.balls[index]) at rest on a held ball or coming to rest on it
-  /// (`up` from the held ball to it): met as on a fixed support, hopped off, slid down or held.
-  /// False if it meets the held ball faster (an impact, which sets the held ball free).
-  bool restOnHeldBall(Ball<S>& flying, int index, const Vec3<S>& up);
-  /// A ball on the cloth meeting a held ball (`up` from it to the held ball) slower than
-  /// kSustainedContactSpeed: the held ball stands as a wall would, its supports taking the push.
-  /// False if it meets it faster (an impact, which sets the held ball free).
-  bool pressOnHeldBall(Ball<S>& on_cloth, const Vec3<S>& up);
   void resolveWall(Ball<S>& ball, const Event<S>& event);
   /// A ball in the air above the wall's top meets its nose's edge or its post's rim: true if so
   /// (and resolved).
@@ -143,35 +136,30 @@ private:
   /// True if the ball cannot be within `distance` of `point` (xy) at `time`: a cheap bound.
   bool cannotReach(const Ball<S>& ball, const Vec3<S>& point, S distance, S time) const;
 
-  // support_slide.cpp
-  /// What a ball touches: its outward normal, and the ball's index (-1: the slate or a wall).
-  struct Support
-  {
-    Vec3<S> normal;
-    int ball;
-  };
-  /// Everything `ball` (state_.balls[index] at some instant) touches then, and the smallest gap
-  /// to anything else it is near.
-  void supportsOf(const Ball<S>& ball, int index, std::vector<Support>& supports, S& nearest) const;
-  /// A ball in the air left at rest on its supports, pressed on: slid down them (hopping off) or,
-  /// held, pushing the balls on the cloth among them apart. False if neither can be done.
-  bool slideDownSupports(int index);
-  bool hopDownSupports(Ball<S>& ball, const std::vector<Support>& supports, const Vec3<S>& down, S nearest);
-  bool spreadSupports(int index, const std::vector<Support>& supports, const Vec3<S>& down, S nearest);
-  /// Whether `support` is a ball on the cloth moving out from under `ball` (moving, and not
-  /// closing on it).
-  bool movingAway(const Support& support, const Ball<S>& ball) const;
-  /// Held by its supports only with those moving away among them: slid down after them.
-  bool slideAfterMovingSupports(int index, const std::vector<Support>& supports, S nearest);
-  /// The way a ball on the cloth (state_.balls[pushed_index], `pushed` now) pushed along
-  /// `radial` by the ball `by` above it can go: `radial`, or along the cushion faces it is
-  /// against. False if a ball, a nose or a post holds it.
-  bool freeWayOut(const Ball<S>& pushed, int pushed_index, int by, const Vec2<S>& radial, Vec2<S>& out) const;
-  /// A ball in the air at rest (slower than kSettleSpeed) with no way down that leaves its
-  /// supports (the slate, walls, balls in the air, balls on the cloth at rest or closing on it;
-  /// not those moving out from under it): held there (Motion::Held), its motion stopped. False
-  /// otherwise.
-  bool holdInTheAir(int index);
+public:
+  // support_groups.cpp: balls in sustained contact (doc/physics.md, "Resting contact")
+  /// The group of ball `seed` takes its next step from `time` (its piece ends then, or an event
+  /// changed it): the balls touching it are gathered, what of them still closes is stopped, the
+  /// contact equations' modes are chosen, and the balls they press on move by the next integrated
+  /// step, come to rest (Held in the air, Stationary on the cloth), or go back to their own
+  /// closed-form motion.
+  void stepGroup(S time, int seed);
+
+private:
+  /// A ball's state at `time` as a step starts from it: along its path, and at the end of a piece
+  /// the velocity the contact equations gave it there.
+  Ball<S> stateAt(int index, S time) const;
+  /// The balls moved by the contact equations touching ball `index` or each other, transitively,
+  /// at `time` (ball `index` first, if it is one).
+  std::vector<int> supportedGroupOf(int index, S time);
+  /// Brings the group of ball `index` to `time` along its pieces (an event within them changes it).
+  void cutGroup(int index, S time);
+  /// Every ball of the group of ball `index` back to its own closed-form motion at `time` (an impact
+  /// among them, a pocket, a ball leaving the table).
+  void dissolveGroup(int index, S time);
+  /// Whether two bodies meet slowly enough for a sustained contact: the contact lasts (about 0.2 ms
+  /// for billiard balls) longer than a bounce at kSettleSpeed would (Luding and McNamara's TC model).
+  static bool meetSlowly(S closing) { return closing < S(kSettleSpeed); }
 
   // impact_group.cpp
   /// Resolves a ball-ball impact together with every ball touching the pair, and the cushions

@@ -54,6 +54,19 @@ std::vector<Ball<S>> Engine<S>::snapshot(const TableState<S>& state) const
 }
 
 template <typename S>
+S Engine<S>::energyAt(const TableState<S>& state, S t) const
+{
+  S energy = S(0);
+  for (std::size_t i = 0; i < state.balls.size(); ++i)
+  {
+    const Ball<S>& b = state.balls[i];
+    if (b.inPlay())
+      energy += mechanicalEnergy(b.supported() ? b : ballAt(state, i, t), params_);
+  }
+  return energy;
+}
+
+template <typename S>
 std::string Engine<S>::whyNotStrikable(const TableState<S>& state, int ball_id, const CueStrike<S>& strike) const
 {
   const int index = state.indexOf(ball_id);
@@ -73,6 +86,13 @@ void Engine<S>::strike(TableState<S>& state, int ball_id, const CueStrike<S>& st
   const std::string why = whyNotStrikable(state, ball_id, strike);
   if (!why.empty())
     throw std::invalid_argument(why);
+  // A ball bearing one in the air is struck out of its group: every group comes apart, and forms
+  // again at its next contacts.
+  if (state.balls[state.indexOf(ball_id)].supported())
+  {
+    std::vector<int> released;
+    releaseSupportedBalls(state, state.time, params_, released);
+  }
   Ball<S>& ball = state.balls[state.indexOf(ball_id)];
   ball = evolve(ball, state.time, params_);
   cue_->strike(ball, strike, params_);
@@ -100,6 +120,7 @@ template <typename S>
 std::vector<int> Engine<S>::letAllHeldBallsFall(TableState<S>& state) const
 {
   std::vector<int> fallen;
+  releaseSupportedBalls(state, state.time, params_, fallen);
   for (std::size_t j = 0; j < state.balls.size(); ++j)
   {
     Ball<S>& ball = state.balls[j];

@@ -25,9 +25,29 @@ void letHeldBallsFall(TableState<S>& state, int mover, S time, const PhysicsPara
   }
 }
 
+template <typename S>
+void releaseSupportedBalls(TableState<S>& state, S time, const PhysicsParams<S>& params, std::vector<int>& released)
+{
+  for (std::size_t j = 0; j < state.balls.size(); ++j)
+  {
+    Ball<S>& ball = state.balls[j];
+    if (!ball.supported())
+      continue;
+    const S until = ball.piece.until;
+    const Vec3<S> v_end = ball.piece.v_end;
+    ball = evolve(ball, time, params);
+    if (!(time < until))
+      ball.v = v_end;
+    ball.motion = Motion::Airborne;  // settled: in the air, or on the cloth
+    settleMotion(ball, params.ball_radius);
+    released.push_back(static_cast<int>(j));
+  }
+}
+
 #define CUE_SIM_INSTANTIATE_HELD_BALLS(S)                                                                              \
   template void letHeldBallsFall(TableState<S>&, int, S, const PhysicsParams<S>&, const std::vector<int>&,             \
-                                 std::vector<int>&);
+                                 std::vector<int>&);                                                                   \
+  template void releaseSupportedBalls(TableState<S>&, S, const PhysicsParams<S>&, std::vector<int>&);
 CUE_SIM_INSTANTIATE_HELD_BALLS(double)
 CUE_SIM_INSTANTIATE_HELD_BALLS(long double)
 

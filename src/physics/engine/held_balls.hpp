@@ -13,8 +13,8 @@ namespace cue_sim
 {
 namespace physics
 {
-/// A held ball within this [m] of touching a ball that moves falls: a support's gap, plus the
-/// longest slide down the supports (support_slide.cpp) that may have opened it.
+/// A held ball within this [m] of touching a ball that moves falls: a support's gap, a few contact
+/// tolerances (supportTouch) at most, with room to spare.
 constexpr double kHeldReach = 4e-6;
 
 /// Lets every held ball among `candidates` (indices into `state.balls`) that touches
@@ -23,6 +23,12 @@ constexpr double kHeldReach = 4e-6;
 template <typename S>
 void letHeldBallsFall(TableState<S>& state, int mover, S time, const PhysicsParams<S>& params,
                       const std::vector<int>& candidates, std::vector<int>& fallen);
+
+/// Every ball moved by the contact equations (Motion::Supported, Motion::Bearing) back to its own
+/// closed-form motion at `time` (after an edit, which may have moved or taken away what they touch;
+/// their groups form again at their next contacts). Appends their indices to `released`.
+template <typename S>
+void releaseSupportedBalls(TableState<S>& state, S time, const PhysicsParams<S>& params, std::vector<int>& released);
 
 }  // namespace physics
 }  // namespace cue_sim

@@ -29,6 +29,10 @@ const char* motionName(Motion motion)
       return "off_table";
     case Motion::Held:
       return "held";
+    case Motion::Supported:
+      return "supported";
+    case Motion::Bearing:
+      return "bearing";
   }
   return "unknown";
 }
@@ -57,6 +61,7 @@ void settleMotion(Ball<S>& ball, S radius)
 {
   if (!ball.inPlay() || (ball.held() && ball.v == Vec3<S>::Zero() && ball.w == Vec3<S>::Zero()))
     return;
+  ball.piece = SupportPiece<S>();  // a free motion: the contact equations no longer move it
   if (ball.r.z() - radius > onClothHeight(radius) || ball.v.z() > zeroSpeed<S>())
   {
     ball.motion = Motion::Airborne;
@@ -104,6 +109,9 @@ S timeToTransition(const Ball<S>& ball, const PhysicsParams<S>& p)
       break;
     case Motion::Airborne:
       return timeToHeight(ball.r.z(), ball.v.z(), p.ball_radius, p.gravity);
+    case Motion::Supported:
+    case Motion::Bearing:
+      return std::max(ball.piece.until - ball.time, S(0));  // the piece's end
     default:
       return infinity<S>();
   }
@@ -139,6 +147,14 @@ Ball<S> evolve(const Ball<S>& ball, S t, const PhysicsParams<S>& p)
     // In the air the spin is carried unchanged (no drag: flight.hpp says why).
     out.r = flightPosition(ball.r, ball.v, dt, p.gravity);
     out.v = flightVelocity(ball.v, dt, p.gravity);
+    return out;
+  }
+  if (ball.supported())
+  {
+    // Along the piece the contact equations gave it (SupportPiece).
+    out.r = ball.r + dt * (ball.v + S(0.5) * dt * ball.piece.a);
+    out.v = ball.v + dt * ball.piece.a;
+    out.w = ball.w + dt * ball.piece.alpha;
     return out;
   }
   out.w.z() = decayedSpin(ball.w.z(), dt, p);
@@ -192,6 +208,14 @@ Trajectory<S> trajectoryFrom(const Ball<S>& ball, S t_base, const PhysicsParams<
   }
   else if (now.motion == Motion::Held)
     traj.h0 = now.r.z() - p.ball_radius;
+  else if (now.supported())
+  {
+    traj.c1 = now.v.template head<2>();
+    traj.c2 = S(0.5) * now.piece.a.template head<2>();
+    traj.h0 = now.r.z() - p.ball_radius;
+    traj.h1 = now.v.z();
+    traj.h2 = S(0.5) * now.piece.a.z();
+  }
   return traj;
 }
 

@@ -21,8 +21,9 @@ template <typename S>
 class AirborneWallSearch
 {
 public:
-  AirborneWallSearch(const Trajectory<S>& path, S base, const TableGeometry<S>& geometry, S R, Candidate<S>& first)
-    : p_(path), base_(base), g_(geometry), R_(R), first_(first)
+  AirborneWallSearch(const Trajectory<S>& path, S base, const TableGeometry<S>& geometry, S R, Candidate<S>& first,
+                     const std::vector<WallTouch>* touching)
+    : p_(path), base_(base), g_(geometry), R_(R), first_(first), touching_(touching)
   {
   }
 
@@ -39,9 +40,11 @@ public:
     if (!clear)
     {
       for (std::size_t k = 0; k < g_.segments.size(); ++k)
-        segment(g_.segments[k], k);
+        if (!touches(k, false))
+          segment(g_.segments[k], k);
       for (std::size_t k = 0; k < g_.circles.size(); ++k)
-        post(g_.circles[k], k);
+        if (!touches(k, true))
+          post(g_.circles[k], k);
     }
     for (std::size_t k = 0; k < g_.pockets.size(); ++k)
       pocket(g_.pockets[k], k);
@@ -49,6 +52,16 @@ public:
 
 private:
   using Segment = typename TableGeometry<S>::Segment;
+
+  bool touches(std::size_t k, bool post) const
+  {
+    if (!touching_)
+      return false;
+    return std::any_of(touching_->begin(), touching_->end(), [&](const WallTouch& w) {
+      const bool is_post = w.surface == Surface::PostSide || w.surface == Surface::Rim;
+      return is_post == post && w.index == static_cast<int>(k);
+    });
+  }
   using Circle = typename TableGeometry<S>::Circle;
 
   S limit() const
@@ -292,20 +305,21 @@ private:
   const TableGeometry<S>& g_;
   const S R_;
   Candidate<S>& first_;
+  const std::vector<WallTouch>* touching_;
 };
 }  // namespace
 
 template <typename S>
 void findAirborneWallEvents(const Trajectory<S>& path, S base, const TableGeometry<S>& geometry, S ball_radius,
-                            Candidate<S>& first)
+                            Candidate<S>& first, const std::vector<WallTouch>* touching)
 {
-  AirborneWallSearch<S>(path, base, geometry, ball_radius, first).run();
+  AirborneWallSearch<S>(path, base, geometry, ball_radius, first, touching).run();
 }
 
 template void findAirborneWallEvents(const Trajectory<double>&, double, const TableGeometry<double>&, double,
-                                     Candidate<double>&);
+                                     Candidate<double>&, const std::vector<WallTouch>*);
 template void findAirborneWallEvents(const Trajectory<long double>&, long double, const TableGeometry<long double>&,
-                                     long double, Candidate<long double>&);
+                                     long double, Candidate<long double>&, const std::vector<WallTouch>*);
 
 }  // namespace physics
 }  // namespace cue_sim

@@ -13,10 +13,11 @@ namespace cue_sim
 namespace physics
 {
 /// Lowers `first` to the ball's earliest meeting with a cushion, jaw or pocket, or flight over a
-/// cushion, before it: `path` about `base`, for a ball in the air.
+/// cushion, before it: `path` about `base`, for a ball in the air. The cushions and posts in
+/// `touching` (those a ball in sustained contact touches, its group's to follow) are left out.
 template <typename S>
 void findAirborneWallEvents(const Trajectory<S>& path, S base, const TableGeometry<S>& geometry, S ball_radius,
-                            Candidate<S>& first);
+                            Candidate<S>& first, const std::vector<WallTouch>* touching = nullptr);
 
 }  // namespace physics
 }  // namespace cue_sim

@@ -69,14 +69,16 @@ template <typename S>
 class OwnEventSearch
 {
 public:
-  OwnEventSearch(const Trajectory<S>& path, S base, Candidate<S>& first) : path_(path), base_(base), first_(first)
+  /// `touching`: the walls a ball in sustained contact touches, its group's to follow (or null).
+  OwnEventSearch(const Trajectory<S>& path, S base, Candidate<S>& first, const std::vector<WallTouch>* touching)
+    : path_(path), base_(base), first_(first), touching_(touching)
   {
     sweep();
   }
 
   void segment(const typename TableGeometry<S>::Segment& seg, std::size_t k, S R)
   {
-    if (outOfReach(seg))
+    if (outOfReach(seg) || touches(k, false))
       return;
     const S limit = horizon(first_.time, base_);
     const Trajectory<S>& p = path_;
@@ -108,7 +110,7 @@ public:
   void circle(const typename TableGeometry<S>::Circle& obstacle, S reach, S approach_slope, bool pressing,
               typename Candidate<S>::Rank rank, std::size_t k)
   {
-    if (outOfReach(obstacle))
+    if (outOfReach(obstacle) || (rank == Candidate<S>::Circle && touches(k, true)))
       return;
     const S limit = horizon(first_.time, base_);
     const Trajectory<S>& p = path_;
@@ -121,6 +123,17 @@ public:
   }
 
 private:
+  /// Whether the ball touches this cushion (or post), which its group follows.
+  bool touches(std::size_t k, bool post) const
+  {
+    if (!touching_)
+      return false;
+    return std::any_of(touching_->begin(), touching_->end(), [&](const WallTouch& w) {
+      const bool is_post = w.surface == Surface::PostSide || w.surface == Surface::Rim;
+      return is_post == post && w.index == static_cast<int>(k);
+    });
+  }
+
   /// Whether the centre is beside the segment at tau (within `slack` of its ends).
   bool isBeside(const typename TableGeometry<S>::Segment& seg, S tau, S slack = S(0)) const
   {
@@ -189,6 +202,7 @@ private:
   const Trajectory<S>& path_;
   const S base_;
   Candidate<S>& first_;
+  const std::vector<WallTouch>* touching_;
   Vec2<S> low_, high_;
 };
 }  // namespace
@@ -208,6 +222,7 @@ PairMotion<S> PairMotion<S>::of(const BallRecords<S>& records, int i, int j)
   m.c1 = c1i - c1j;
   m.c2 = ri.path.c2 - rj.path.c2;
   m.airborne = ri.airborne || rj.airborne;
+  m.supported = ri.supported || rj.supported;
   if (m.airborne)  // on the cloth every height term is zero
   {
     const Trajectory<S>&pi = ri.path, &pj = rj.path;
@@ -235,6 +250,7 @@ void CandidateFinder<S>::restingPath(const Ball<S>& ball, int index, BallRecord<
   record.in_play = true;
   record.translating = false;
   record.airborne = false;
+  record.supported = false;
   record.low = record.path.c0 - Vec2<S>::Constant(margin_);
   record.high = record.path.c0 + Vec2<S>::Constant(margin_);
 }
@@ -293,21 +309,28 @@ void CandidateFinder<S>::computeOwnEvent(const Ball<S>& ball, int index, BallRec
   record.in_play = ball.inPlay();
   record.translating = ball.translating();
   record.airborne = ball.airborne();
+  record.supported = ball.supported();
   Candidate<S>& first = record.first;
   first = Candidate<S>();
   first.ball = index;
   if (!ball.inPlay())
     return;
   first.time = ball.moving() ? ball.time + timeToTransition(ball, params_) : infinity<S>();  // or never
+  if (ball.supported())
+    first.rank = Candidate<S>::Step;  // its piece's end: its group's next step
   if (!ball.translating())
     return;
   const S R = params_.ball_radius;
+  // The walls a ball in sustained contact touches are its group's to follow (src/physics/supports/).
+  std::vector<WallTouch> touching;
+  if (ball.supported())
+    wallsTouching(geometry_, ball.r, R, touch_, touching);
   if (ball.airborne())
   {
-    findAirborneWallEvents(record.path, ball.time, geometry_, R, first);
+    findAirborneWallEvents(record.path, ball.time, geometry_, R, first, ball.supported() ? &touching : nullptr);
     return;
   }
-  OwnEventSearch<S> search(record.path, ball.time, first);
+  OwnEventSearch<S> search(record.path, ball.time, first, ball.supported() ? &touching : nullptr);
   for (std::size_t k = 0; k < geometry_.segments.size(); ++k)
     search.segment(geometry_.segments[k], k, R);
   for (std::size_t k = 0; k < geometry_.circles.size(); ++k)
@@ -333,6 +356,13 @@ bool CandidateFinder<S>::pairMayMeet(int a, int b, const BallRecords<S>& records
   if (!ra.translating || (rb.translating && b < a))
     std::swap(i, j);
   motion = PairMotion<S>::of(records, i, j);
+  // Touching a ball in sustained contact, a ball is its group's to follow (src/physics/supports/).
+  if (motion.supported)
+  {
+    const S reach = S(2) * params_.ball_radius + touch_;
+    if (motion.c0.squaredNorm() + motion.h0 * motion.h0 <= reach * reach)
+      return false;
+  }
   // Dismissed if they cannot meet before a window ends (a contact after that is looked for
   // again when the window is drawn further).
   if (cannotMeet<S>(motion.c0, motion.c1, motion.c2, S(2) * params_.ball_radius,
@@ -389,6 +419,7 @@ Event<S> CandidateFinder<S>::eventOf(const TableState<S>& state, const Candidate
   e.ball = state.balls[c.ball].id;
   switch (c.rank)
   {
+    case Candidate<S>::Step:
     case Candidate<S>::Unsolved:
     case Candidate<S>::Renewal:
       break;

@@ -9,6 +9,7 @@
 #include "cue_sim/physics/engine.hpp"
 #include "cue_sim/physics/motion.hpp"
 #include "physics/engine/table_geometry.hpp"
+#include "physics/supports/contact_geometry.hpp"
 
 namespace cue_sim
 {
@@ -21,6 +22,8 @@ struct Candidate
 {
   enum Rank : int
   {
+    /// not an event: the piece of a ball in sustained contact ends, and its group takes its next step
+    Step = -3,
     Unsolved = -2,  ///< not yet an event: a pair that cannot meet before `time`, solved when that comes up
     Renewal = -1,   ///< not an event: the ball's box has run out and is drawn further
     Transition = 0,
@@ -71,6 +74,7 @@ struct alignas(64) BallRecord
   /// changes then, so nothing of it later than this needs finding yet.
   Candidate<S> first;
   bool in_play, translating, airborne;
+  bool supported;  ///< moved by the contact equations: what it touches is its group's to follow
   /// About the ball's own reference time. Last, so that a pair on the cloth reads the first two
   /// cache lines only: the heights, read for a ball in the air, lie in the third.
   Trajectory<S> path;
@@ -89,6 +93,7 @@ struct PairMotion
   /// Relative height h0 + h1 tau + h2 tau^2: all zero unless a ball is in the air.
   S h0 = S(0), h1 = S(0), h2 = S(0);
   bool airborne = false;
+  bool supported = false;  ///< a ball of the pair is moved by the contact equations
   /// Nothing later than either ball's own next event needs finding: that event changes it.
   S limit;
 
@@ -101,7 +106,10 @@ class CandidateFinder
 {
 public:
   explicit CandidateFinder(const Engine<S>& engine)
-    : params_(engine.params()), geometry_(engine.geometry()), margin_(engine.params().ball_radius + S(kBoxMargin))
+    : params_(engine.params()),
+      geometry_(engine.geometry()),
+      margin_(engine.params().ball_radius + S(kBoxMargin)),
+      touch_(supportTouch(engine.params()))
   {
   }
 
@@ -133,6 +141,7 @@ private:
   const PhysicsParams<S>& params_;
   const TableGeometry<S>& geometry_;
   S margin_;  ///< R and a nanometre: the boxes' widening
+  S touch_;   ///< surfaces this close touch, for balls in sustained contact (supportTouch)
 };
 
 }  // namespace physics

@@ -142,11 +142,17 @@ bool EventSearch<S>::processOne(TableState<S>& state, S t_end, long& processed, 
   {
     std::ostringstream why;
     why << "event limit reached: more than " << engine_.limits().max_events
-        << " events before t = " << static_cast<double>(next.time) << " s (EngineLimits::max_events)";
+        << " events and steps of sustained contact before t = " << static_cast<double>(next.time)
+        << " s (EngineLimits::max_events)";
     throw EventLimitError(why.str());
   }
   queue_.pop();
   ++processed;
+  if (next.rank == Candidate<S>::Step)
+  {
+    resolveStep(state, next);  // a group's next step: it changes balls, but is no event
+    return true;
+  }
   event = resolve(state, next);
   return true;
 }
@@ -188,6 +194,27 @@ Event<S> EventSearch<S>::resolve(TableState<S>& state, const Candidate<S>& candi
   event.speed = state.balls[candidate.ball].v.norm();
   if (candidate.other >= 0)
     event.other_speed = state.balls[candidate.other].v.norm();
+  renewChanged(state, event.time);
+  return event;
+}
+
+template <typename S>
+void EventSearch<S>::resolveStep(TableState<S>& state, const Candidate<S>& candidate)
+{
+  changed_.clear();
+  const PathNeighbours neighbours(*this, state);
+  EventContext<S> context;
+  context.index = candidate.ball;
+  context.changed = &changed_;
+  context.neighbours = &neighbours;
+  context.scratch = &scratch_;
+  resolveSupportStep(engine_, state, candidate.time, context);
+  renewChanged(state, candidate.time);
+}
+
+template <typename S>
+void EventSearch<S>::renewChanged(const TableState<S>& state, S time)
+{
   // Only the balls the event changed get new candidates; every other candidate stands.
   std::sort(changed_.begin(), changed_.end());
   changed_.erase(std::unique(changed_.begin(), changed_.end()), changed_.end());
@@ -195,7 +222,7 @@ Event<S> EventSearch<S>::resolve(TableState<S>& state, const Candidate<S>& candi
   {
     queue_.changed(k);
     is_changed_[k] = 1;
-    findPath(state, k, event.time);
+    findPath(state, k, time);
   }
   for (int k : changed_)
   {
@@ -205,7 +232,6 @@ Event<S> EventSearch<S>::resolve(TableState<S>& state, const Candidate<S>& candi
   }
   for (int k : changed_)
     is_changed_[k] = 0;
-  return event;
 }
 
 template <typename S>

@@ -66,6 +66,11 @@ private:
   void renewBox(const TableState<S>& state, int k);
   /// Resolves the event and finds the candidates of the balls it changed.
   Event<S> resolve(TableState<S>& state, const Candidate<S>& candidate);
+  /// A group in sustained contact takes its next step (not an event), and the balls it changed get
+  /// their candidates anew.
+  void resolveStep(TableState<S>& state, const Candidate<S>& candidate);
+  /// Finds the paths and candidates of the balls in changed_ anew, from `time`.
+  void renewChanged(const TableState<S>& state, S time);
 
   /// Finds the ball's record (path, own event, box from `from`) and lists it in the grid.
   void findPath(const TableState<S>& state, int k, S from);

@@ -124,15 +124,14 @@ std::string Simulation<S>::whyNotStrikable(int ball_id, const CueStrike<S>& stri
 template <typename S>
 void Simulation<S>::strike(int ball_id, const CueStrike<S>& strike)
 {
-  std::vector<int> held;
-  for (std::size_t j = 0; j < state_.balls.size(); ++j)
-    if (state_.balls[j].held())
-      held.push_back(static_cast<int>(j));
+  const std::vector<Ball<S>> before = state_.balls;
   engine_->strike(state_, ball_id, strike);  // throws, changing nothing, if it may not
-  search_->ballChanged(state_, state_.indexOf(ball_id));
-  for (int j : held)
-    if (!state_.balls[j].held())  // it fell off the struck ball
-      search_->ballChanged(state_, j);
+  const int struck = state_.indexOf(ball_id);
+  search_->ballChanged(state_, struck);
+  for (std::size_t j = 0; j < before.size(); ++j)
+    if (static_cast<int>(j) != struck &&
+        (before[j].motion != state_.balls[j].motion || before[j].time != state_.balls[j].time))
+      search_->ballChanged(state_, static_cast<int>(j));  // it fell off the struck ball, or left its group
   edited();
 }
 

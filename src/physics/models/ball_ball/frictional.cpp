@@ -18,6 +18,7 @@ template <typename S>
 class FrictionalBallBall : public BallBallModel<S>
 {
 public:
+  S sustainedFriction(const PhysicsParams<S>& p) const override { return p.mu_ball_a + p.mu_ball_b; }
   void resolve(Ball<S>& a, Ball<S>& b, const PhysicsParams<S>& p) const override
   {
     // Horizontal for balls on the cloth (both centres at z = R), tilted when one is in the air.

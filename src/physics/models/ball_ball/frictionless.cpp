@@ -12,6 +12,7 @@ template <typename S>
 class FrictionlessBallBall : public BallBallModel<S>
 {
 public:
+  S sustainedFriction(const PhysicsParams<S>&) const override { return S(0); }
   void resolve(Ball<S>& a, Ball<S>& b, const PhysicsParams<S>& p) const override
   {
     // Horizontal for balls on the cloth (both centres at z = R), tilted when one is in the air.

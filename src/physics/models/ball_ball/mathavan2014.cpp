@@ -25,6 +25,7 @@ template <typename S>
 class MathavanBallBall : public BallBallModel<S>
 {
 public:
+  S sustainedFriction(const PhysicsParams<S>& p) const override { return p.mu_ball_a + p.mu_ball_b; }
   bool needsCloth() const override { return true; }
   void resolve(Ball<S>& a, Ball<S>& b, const PhysicsParams<S>& p) const override
   {

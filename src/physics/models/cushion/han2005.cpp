@@ -16,6 +16,7 @@ template <typename S>
 class HanCushion : public CushionModel<S>
 {
 public:
+  S sustainedFriction(const PhysicsParams<S>& p) const override { return p.f_cushion; }
   void resolve(Ball<S>& ball, const Vec3<S>& normal, const PhysicsParams<S>& p) const override
   {
     const NoseContact<S> nose(normal, p);

@@ -22,6 +22,7 @@ template <typename S>
 class MathavanCushion : public CushionModel<S>
 {
 public:
+  S sustainedFriction(const PhysicsParams<S>& p) const override { return p.mu_cushion; }
   void resolve(Ball<S>& ball, const Vec3<S>& normal, const PhysicsParams<S>& p) const override
   {
     CushionImpact<S> impact(cushionImpact(ball, normal, p, p.mu_cushion, p.mu_slide));

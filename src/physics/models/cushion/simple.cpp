@@ -12,6 +12,7 @@ template <typename S>
 class SimpleCushion : public CushionModel<S>
 {
 public:
+  S sustainedFriction(const PhysicsParams<S>&) const override { return S(0); }
   void resolve(Ball<S>& ball, const Vec3<S>& normal, const PhysicsParams<S>& p) const override
   {
     const S v_n = ball.v.dot(normal);

@@ -22,6 +22,7 @@ template <typename S>
 class StrongeCushion : public CushionModel<S>
 {
 public:
+  S sustainedFriction(const PhysicsParams<S>& p) const override { return p.f_cushion; }
   void resolve(Ball<S>& ball, const Vec3<S>& normal, const PhysicsParams<S>& p) const override
   {
     const S m = p.ball_mass, tangential_inverse_mass = S(3.5);  // 1 + m R^2 / I, in units of 1/m
