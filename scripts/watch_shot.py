@@ -7,7 +7,8 @@ from cue_sim.msg import BallState, TableState
 
 MOTION = {BallState.STATIONARY: "stationary", BallState.SPINNING: "spinning", BallState.SLIDING: "sliding",
           BallState.ROLLING: "rolling", BallState.POCKETED: "pocketed", BallState.AIRBORNE: "airborne",
-          BallState.OFF_TABLE: "off the table", BallState.HELD: "held in the air"}
+          BallState.OFF_TABLE: "off the table", BallState.HELD: "held in the air",
+          BallState.SUPPORTED: "on supports in the air", BallState.BEARING: "bearing a ball"}
 
 
 def main():

@@ -20,7 +20,8 @@ EVENT_KINDS: Dict[int, str] = {0: "slide_to_roll", 1: "roll_to_spin", 2: "roll_t
                                15: "off_table"}
 #: Ball motion states by number (State.motion), as cue_sim/BallState.msg numbers them.
 MOTION: Dict[int, str] = {0: "stationary", 1: "spinning", 2: "sliding", 3: "rolling", 4: "pocketed", 5: "airborne",
-                          6: "off_table", 7: "held"}
+                          6: "off_table", 7: "held",
+                          8: "supported", 9: "bearing"}
 
 #: The dtype of Shot.events.
 EVENT_DTYPE = np.dtype([("time", "f8"), ("kind", "i4"), ("ball", "i4"), ("other", "i4"), ("obstacle", "U32")])

@@ -91,6 +91,14 @@ constexpr double kSameInstant = 1e-12;
 constexpr double kSameInstantPerSecond = 1e-13;
 
 template <typename S>
+class ContactSystem;
+template <typename S>
+struct SupportStep;
+template <typename S>
+struct SupportGroup;
+struct Membership;
+
+template <typename S>
 class EventResolver
 {
 public:
@@ -157,6 +165,18 @@ private:
   /// Every ball of the group of ball `index` back to its own closed-form motion at `time` (an impact
   /// among them, a pocket, a ball leaving the table).
   void dissolveGroup(int index, S time);
+  /// The step's group: the balls, their contacts and the bodies the contact equations move.
+  SupportGroup<S> gatherGroup(S time, int seed);
+  /// Impacts within the group (faster than a sustained contact), then what still closes stopped.
+  void meetWithinGroup(const ContactSystem<S>& system, SupportGroup<S>& group);
+  /// The contacts' modes at the step's start, the drift off the pressed ones taken out.
+  void decideGroupModes(const ContactSystem<S>& system, SupportGroup<S>& group);
+  /// Ball k of the group back to its own closed-form motion (or held, if it was and is still).
+  void writeFree(const SupportGroup<S>& group, std::size_t k, S time);
+  /// Ball k of the group at rest where it is: Held in the air, Stationary on the cloth.
+  void holdAtRest(const SupportGroup<S>& group, std::size_t k, bool on_slate, S time);
+  /// The group's members given the pieces the step integrated.
+  void writePieces(const SupportGroup<S>& group, const Membership& who, const SupportStep<S>& step, S time);
   /// Whether two bodies meet slowly enough for a sustained contact: the contact lasts (about 0.2 ms
   /// for billiard balls) longer than a bounce at kSettleSpeed would (Luding and McNamara's TC model).
   static bool meetSlowly(S closing) { return closing < S(kSettleSpeed); }

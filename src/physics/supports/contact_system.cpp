@@ -30,6 +30,16 @@ constexpr double kGrazeShare = 0.1;
 /// weight: below it, the solve's rounding makes it press and let go in turn.
 constexpr double kGrazeForce = 1e-8;
 
+/// The link as its mode makes it act: a contact held both ways has no friction and no couples.
+template <typename S>
+ContactLink<S> asActing(const ContactLink<S>& link, const LinkMode<S>& mode)
+{
+  ContactLink<S> acting = link;
+  if (mode.bilateral)
+    acting.mu = acting.grip = acting.rolling = acting.drilling = S(0);
+  return acting;
+}
+
 /// Two unit tangents at a contact, chosen the same way from the normal wherever it is.
 template <typename S>
 void tangents(const Vec3<S>& n, Vec3<S>& t1, Vec3<S>& t2)
@@ -142,8 +152,8 @@ void ContactSystem<S>::assemble(const std::vector<ContactBody<S>>& bodies, const
   const auto dynamic = [&](int b) { return b >= 0 && bodies[static_cast<std::size_t>(b)].dynamic; };
   for (std::size_t l = 0; l < links.size(); ++l)
   {
-    const ContactLink<S>& link = links[l];
     const LinkMode<S>& mode = modes[l];
+    const ContactLink<S> link = asActing(links[l], mode);
     if ((!every_normal && !mode.pressed) || (!dynamic(link.body) && !dynamic(link.other)))
       continue;
     const ContactGeometry<S> c = geometryOf(link, bodies);
@@ -156,7 +166,7 @@ void ContactSystem<S>::assemble(const std::vector<ContactBody<S>>& bodies, const
     const Vec3<S> lever = -R * c.n;  // from the body's centre to the contact point
     const S turn_n = turn.dot(c.n);
     const Vec3<S> turn_t = turn - turn_n * c.n;
-    const bool slip_stuck = link.mu > S(0) && mode.slip == Resist::Stuck;
+    const bool slip_stuck = link.grip > S(0) && mode.slip == Resist::Stuck;
     const bool roll_stuck = slip_stuck && link.rolling > S(0) && mode.roll == Resist::Stuck;
     const bool drill_stuck = link.drilling > S(0) && mode.drill == Resist::Stuck;
     // The normal force, with the opposing resistances, which scale with it.
@@ -460,18 +470,7 @@ bool ContactSystem<S>::decideModes(const std::vector<ContactBody<S>>& bodies, co
   // into presses (once each), and the resistance furthest beyond its bound starts, until none is.
   // A ball on the cloth that no contact but the slate presses follows its own closed-form path from
   // here on: whether a free contact is pressed into is judged against that path.
-  std::vector<ContactBody<S>> used = bodies;
-  for (std::size_t b = 0; b < used.size(); ++b)
-  {
-    if (!used[b].free_on_cloth)
-      continue;
-    bool pressed_by_other = false;
-    for (std::size_t l = 0; l < links.size(); ++l)
-      pressed_by_other =
-          pressed_by_other || (modes[l].pressed && links[l].surface != Surface::Slate &&
-                               (links[l].body == static_cast<int>(b) || links[l].other == static_cast<int>(b)));
-    used[b].dynamic = pressed_by_other;
-  }
+  std::vector<ContactBody<S>> used = followed(bodies, links, modes);
   std::vector<int> pressed_again(links.size(), 0);
   for (std::size_t round = 0; round <= 8 * links.size() + 8; ++round)
   {
@@ -492,23 +491,13 @@ bool ContactSystem<S>::decideModes(const std::vector<ContactBody<S>>& bodies, co
       const LinkMode<S>& mode = modes[l];
       if (mode.pressed)
       {
-        consider(static_cast<int>(l), 0, -mode.lambda - force_rounding);
+        if (!mode.bilateral)
+          consider(static_cast<int>(l), 0, -mode.lambda - force_rounding);
         continue;
       }
       if (parting[l] || pressed_again[l] > 2)
         continue;
-      const bool body_dynamic = used[static_cast<std::size_t>(link.body)].dynamic;
-      const bool other_dynamic = link.other >= 0 && used[static_cast<std::size_t>(link.other)].dynamic;
-      if (!body_dynamic && !other_dynamic)
-        continue;
-      const ContactGeometry<S> c = geometryOf(link, used);
-      const Vec3<S> v_rel = relativeVelocity(link, used);
-      Vec3<S> a_rel = rates[static_cast<std::size_t>(link.body)].a;
-      if (link.other >= 0)
-        a_rel -= rates[static_cast<std::size_t>(link.other)].a;
-      // (A free contact grazing along, its gap's acceleration within rounding of zero, stays free.)
-      consider(static_cast<int>(l), 1,
-               (-(c.n.dot(a_rel) + v_rel.dot(c.H * v_rel)) * m - S(kGrazeForce) * weight) / S(2));
+      consider(static_cast<int>(l), 1, pressingInto(link, used, rates));
     }
     if (worst < 0)
       for (std::size_t l = 0; l < links.size(); ++l)
@@ -519,9 +508,9 @@ bool ContactSystem<S>::decideModes(const std::vector<ContactBody<S>>& bodies, co
           continue;
         const ContactGeometry<S> c = geometryOf(link, used);
         const Vec3<S> couple_t = mode.couple - mode.couple.dot(c.n) * c.n;
-        const bool slip_stuck = link.mu > S(0) && mode.slip == Resist::Stuck;
+        const bool slip_stuck = link.grip > S(0) && mode.slip == Resist::Stuck;
         if (slip_stuck)
-          consider(static_cast<int>(l), 2, mode.friction.norm() - link.mu * mode.lambda - force_rounding);
+          consider(static_cast<int>(l), 2, mode.friction.norm() - link.grip * mode.lambda - force_rounding);
         if (slip_stuck && link.rolling > S(0) && mode.roll == Resist::Stuck)
           consider(static_cast<int>(l), 3, (couple_t.norm() - link.rolling * mode.lambda) / R - force_rounding);
         if (link.drilling > S(0) && mode.drill == Resist::Stuck)
@@ -540,6 +529,7 @@ bool ContactSystem<S>::decideModes(const std::vector<ContactBody<S>>& bodies, co
     {
       case 0:
         mode.pressed = false;
+        used = followed(bodies, links, modes);  // a ball on the cloth it let go of follows its own path again
         break;
       case 1: {
         mode.pressed = true;
@@ -547,15 +537,21 @@ bool ContactSystem<S>::decideModes(const std::vector<ContactBody<S>>& bodies, co
         for (const int b : {pressed.body, pressed.other})
           if (b >= 0)
             used[static_cast<std::size_t>(b)].dynamic = bodies[static_cast<std::size_t>(b)].dynamic;  // pressed on now
-        if (++pressed_again[static_cast<std::size_t>(worst)] == 2)
-        {
-          // Pressed, it pulls; free, it is pressed into: what the stuck resistances about its bodies hold
-          // makes the normal forces inconsistent. They slide instead (friction that can neither hold nor
-          // let go, Painleve's paradox, is taken as sliding; jam() is the last resort).
+        // Pressed, it pulls; free, it is pressed into: what the stuck resistances about its bodies hold
+        // makes the normal forces inconsistent. They slide instead (friction that can neither hold nor
+        // let go is taken as sliding). If even then (a friction or a couple that grows with the normal
+        // force faster than the normal force parts the bodies: Painleve's paradox), no modes are
+        // consistent: the contacts jam (jam(), then holdTogether()).
+        const int again = ++pressed_again[static_cast<std::size_t>(worst)];
+        if (again == 2)
           for (std::size_t k = 0; k < links.size(); ++k)
             for (const int b : {pressed.body, pressed.other})
               if (b >= 0 && (links[k].body == b || links[k].other == b))
                 modes[k].slip = modes[k].roll = modes[k].drill = Resist::Sliding;
+        if (again == 3)
+        {
+          accelerations(used, links, modes, rates);
+          return false;
         }
         break;
       }
@@ -577,15 +573,23 @@ bool ContactSystem<S>::decideModes(const std::vector<ContactBody<S>>& bodies, co
 template <typename S>
 void ContactSystem<S>::margins(const std::vector<ContactBody<S>>& bodies, const std::vector<ContactLink<S>>& links,
                                const std::vector<LinkMode<S>>& modes, const std::vector<BodyRates<S>>& rates,
-                               const std::vector<S>& start_gaps, std::vector<S>& out) const
+                               const std::vector<S>& start_gaps, std::vector<S>& out,
+                               std::vector<MarginTag>* tags) const
 {
   (void)rates;
   const S R = params_.ball_radius, weight = params_.ball_mass * params_.gravity;
   out.clear();
+  if (tags)
+    tags->clear();
   for (std::size_t l = 0; l < links.size(); ++l)
   {
-    const ContactLink<S>& link = links[l];
+    const auto add = [&](MarginKind kind, S value) {
+      out.push_back(value);
+      if (tags)
+        tags->push_back({static_cast<int>(l), kind});
+    };
     const LinkMode<S>& mode = modes[l];
+    const ContactLink<S> link = asActing(links[l], mode);
     const ContactGeometry<S> c = geometryOf(link, bodies);
     // The surface is still the one met: a cushion's face below the nose, its edge above it, beside
     // the cushion and in front of its line; a post's side or rim.
@@ -593,14 +597,14 @@ void ContactSystem<S>::margins(const std::vector<ContactBody<S>>& bodies, const 
         link.surface == Surface::Rim)
     {
       const S above = (bodies[static_cast<std::size_t>(link.body)].r.z() - geometry_.nose_height) / R;
-      out.push_back(link.surface == Surface::Face || link.surface == Surface::PostSide ? -above : above);
+      add(MarginKind::Surface, link.surface == Surface::Face || link.surface == Surface::PostSide ? -above : above);
       if (link.surface == Surface::Face || link.surface == Surface::Edge)
       {
         const S length = geometry_.segments[static_cast<std::size_t>(link.obstacle)].length;
-        out.push_back(c.along / R);
-        out.push_back((length - c.along) / R);
+        add(MarginKind::Surface, c.along / R);
+        add(MarginKind::Surface, (length - c.along) / R);
         if (link.surface == Surface::Edge)
-          out.push_back(c.across / R);
+          add(MarginKind::Surface, c.across / R);
       }
     }
     if (!mode.pressed)
@@ -609,20 +613,49 @@ void ContactSystem<S>::margins(const std::vector<ContactBody<S>>& bodies, const 
       // than a tenth of the contact tolerance, the accuracy the pieces are kept to anyway (a free
       // contact grazing along, its gap's acceleration near zero, is not a new event each time its
       // gap dips by rounding).
-      out.push_back((c.gap - std::min(start_gaps[l], -S(kGrazeShare) * params_.contact_tolerance)) / R);
+      add(MarginKind::Gap, (c.gap - std::min(start_gaps[l], -S(kGrazeShare) * params_.contact_tolerance)) / R);
       continue;
     }
-    out.push_back(mode.lambda / weight);
+    if (!mode.bilateral)  // (one held both ways holds for its step, which is short: see stepGroup)
+      add(MarginKind::Press, mode.lambda / weight);
     // A stuck resistance holds within its bound; a sliding one is smooth, and may stick again at the
     // next step.
     const Vec3<S> couple_t = mode.couple - mode.couple.dot(c.n) * c.n;
-    const bool slip_stuck = link.mu > S(0) && mode.slip == Resist::Stuck;
+    const bool slip_stuck = link.grip > S(0) && mode.slip == Resist::Stuck;
     if (slip_stuck)
-      out.push_back((link.mu * mode.lambda - mode.friction.norm()) / weight);
+      add(MarginKind::Slip, (link.grip * mode.lambda - mode.friction.norm()) / weight);
     if (slip_stuck && link.rolling > S(0) && mode.roll == Resist::Stuck)
-      out.push_back((link.rolling * mode.lambda - couple_t.norm()) / (weight * R));
+      add(MarginKind::Roll, (link.rolling * mode.lambda - couple_t.norm()) / (weight * R));
     if (link.drilling > S(0) && mode.drill == Resist::Stuck)
-      out.push_back((link.drilling * mode.lambda - std::abs(mode.couple.dot(c.n))) / (weight * R));
+      add(MarginKind::Drill, (link.drilling * mode.lambda - std::abs(mode.couple.dot(c.n))) / (weight * R));
+  }
+}
+
+template <typename S>
+bool flipMode(const MarginTag& tag, std::vector<LinkMode<S>>& modes)
+{
+  if (tag.link < 0 || tag.link >= static_cast<int>(modes.size()))
+    return false;
+  LinkMode<S>& mode = modes[static_cast<std::size_t>(tag.link)];
+  switch (tag.kind)
+  {
+    case MarginKind::Gap:
+      mode.pressed = true;
+      return true;
+    case MarginKind::Press:
+      mode.pressed = false;
+      return true;
+    case MarginKind::Slip:
+      mode.slip = mode.roll = Resist::Sliding;  // rolling resistance acts while the slip sticks
+      return true;
+    case MarginKind::Roll:
+      mode.roll = Resist::Sliding;
+      return true;
+    case MarginKind::Drill:
+      mode.drill = Resist::Sliding;
+      return true;
+    default:
+      return false;
   }
 }
 
@@ -643,8 +676,8 @@ void ContactSystem<S>::projectVelocities(std::vector<ContactBody<S>>& bodies, co
   std::vector<Constraint> rows;
   for (std::size_t l = 0; l < links.size(); ++l)
   {
-    const ContactLink<S>& link = links[l];
     const LinkMode<S>& mode = modes[l];
+    const ContactLink<S> link = asActing(links[l], mode);
     if (!mode.pressed)
       continue;
     const ContactGeometry<S> c = geometryOf(link, bodies);
@@ -653,7 +686,7 @@ void ContactSystem<S>::projectVelocities(std::vector<ContactBody<S>>& bodies, co
     rows.push_back({link.body, link.other, c.n, Vec3<S>::Zero(), -c.n, Vec3<S>::Zero()});
     if (normals_only)
       continue;
-    const bool slip_stuck = link.mu > S(0) && mode.slip == Resist::Stuck;
+    const bool slip_stuck = link.grip > S(0) && mode.slip == Resist::Stuck;
     if (slip_stuck)
       for (const Vec3<S>& t : {t1, t2})
       {
@@ -725,6 +758,65 @@ void ContactSystem<S>::projectVelocities(std::vector<ContactBody<S>>& bodies, co
 }
 
 template <typename S>
+std::vector<ContactBody<S>> ContactSystem<S>::followed(const std::vector<ContactBody<S>>& bodies,
+                                                       const std::vector<ContactLink<S>>& links,
+                                                       const std::vector<LinkMode<S>>& modes) const
+{
+  std::vector<ContactBody<S>> used = bodies;
+  for (std::size_t b = 0; b < used.size(); ++b)
+  {
+    if (!used[b].free_on_cloth)
+      continue;
+    bool pressed_by_other = false;
+    for (std::size_t l = 0; l < links.size(); ++l)
+      pressed_by_other =
+          pressed_by_other || (modes[l].pressed && links[l].surface != Surface::Slate &&
+                               (links[l].body == static_cast<int>(b) || links[l].other == static_cast<int>(b)));
+    used[b].dynamic = pressed_by_other;
+  }
+  return used;
+}
+
+template <typename S>
+S ContactSystem<S>::pressingInto(const ContactLink<S>& link, const std::vector<ContactBody<S>>& used,
+                                 const std::vector<BodyRates<S>>& rates) const
+{
+  const bool body_dynamic = used[static_cast<std::size_t>(link.body)].dynamic;
+  const bool other_dynamic = link.other >= 0 && used[static_cast<std::size_t>(link.other)].dynamic;
+  if (!body_dynamic && !other_dynamic)
+    return S(0);
+  const ContactGeometry<S> c = geometryOf(link, used);
+  const Vec3<S> v_rel = relativeVelocity(link, used);
+  Vec3<S> a_rel = rates[static_cast<std::size_t>(link.body)].a;
+  if (link.other >= 0)
+    a_rel -= rates[static_cast<std::size_t>(link.other)].a;
+  // (A free contact grazing along, its gap's acceleration within rounding of zero, stays free.)
+  const S weight = params_.ball_mass * params_.gravity;
+  return (-(c.n.dot(a_rel) + v_rel.dot(c.H * v_rel)) * params_.ball_mass - S(kGrazeForce) * weight) / S(2);
+}
+
+template <typename S>
+void ContactSystem<S>::holdTogether(const std::vector<ContactBody<S>>& bodies, const std::vector<ContactLink<S>>& links,
+                                    std::vector<LinkMode<S>>& modes, std::vector<BodyRates<S>>& rates) const
+{
+  const S force_rounding = S(kForceRounding) * params_.ball_mass * params_.gravity;
+  std::vector<ContactBody<S>> used = followed(bodies, links, modes);
+  accelerations(used, links, modes, rates);
+  for (std::size_t l = 0; l < links.size(); ++l)
+  {
+    LinkMode<S>& mode = modes[l];
+    const bool parting = relativeVelocity(links[l], bodies).dot(geometryOf(links[l], bodies).n) > slide_speed_;
+    const bool inconsistent =
+        mode.pressed ? mode.lambda < -force_rounding : !parting && pressingInto(links[l], used, rates) > S(0);
+    if (!inconsistent)
+      continue;
+    mode.pressed = mode.bilateral = true;
+  }
+  used = followed(bodies, links, modes);
+  accelerations(used, links, modes, rates);
+}
+
+template <typename S>
 void ContactSystem<S>::jam(std::vector<ContactBody<S>>& bodies, const std::vector<ContactLink<S>>& links) const
 {
   std::vector<LinkMode<S>> stuck(links.size());
@@ -732,8 +824,9 @@ void ContactSystem<S>::jam(std::vector<ContactBody<S>>& bodies, const std::vecto
   {
     const ContactGeometry<S> c = geometryOf(links[l], bodies);
     stuck[l].pressed = relativeVelocity(links[l], bodies).dot(c.n) <= slide_speed_;
-    stuck[l].slip = links[l].mu > S(0) ? Resist::Stuck : Resist::Sliding;
-    stuck[l].roll = stuck[l].drill = Resist::Sliding;
+    stuck[l].slip = links[l].grip > S(0) ? Resist::Stuck : Resist::Sliding;
+    stuck[l].roll = links[l].rolling > S(0) ? Resist::Stuck : Resist::Sliding;
+    stuck[l].drill = links[l].drilling > S(0) ? Resist::Stuck : Resist::Sliding;
   }
   projectVelocities(bodies, links, stuck);
 }
@@ -781,6 +874,8 @@ template class ContactSystem<double>;
 template class ContactSystem<long double>;
 template double groupEnergy(const std::vector<ContactBody<double>>&, const PhysicsParams<double>&);
 template long double groupEnergy(const std::vector<ContactBody<long double>>&, const PhysicsParams<long double>&);
+template bool flipMode(const MarginTag&, std::vector<LinkMode<double>>&);
+template bool flipMode(const MarginTag&, std::vector<LinkMode<long double>>&);
 
 }  // namespace physics
 }  // namespace cue_sim

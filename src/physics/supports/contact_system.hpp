@@ -45,9 +45,10 @@ struct ContactLink
   int other = -1;                    ///< the other ball (Surface::Ball), else -1
   int obstacle = -1;                 ///< the cushion's segment or the post's circle, else -1
   Surface surface = Surface::Slate;  ///< as met at the start of the step
-  S mu = S(0);                       ///< Coulomb friction
+  S mu = S(0);                       ///< Coulomb friction of a sliding slip
   S rolling = S(0);                  ///< rolling resistance: a couple of at most rolling * lambda [m]
   S drilling = S(0);                 ///< drilling resistance: a couple of at most drilling * lambda [m]
+  S grip = S(0);                     ///< the most a stuck slip holds, over lambda (static friction, >= mu)
 };
 
 /// How a resistance at a contact acts (the friction against the slip, the couples against the
@@ -67,6 +68,7 @@ template <typename S>
 struct LinkMode
 {
   bool pressed = false;            ///< a normal force acts (else the surfaces are free to part)
+  bool bilateral = false;          ///< held both ways, frictionless, where no modes were consistent (holdTogether)
   Resist slip = Resist::Sliding;   ///< Coulomb friction against the slip
   Resist roll = Resist::Sliding;   ///< rolling resistance (while the slip sticks)
   Resist drill = Resist::Sliding;  ///< drilling resistance
@@ -75,6 +77,29 @@ struct LinkMode
   Vec3<S> friction = Vec3<S>::Zero();  ///< [N]
   Vec3<S> couple = Vec3<S>::Zero();    ///< rolling and drilling couples [N m]
 };
+
+/// What a margin (ContactSystem::margins) watches: the mode that stops holding when it turns negative.
+enum class MarginKind : std::uint8_t
+{
+  Surface,  ///< the contact is still on the surface it met (no mode of its own: the step just ends)
+  Gap,      ///< a free contact stays open
+  Press,    ///< a pressed contact's force stays positive
+  Slip,     ///< a stuck slip's friction stays within its bound
+  Roll,     ///< a stuck rolling couple stays within its bound
+  Drill,    ///< a stuck drilling couple stays within its bound
+  Height,   ///< a ball in the air stays above the slate (added by the stepper)
+};
+
+struct MarginTag
+{
+  int link = -1;
+  MarginKind kind = MarginKind::Surface;
+};
+
+/// Turns the mode a crossed margin watched to the mode that holds beyond it (a free contact pressed, a
+/// pressed one let go, a stuck resistance sliding); false where the margin has no such mode.
+template <typename S>
+bool flipMode(const MarginTag& tag, std::vector<LinkMode<S>>& modes);
 
 template <typename S>
 struct BodyRates
@@ -114,7 +139,7 @@ public:
   /// Written after `accelerations` at the same state and modes.
   void margins(const std::vector<ContactBody<S>>& bodies, const std::vector<ContactLink<S>>& links,
                const std::vector<LinkMode<S>>& modes, const std::vector<BodyRates<S>>& rates,
-               const std::vector<S>& start_gaps, std::vector<S>& out) const;
+               const std::vector<S>& start_gaps, std::vector<S>& out, std::vector<MarginTag>* tags = nullptr) const;
 
   /// Takes out, by the impulses of the contacts, every relative velocity the modes say is zero: the
   /// normal velocity of a pressed contact, and (unless `normals_only`) the slip of a sticking one and
@@ -124,10 +149,18 @@ public:
                          const std::vector<LinkMode<S>>& modes, bool normals_only = false) const;
   /// Where the modes have no consistent choice (Painleve's paradox: friction at one contact lifting the
   /// body off another, or sliding that cannot stop and cannot go on), the contacts jam: an impulse
-  /// takes out the normal closing and the slip of every touching contact with friction, as a
-  /// tangential impact would with friction enough (Stewart, SIAM Review 42(1), 2000). It only takes
-  /// energy out.
+  /// takes out the normal closing, the slip and the turning of every touching contact with friction
+  /// and resistances, as a tangential impact would with friction enough (Stewart, SIAM Review 42(1),
+  /// 2000; Genot and Brogliato, Eur. J. Mech. A 18, 1999). It only takes energy out.
   void jam(std::vector<ContactBody<S>>& bodies, const std::vector<ContactLink<S>>& links) const;
+  /// Where even jammed the modes are not consistent (a contact that pulls when pressed and is pressed
+  /// into when free: friction or a rolling couple that grows with the normal force faster than the
+  /// normal force parts the bodies, as a rolling resistance above the cloth's friction does), that
+  /// contact holds both ways for the next step, without friction: a workless constraint, so no energy
+  /// is made, and the bodies move on together until their motion lets the modes settle. The
+  /// accelerations are written again.
+  void holdTogether(const std::vector<ContactBody<S>>& bodies, const std::vector<ContactLink<S>>& links,
+                    std::vector<LinkMode<S>>& modes, std::vector<BodyRates<S>>& rates) const;
   /// Moves the dynamic bodies (each the same share of a gap, walls not at all) until every pressed
   /// contact's gap is zero: the integration's drift off its contacts, a few ulps a step.
   void projectPositions(std::vector<ContactBody<S>>& bodies, const std::vector<ContactLink<S>>& links,
@@ -153,6 +186,15 @@ private:
   void applyForces(const std::vector<ContactBody<S>>& bodies, const std::vector<ContactLink<S>>& links,
                    const Assembly& assembly, const Vector& x, std::vector<LinkMode<S>>& modes,
                    std::vector<BodyRates<S>>& rates) const;
+  /// The bodies as the mode decision moves them: a ball on the cloth that no contact but the slate
+  /// presses follows its own closed-form path (kinematic, its acceleration a_free).
+  std::vector<ContactBody<S>> followed(const std::vector<ContactBody<S>>& bodies,
+                                       const std::vector<ContactLink<S>>& links,
+                                       const std::vector<LinkMode<S>>& modes) const;
+  /// How hard the bodies press into a free contact, as a force [N] beyond a graze's (positive: it
+  /// must be pressed).
+  S pressingInto(const ContactLink<S>& link, const std::vector<ContactBody<S>>& used,
+                 const std::vector<BodyRates<S>>& rates) const;
   /// The normal forces of the complementarity problem, with the stuck resistances held; false if it
   /// could not be solved.
   bool pressNormals(const Assembly& assembly, Vector& x) const;

@@ -129,6 +129,8 @@ public:
   }
 
   const std::vector<ContactBody<S>>& end() const { return end_; }
+  /// The margin found crossed last (at the located point, after firstChange).
+  const MarginTag& crossed() const { return crossed_; }
   const std::vector<int>& dynamic() const { return dynamic_; }
 
 private:
@@ -171,12 +173,15 @@ private:
   {
     std::vector<LinkMode<S>> modes = modes_;
     system_.accelerations(bodies, links_, modes, rates_);
-    system_.margins(bodies, links_, modes, rates_, start_gaps_, out);
+    system_.margins(bodies, links_, modes, rates_, start_gaps_, out, &tags_);
     // A ball in the air must not come down through the slate within the step.
     for (int b : dynamic_)
       if (start_[static_cast<std::size_t>(b)].r.z() > system_.params().ball_radius)
+      {
         out.push_back((bodies[static_cast<std::size_t>(b)].r.z() - system_.params().ball_radius) /
                       system_.params().ball_radius);
+        tags_.push_back({-1, MarginKind::Height});
+      }
   }
 
   /// Whether a mode has stopped holding at theta of the step (the bodies there by cubic Hermite
@@ -202,6 +207,7 @@ private:
     for (std::size_t i = 0; i < margins_.size() && i < start_margins_.size(); ++i)
       if (margins_[i] < std::min(start_margins_[i], S(0)) - S(kMarginRounding))
       {
+        crossed_ = tags_[i];
         return true;
       }
     return false;
@@ -214,6 +220,8 @@ private:
   const KinematicPaths<S>& kinematic_;
   std::vector<int> dynamic_;
   std::vector<S> start_gaps_, start_margins_, margins_;
+  std::vector<MarginTag> tags_;
+  MarginTag crossed_;
   std::array<Rate<S>, 7> k_;
   std::vector<BodyRates<S>> rates_;
   std::vector<ContactBody<S>> end_;
@@ -260,6 +268,8 @@ SupportStep<S> stepSupported(const ContactSystem<S>& system, const std::vector<C
       continue;
     }
     out.mode_changed = located;
+    if (located)
+      out.crossed = integrator.crossed();
     break;
   }
   out.h = h;

@@ -22,6 +22,7 @@ struct SupportStep
   std::vector<ContactBody<S>> end;  ///< every body at the step's end (the kinematic ones as their paths say)
   std::vector<Vec3<S>> a, alpha;    ///< each dynamic body's piece: its acceleration and angular acceleration
   bool mode_changed = false;        ///< ended where a contact's mode stopped holding
+  MarginTag crossed;                ///< which (when mode_changed)
   int attempts = 0;                 ///< steps tried, the rejected ones included
 };
 
