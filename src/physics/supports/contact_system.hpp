@@ -118,6 +118,9 @@ public:
   /// Slips slower than this [m/s], and turnings slower than this over R [rad/s], may stick: a sliding
   /// resistance below it is scaled down in proportion (Resist).
   S slideSpeed() const { return slide_speed_; }
+  /// The band [m/s] below which a sliding resistance of coefficient mu (a couple's over R) is scaled
+  /// down in proportion: the slide speed, or wider for a large mu (kBandPerMu).
+  S bandFor(S mu) const;
 
   /// The contact's geometry at the bodies' positions.
   ContactGeometry<S> geometryOf(const ContactLink<S>& link, const std::vector<ContactBody<S>>& bodies) const;
