@@ -35,6 +35,17 @@ constexpr double kGrazeShare = 0.1;
 /// A free contact is pressed only if the bodies would press into it by more than this share of their
 /// weight: below it, the solve's rounding makes it press and let go in turn.
 constexpr double kGrazeForce = 1e-8;
+/// Normal forces beyond this many times the weight and the fastest ball's centripetal load m v^2 / R
+/// are no sustained contact's: the modes found are next to Painleve's paradox, where a friction that
+/// grows with the normal force drives the normal force on (a sliding ball on the cloth of mu_slide 45
+/// pressed by a ball landing on it: forces of ten thousand weights, slips stopped in nanoseconds). The
+/// contacts jam instead, as where no modes are consistent: the impulse the forces tend to.
+constexpr double kJamLoad = 1e3;
+/// A sliding resistance whose regularization settles faster than this share of the natural time
+/// sqrt(R / g) is too stiff to integrate (on the slate, whose band is the closed forms' narrow one,
+/// mu_slide above 2.9 or a rolling resistance above 2): where the modes would fall back on sliding,
+/// the contacts jam instead.
+constexpr double kStiffShare = 1e-5;
 
 /// The link as its mode makes it act: a contact held both ways has no friction and no couples.
 template <typename S>
@@ -74,8 +85,12 @@ ContactSystem<S>::ContactSystem(const TableGeometry<S>& geometry, const PhysicsP
 }
 
 template <typename S>
-S ContactSystem<S>::bandFor(S mu) const
+S ContactSystem<S>::bandFor(const ContactLink<S>& link, S mu) const
 {
+  // The slate's are the closed forms' own: a ball the slate alone presses is handed back to them,
+  // which slide at full friction down to the slide speed.
+  if (link.surface == Surface::Slate)
+    return slide_speed_;
   return std::max(slide_speed_, S(kBandPerMu) * mu * std::sqrt(params_.gravity * params_.ball_radius));
 }
 
@@ -195,14 +210,14 @@ void ContactSystem<S>::assemble(const std::vector<ContactBody<S>>& bodies, const
     // Sliding: against the motion, in proportion below its band.
     if (link.mu > S(0) && mode.slip == Resist::Sliding)
     {
-      normal.friction = -link.mu * u / std::max(u.norm(), bandFor(link.mu));
+      normal.friction = -link.mu * u / std::max(u.norm(), bandFor(link, link.mu));
       normal.f += normal.friction;
       normal.tau_body = normal.tau_other = lever.cross(normal.friction);
     }
     if (slip_stuck && link.rolling > S(0) && mode.roll == Resist::Sliding)
-      normal.couple -= link.rolling * turn_t / std::max(turn_t.norm(), bandFor(link.rolling / R) / R);
+      normal.couple -= link.rolling * turn_t / std::max(turn_t.norm(), bandFor(link, link.rolling / R) / R);
     if (link.drilling > S(0) && mode.drill == Resist::Sliding)
-      normal.couple -= link.drilling * turn_n / std::max(std::abs(turn_n), bandFor(link.drilling / R) / R) * c.n;
+      normal.couple -= link.drilling * turn_n / std::max(std::abs(turn_n), bandFor(link, link.drilling / R) / R) * c.n;
     normal.tau_body += normal.couple;
     normal.tau_other -= normal.couple;
     out.unknowns.push_back(normal);
@@ -533,7 +548,7 @@ bool ContactSystem<S>::decideModes(const std::vector<ContactBody<S>>& bodies, co
       // A contact pressed and let go twice over: no consistent modes here (Painleve's paradox).
       for (std::size_t l = 0; l < links.size(); ++l)
         settled = settled && pressed_again[l] <= 2;
-      return settled;
+      return settled && !nearPainleve(bodies, links, modes);
     }
     LinkMode<S>& mode = modes[static_cast<std::size_t>(worst)];
     switch (kind)
@@ -552,8 +567,14 @@ bool ContactSystem<S>::decideModes(const std::vector<ContactBody<S>>& bodies, co
         // makes the normal forces inconsistent. They slide instead (friction that can neither hold nor
         // let go is taken as sliding). If even then (a friction or a couple that grows with the normal
         // force faster than the normal force parts the bodies: Painleve's paradox), no modes are
-        // consistent: the contacts jam (jam(), then holdTogether()).
+        // consistent: the contacts jam (jam(), then holdTogether()). Resistances too stiff to slide
+        // (kStiffShare) jam at once.
         const int again = ++pressed_again[static_cast<std::size_t>(worst)];
+        if (again == 2 && stiffAbout(links, pressed))
+        {
+          accelerations(used, links, modes, rates);
+          return false;
+        }
         if (again == 2)
           for (std::size_t k = 0; k < links.size(); ++k)
             for (const int b : {pressed.body, pressed.other})
@@ -579,6 +600,35 @@ bool ContactSystem<S>::decideModes(const std::vector<ContactBody<S>>& bodies, co
   }
   accelerations(used, links, modes, rates);
   return false;  // did not settle: the last modes stand
+}
+
+template <typename S>
+bool ContactSystem<S>::stiffAbout(const std::vector<ContactLink<S>>& links, const ContactLink<S>& pressed) const
+{
+  const S R = params_.ball_radius, natural_speed = std::sqrt(params_.gravity * R);
+  const auto stiff = [&](const ContactLink<S>& link, S mu) {
+    return mu > S(0) && bandFor(link, mu) < S(kStiffShare) * S(3.5) * mu * natural_speed;
+  };
+  for (const ContactLink<S>& link : links)
+    for (const int b : {pressed.body, pressed.other})
+      if (b >= 0 && (link.body == b || link.other == b) &&
+          (stiff(link, link.mu) || stiff(link, link.rolling / R) || stiff(link, link.drilling / R)))
+        return true;
+  return false;
+}
+
+template <typename S>
+bool ContactSystem<S>::nearPainleve(const std::vector<ContactBody<S>>& bodies, const std::vector<ContactLink<S>>& links,
+                                    const std::vector<LinkMode<S>>& modes) const
+{
+  S fastest = S(0);
+  for (const ContactBody<S>& b : bodies)
+    fastest = std::max(fastest, b.v.squaredNorm());
+  const S load = S(kJamLoad) * params_.ball_mass * (params_.gravity + fastest / params_.ball_radius);
+  for (std::size_t l = 0; l < links.size(); ++l)
+    if (modes[l].pressed && modes[l].lambda > load)
+      return true;
+  return false;
 }
 
 template <typename S>

@@ -118,9 +118,10 @@ public:
   /// Slips slower than this [m/s], and turnings slower than this over R [rad/s], may stick: a sliding
   /// resistance below it is scaled down in proportion (Resist).
   S slideSpeed() const { return slide_speed_; }
-  /// The band [m/s] below which a sliding resistance of coefficient mu (a couple's over R) is scaled
-  /// down in proportion: the slide speed, or wider for a large mu (kBandPerMu).
-  S bandFor(S mu) const;
+  /// The band [m/s] below which a sliding resistance of the link, of coefficient mu (a couple's over
+  /// R), is scaled down in proportion: the slide speed, or wider for a large mu (kBandPerMu) except on
+  /// the slate, whose resistances are the closed forms'.
+  S bandFor(const ContactLink<S>& link, S mu) const;
 
   /// The contact's geometry at the bodies' positions.
   ContactGeometry<S> geometryOf(const ContactLink<S>& link, const std::vector<ContactBody<S>>& bodies) const;
@@ -132,7 +133,8 @@ public:
 
   /// Chooses every contact's modes at this state (the complementarity problem), and the
   /// accelerations they give. Contacts separating faster than `parting` [m/s] are not pressed.
-  /// Returns false if the pivoting did not settle (the last modes are kept).
+  /// Returns false if the pivoting did not settle (the last modes are kept), or settled on forces only
+  /// an impulse would give (nearPainleve).
   bool decideModes(const std::vector<ContactBody<S>>& bodies, const std::vector<ContactLink<S>>& links,
                    std::vector<LinkMode<S>>& modes, std::vector<BodyRates<S>>& rates) const;
 
@@ -198,6 +200,13 @@ private:
   /// must be pressed).
   S pressingInto(const ContactLink<S>& link, const std::vector<ContactBody<S>>& used,
                  const std::vector<BodyRates<S>>& rates) const;
+  /// True if a contact of either body of `pressed` has a resistance too stiff to integrate sliding
+  /// (kStiffShare).
+  bool stiffAbout(const std::vector<ContactLink<S>>& links, const ContactLink<S>& pressed) const;
+  /// True if a pressed contact's force is beyond what any sustained contact carries (kJamLoad): the
+  /// modes are next to Painleve's paradox, and the contacts jam.
+  bool nearPainleve(const std::vector<ContactBody<S>>& bodies, const std::vector<ContactLink<S>>& links,
+                    const std::vector<LinkMode<S>>& modes) const;
   /// The normal forces of the complementarity problem, with the stuck resistances held; false if it
   /// could not be solved.
   bool pressNormals(const Assembly& assembly, Vector& x) const;
