@@ -29,6 +29,7 @@
 #include "python/game_bindings.hpp"
 #include "python/learning_bindings.hpp"
 #include "python/least_squares_bindings.hpp"
+#include "python/soak_bindings.hpp"
 #include "python/state_arrays.hpp"
 
 namespace py = pybind11;
@@ -372,4 +373,5 @@ PYBIND11_MODULE(_core, m)
   bindLearning(m);
   bindCalibration(m);
   bindLeastSquares(m);
+  bindSoak(m);
 }

@@ -2,6 +2,7 @@
 //   rosrun cue_sim soak --shots 100000 --seed 7          (or devel/lib/cue_sim/soak)
 //   rosrun cue_sim soak --replay soak_violations/soak_7_123.yaml
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -16,6 +17,15 @@ void printTally(const char* title, const std::map<std::string, long>& tally)
   std::printf("%s:", title);
   for (const auto& [name, count] : tally)
     std::printf(" %s %ld", name.c_str(), count);
+  std::printf("\n");
+}
+
+/// Each regime's shots per second of one thread (its shots over the time their checks took).
+void printRates(const SoakSummary& s)
+{
+  std::printf("shots/s of a thread by regime:");
+  for (const auto& [regime, seconds] : s.regime_seconds)
+    std::printf(" %s %.0f", regime.c_str(), static_cast<double>(s.regime_shots.at(regime)) / std::max(seconds, 1e-12));
   std::printf("\n");
 }
 
@@ -39,7 +49,8 @@ int replay(const std::vector<std::string>& files)
   {
     const cue_sim::Scene scene = cue_sim::loadSceneFile(file);
     const cue_sim::evaluation::SceneCheck check = cue_sim::evaluation::checkScene(scene, true);
-    std::printf("%s: %ld events, %s, %s\n", file.c_str(), check.events, check.at_rest ? "at rest" : "still moving",
+    const std::string moving = check.endless.empty() ? "still moving" : "cannot end by physics: " + check.endless;
+    std::printf("%s: %ld events, %s, %s\n", file.c_str(), check.events, check.at_rest ? "at rest" : moving.c_str(),
                 check.violations.empty() ? "no violation" : "violations:");
     for (const auto& v : check.violations)
       std::printf("  %s: %s\n", v.kind.c_str(), v.detail.c_str());
@@ -88,13 +99,14 @@ int main(int argc, char** argv)
     for (const auto& [kind, count] : s.violations)
       violations += count;
     std::printf(
-        "soak --seed %llu --first %ld --shots %ld: %ld shots, %ld events, %ld at rest, %ld compared with the "
-        "full scan, %.1f s\n",
+        "soak --seed %llu --first %ld --shots %ld: %ld shots, %ld events, %ld at rest, %ld that cannot end by "
+        "physics (not counted), %ld compared with the full scan, %.1f s\n",
         static_cast<unsigned long long>(options.seed), options.first, options.shots, s.shots, s.events, s.at_rest,
-        s.scanned, s.seconds);
+        s.endless, s.scanned, s.seconds);
     printTally("tables", s.by_table);
     printTally("models", s.by_models);
     printTally("balls", s.by_balls);
+    printRates(s);
     std::printf("violations: %ld\n", violations);
     printTally("by kind", s.violations);
     for (const std::string& report : s.reports)

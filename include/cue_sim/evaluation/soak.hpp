@@ -16,14 +16,15 @@ namespace cue_sim
 {
 namespace evaluation
 {
-/// The limits a campaign's shots run under: 20 s of each shot, and an event allowance no real
-/// shot comes near in that time (a break has a few hundred events; 200 balls at a tenth of the
+/// The limits a campaign's shots run under: at least 20 s of each shot (longer where the
+/// coefficients take longer to stop every ball: src/evaluation/soak/shot_ending.hpp), and an event
+/// allowance no real shot comes near (a break has a few hundred events; 200 balls at a tenth of the
 /// Earth's gravity a few thousand; 119 large balls rolling without resistance and bouncing
 /// elastically on a 9-ft table 380 000). A shot that reaches it is a violation: events that
 /// never end.
 struct SoakLimits
 {
-  static constexpr double max_shot_time = 20.0;  ///< [s]
+  static constexpr double max_shot_time = 20.0;  ///< [s], the least a shot is given
   static constexpr long max_events = 3000000;
 };
 
@@ -31,6 +32,7 @@ struct SoakLimits
 struct Violation
 {
   /// nan, overlap, off_table (in a cushion, jaw or pocket, or off the playing area), energy_gain,
+/// still_moving (moving when every ball's coefficients must have stopped it, none of them zero),
   /// not_repeatable (advanced in steps, or copied mid-shot, it did not give the same events and
   /// state bit for bit), scan_mismatch (the kept search and the full scan of every ball and pair
   /// disagree), event_limit, invalid_start (the campaign made a scene validation refuses),
@@ -51,11 +53,14 @@ struct SceneCheck
   std::vector<Violation> violations;  ///< the first of each kind
   long events = 0;
   bool at_rest = false;
+  /// Not at rest, and cannot be by physics: why (a ball rolling with mu_roll = 0, ...); not a
+  /// violation.
+  std::string endless;
   bool scanned = false;  ///< whether the full scan was compared
 };
 
-/// Runs the scene (struck, if it has a shot) event by event, checking after every event and at
-/// the end that no number is NaN, no ball overlaps another or a cushion, jaw or pocket by more
+/// Runs the scene (struck, if it has a shot) event by event until it is at rest or every ball must
+/// have stopped (stoppingTime), checking after every event and at the end that no number is NaN, no ball overlaps another or a cushion, jaw or pocket by more
 /// than 1e-9 m or is off the playing area, and the kinetic energy has not grown (1e-12 of it),
 /// and that the balls at rest make a scene the engine accepts (Engine::whyInvalid, as `simulate`);
 /// then again advanced in uneven steps and copied mid-shot, which must give the same events and
@@ -77,7 +82,11 @@ struct SoakOptions
 struct SoakSummary
 {
   long shots = 0, events = 0, scanned = 0, at_rest = 0;
+  long endless = 0;  ///< shots that cannot end by physics (SceneCheck::endless): not violations
   std::map<std::string, long> by_table, by_models, by_balls;  ///< shots of each kind
+  /// Each regime's shots and the time their checks took (one thread's): its shots per second.
+  std::map<std::string, long> regime_shots;
+  std::map<std::string, double> regime_seconds;
   std::map<std::string, long> violations;                     ///< by kind
   /// Each shot that broke something: its number, what, and the scene file that reproduces it.
   std::vector<std::string> reports;

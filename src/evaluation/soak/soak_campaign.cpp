@@ -56,7 +56,9 @@ SoakSummary runSoak(const SoakOptions& options, const std::function<void(const S
     const long k = options.first + static_cast<long>(i);
     const Scene scene = soakScene(options.seed, k, options.airborne);
     const bool small = scene.state.balls.size() <= 40;
+    const auto shot_started = std::chrono::steady_clock::now();
     const SceneCheck check = checkScene(scene, small || k % std::max(1L, options.full_scan_every) == 0);
+    const double shot_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - shot_started).count();
     std::string written;
     if (!check.violations.empty())
       written = writeViolation(options, k, scene, check);
@@ -65,9 +67,13 @@ SoakSummary runSoak(const SoakOptions& options, const std::function<void(const S
     summary.events += check.events;
     summary.scanned += check.scanned;
     summary.at_rest += check.at_rest;
+    summary.endless += !check.endless.empty();
     ++summary.by_table[scene.table_name];
-    ++summary.by_models[scene.models.ball_ball + "/" + scene.models.cushion +
-                        (options.airborne ? "/" + scene.models.ball_table + "/" + scene.models.cue : "")];
+    const std::string regime = scene.models.ball_ball + "/" + scene.models.cushion +
+                               (options.airborne ? "/" + scene.models.ball_table + "/" + scene.models.cue : "");
+    ++summary.by_models[regime];
+    ++summary.regime_shots[regime];
+    summary.regime_seconds[regime] += shot_seconds;
     ++summary.by_balls[ballsBucket(scene.state.balls.size())];
     for (const Violation& v : check.violations)
       ++summary.violations[v.kind];

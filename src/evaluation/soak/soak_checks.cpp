@@ -8,6 +8,7 @@
 #include "cue_sim/physics/motion.hpp"
 #include "cue_sim/physics/scan.hpp"
 #include "cue_sim/physics/simulation.hpp"
+#include "shot_ending.hpp"
 
 namespace cue_sim
 {
@@ -226,7 +227,7 @@ SceneCheck checkScene(const Scene& scene, bool full_scan)
     InvariantCheck invariants(engine);
     invariants.look(simulation.state(), simulation.time(), "at the start,", check.violations);
     std::vector<Event<double>> events;
-    const double end = struck.time + SoakLimits::max_shot_time;
+    const double end = struck.time + stoppingTime(struck, scene.params);
     try
     {
       while (!simulation.atRest())
@@ -246,6 +247,18 @@ SceneCheck checkScene(const Scene& scene, bool full_scan)
     }
     check.events = static_cast<long>(events.size());
     check.at_rest = simulation.atRest();
+    // Still moving when every ball must have stopped: a ball whose coefficients never stop it, or a
+    // shot that does not end.
+    if (!check.at_rest)
+    {
+      check.endless = endlessByPhysics(simulation.state(), scene.params);
+      if (check.endless.empty())
+      {
+        std::ostringstream why;
+        why << "still moving at t = " << end << " s, by when every ball must have stopped";
+        check.violations.push_back({"still_moving", why.str()});
+      }
+    }
     // A shot ends in a state the engine, and so `simulate`, accepts as a scene.
     if (check.at_rest)
     {

@@ -462,11 +462,11 @@ void EventResolver<S>::meetWithinGroup(const ContactSystem<S>& system, SupportGr
     bool any = false;
     for (const ContactLink<S>& l : g.links)
     {
-      // (What closes within rounding is no closing: stopped, it would only stir the balls' rounding.)
+      // (What closes slower than zeroSpeed is no closing, for the event search too: stopped, it would
+      // only stir the balls' rounding. What closes faster the search finds again at once, so it is
+      // stopped however slow.)
       const S closing = closingOf(l);
-      const ContactBody<S>& one = g.bodies[static_cast<std::size_t>(l.body)];
-      if (!(closing >
-            roundingSpeed(one.v.norm() + (l.other >= 0 ? g.bodies[static_cast<std::size_t>(l.other)].v.norm() : S(0)))))
+      if (!(closing > zeroSpeed<S>()))
         continue;
       const Vec3<S> n = system.geometryOf(l, g.bodies).n;
       ContactBody<S>& b = g.bodies[static_cast<std::size_t>(l.body)];
@@ -644,7 +644,7 @@ void EventResolver<S>::stepGroup(S time, int seed)
       const std::size_t l = link_of[static_cast<std::size_t>(step.crossed.link)];
       MarginTag tag = step.crossed;
       tag.link = static_cast<int>(l);
-      if (flipMode(tag, g.modes))
+      if (flipMode(tag, g.modes, system.grazeForce()))
       {
         system.accelerations(g.bodies, g.links, g.modes, g.rates);
         continue;

@@ -95,6 +95,12 @@ S ContactSystem<S>::bandFor(const ContactLink<S>& link, S mu) const
 }
 
 template <typename S>
+S ContactSystem<S>::grazeForce() const
+{
+  return S(kGrazeForce) * params_.ball_mass * params_.gravity;
+}
+
+template <typename S>
 ContactGeometry<S> ContactSystem<S>::geometryOf(const ContactLink<S>& link,
                                                 const std::vector<ContactBody<S>>& bodies) const
 {
@@ -693,7 +699,7 @@ void ContactSystem<S>::margins(const std::vector<ContactBody<S>>& bodies, const 
 }
 
 template <typename S>
-bool flipMode(const MarginTag& tag, std::vector<LinkMode<S>>& modes)
+bool flipMode(const MarginTag& tag, std::vector<LinkMode<S>>& modes, S graze_force)
 {
   if (tag.link < 0 || tag.link >= static_cast<int>(modes.size()))
     return false;
@@ -704,6 +710,8 @@ bool flipMode(const MarginTag& tag, std::vector<LinkMode<S>>& modes)
       mode.pressed = true;
       return true;
     case MarginKind::Press:
+      if (mode.lambda > graze_force)
+        return false;
       mode.pressed = false;
       return true;
     case MarginKind::Slip:
@@ -935,8 +943,8 @@ template class ContactSystem<double>;
 template class ContactSystem<long double>;
 template double groupEnergy(const std::vector<ContactBody<double>>&, const PhysicsParams<double>&);
 template long double groupEnergy(const std::vector<ContactBody<long double>>&, const PhysicsParams<long double>&);
-template bool flipMode(const MarginTag&, std::vector<LinkMode<double>>&);
-template bool flipMode(const MarginTag&, std::vector<LinkMode<long double>>&);
+template bool flipMode(const MarginTag&, std::vector<LinkMode<double>>&, double);
+template bool flipMode(const MarginTag&, std::vector<LinkMode<long double>>&, long double);
 
 }  // namespace physics
 }  // namespace cue_sim

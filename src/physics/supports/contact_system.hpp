@@ -97,9 +97,12 @@ struct MarginTag
 };
 
 /// Turns the mode a crossed margin watched to the mode that holds beyond it (a free contact pressed, a
-/// pressed one let go, a stuck resistance sliding); false where the margin has no such mode.
+/// pressed one let go, a stuck resistance sliding); false where the margin has no such mode, or where
+/// a pressed contact still presses harder than `graze_force` [N] (it is let go at the step's end, where
+/// its force reaches zero: let go before it, its bodies' own paths would still press it, and the
+/// event search find it again at once).
 template <typename S>
-bool flipMode(const MarginTag& tag, std::vector<LinkMode<S>>& modes);
+bool flipMode(const MarginTag& tag, std::vector<LinkMode<S>>& modes, S graze_force);
 
 template <typename S>
 struct BodyRates
@@ -118,6 +121,8 @@ public:
   /// Slips slower than this [m/s], and turnings slower than this over R [rad/s], may stick: a sliding
   /// resistance below it is scaled down in proportion (Resist).
   S slideSpeed() const { return slide_speed_; }
+  /// The force [N] below which a free contact is not pressed (kGrazeForce of the weight).
+  S grazeForce() const;
   /// The band [m/s] below which a sliding resistance of the link, of coefficient mu (a couple's over
   /// R), is scaled down in proportion: the slide speed, or wider for a large mu (kBandPerMu) except on
   /// the slate, whose resistances are the closed forms'.
