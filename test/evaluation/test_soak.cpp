@@ -159,3 +159,50 @@ TEST(Soak, AirborneScenesFlyStartValidAndStrikeBallsOnTheCloth)
   EXPECT_GT(flying, 60);
   EXPECT_GT(sequential, 60);
 }
+
+// Issue 53: a shot runs until its coefficients must have stopped every ball; one still moving then
+// is a violation, unless a ball's motion cannot end by physics (a coefficient of zero), which is
+// told apart and not counted.
+namespace
+{
+Scene oneBall(const std::string& physics, const std::string& ball)
+{
+  return loadScene("table: 7ft\nphysics: {" + physics + "}\nballs:\n  - {id: 0, " + ball + "}\n");
+}
+}  // namespace
+
+TEST(Soak, AShotThatCannotEndByPhysicsIsToldApart)
+{
+  struct Case
+  {
+    const char *physics, *ball, *why;
+  };
+  for (const Case& c : {Case{"mu_roll: 0", "position: [0, 0], velocity: [0.5, 0.2], angular_velocity: [0, 0, 0]",
+                             "mu_roll = 0"},
+                        Case{"mu_spin: 0", "position: [0, 0], velocity: [0, 0], angular_velocity: [0, 0, 10]",
+                             "mu_spin = 0"},
+                        Case{"mu_slide: 0", "position: [0, 0], velocity: [0.3, 0], angular_velocity: [0, 0, 0]",
+                             "mu_slide = 0"}})
+  {
+    SCOPED_TRACE(c.physics);
+    const SceneCheck check = checkScene(oneBall(c.physics, c.ball), true);
+    for (const Violation& v : check.violations)
+      ADD_FAILURE() << v.kind << ": " << v.detail;
+    EXPECT_FALSE(check.at_rest);
+    EXPECT_NE(check.endless.find(c.why), std::string::npos) << check.endless;
+  }
+}
+
+TEST(Soak, ASlowShotRunsUntilItsCoefficientsStopIt)
+{
+  // Under a hundredth of the Earth's gravity against a rolling resistance of 1e-3, a ball rolling at
+  // 0.3 m/s takes 0.3 / (1e-3 0.1) = 3000 s to stop: far past the 20 s every shot is given at least.
+  const SceneCheck check =
+      checkScene(oneBall("gravity: 0.1, mu_roll: 0.001",
+                         "position: [0, 0], velocity: [0.3, 0.1], angular_velocity: [-3.4995625, 10.498687, 0]"),
+                 true);
+  for (const Violation& v : check.violations)
+    ADD_FAILURE() << v.kind << ": " << v.detail;
+  EXPECT_TRUE(check.at_rest);
+  EXPECT_TRUE(check.endless.empty()) << check.endless;
+}

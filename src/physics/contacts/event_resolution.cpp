@@ -157,7 +157,8 @@ void EventResolver<S>::wakeHeldBalls(S time)
 {
   // A ball set moving may have held a ball up: every held ball touching it falls (and is held
   // again a few events later if its supports still hold it). A ball that stops, or keeps only a
-  // spin, lets none fall. Each fallen ball is looked around in turn (a stack).
+  // spin, lets none fall, nor does any ball one that a group held in this event, judged with it as
+  // it moves now. Each fallen ball is looked around in turn (a stack).
   if (std::none_of(state_.balls.begin(), state_.balls.end(), [](const Ball<S>& b) { return b.held(); }))
     return;
   const std::vector<int>& list = context_.changed ? *context_.changed : changed_here_;
@@ -170,6 +171,7 @@ void EventResolver<S>::wakeHeldBalls(S time)
       continue;
     nearBalls(evolve(state_.balls[index], time, params_).r.template head<2>(),
               S(2) * params_.ball_radius + S(kHeldReach), near);
+    near.erase(std::remove_if(near.begin(), near.end(), [&](int j) { return heldHere(j); }), near.end());
     fallen.clear();
     letHeldBallsFall(state_, index, time, params_, near, fallen);
     for (int j : fallen)

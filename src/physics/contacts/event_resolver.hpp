@@ -4,6 +4,8 @@
 // and the event itself, pocketing and neighbours (event_resolution.cpp).
 #pragma once
 
+#include <algorithm>
+
 #include <vector>
 
 #include "cue_sim/physics/engine.hpp"
@@ -138,6 +140,10 @@ private:
   /// stops.
   void wallImpact(Ball<S>& ball, const Vec3<S>& normal) const;
   void pocketBall(Ball<S>& ball, int pocket);
+  bool heldHere(int index) const
+  {
+    return std::find(held_here_.begin(), held_here_.end(), index) != held_here_.end();
+  }
   void changed(int index) { (context_.changed ? *context_.changed : changed_here_).push_back(index); }
   /// The balls in play that may be within `distance` of `point`, ascending.
   void nearBalls(const Vec2<S>& point, S distance, std::vector<int>& out) const;
@@ -224,6 +230,10 @@ private:
   /// The balls this resolver changed: context_.changed from changed_from_ on, else changed_here_.
   std::size_t changed_from_;
   std::vector<int> changed_here_;
+  /// The balls a group held at rest in this event: judged with the balls touching them as they now
+  /// move, they are not let fall by them (wakeHeldBalls), or each would fall and be held again at
+  /// the same instant for ever.
+  std::vector<int> held_here_;
 };
 
 template <typename S>

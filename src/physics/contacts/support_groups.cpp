@@ -566,6 +566,8 @@ void EventResolver<S>::holdAtRest(const SupportGroup<S>& g, std::size_t k, bool 
   b.motion = on_slate ? Motion::Stationary : Motion::Held;
   if (on_slate)
     b.r.z() = params_.ball_radius;
+  else
+    held_here_.push_back(g.balls[k]);
   changed(g.balls[k]);
 }
 
