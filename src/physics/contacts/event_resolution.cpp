@@ -183,7 +183,10 @@ template <typename S>
 void EventResolver<S>::restepTouchedGroups(S time)
 {
   // A group's step took the balls touching it as they then moved: one that an event changed since
-  // (struck, stopped, turned) is met by the group's next step, taken now.
+  // (struck, stopped, turned), even at the instant of the step, is met by the group's next step,
+  // taken now. (A group stepped by one event at an instant and left out of the next at the same
+  // instant kept the old path of a ball the next one struck into it: the event search leaves a pair
+  // touching a group to the group, and the ball went 0.5 um into it.)
   const std::vector<int>& list = context_.changed ? *context_.changed : changed_here_;
   const std::size_t end = list.size();
   const S reach = S(2) * params_.ball_radius + supportTouch(params_);
@@ -199,7 +202,7 @@ void EventResolver<S>::restepTouchedGroups(S time)
     for (int j : near)
     {
       const Ball<S>& other = state_.balls[static_cast<std::size_t>(j)];
-      if (other.supported() && other.time < time && time < other.piece.until &&
+      if (other.supported() && other.time <= time && time < other.piece.until &&
           (stateAt(j, time).r - r).norm() <= reach)
         stepGroup(time, j);
     }
