@@ -32,7 +32,7 @@ struct SoakLimits
 struct Violation
 {
   /// nan, overlap, off_table (in a cushion, jaw or pocket, or off the playing area), energy_gain,
-/// still_moving (moving when every ball's coefficients must have stopped it, none of them zero),
+  /// still_moving (moving when every ball's coefficients must have stopped it, none of them zero),
   /// not_repeatable (advanced in steps, or copied mid-shot, it did not give the same events and
   /// state bit for bit), scan_mismatch (the kept search and the full scan of every ball and pair
   /// disagree), event_limit, invalid_start (the campaign made a scene validation refuses),
@@ -60,9 +60,9 @@ struct SceneCheck
 };
 
 /// Runs the scene (struck, if it has a shot) event by event until it is at rest or every ball must
-/// have stopped (stoppingTime), checking after every event and at the end that no number is NaN, no ball overlaps another or a cushion, jaw or pocket by more
-/// than 1e-9 m or is off the playing area, and the kinetic energy has not grown (1e-12 of it),
-/// and that the balls at rest make a scene the engine accepts (Engine::whyInvalid, as `simulate`);
+/// have stopped (stoppingTime), checking after every event and at the end that no number is NaN, no ball overlaps
+/// another or a cushion, jaw or pocket by more than 1e-9 m or is off the playing area, and the kinetic energy has not
+/// grown (1e-12 of it), and that the balls at rest make a scene the engine accepts (Engine::whyInvalid, as `simulate`);
 /// then again advanced in uneven steps and copied mid-shot, which must give the same events and
 /// final state bit for bit; then, if `full_scan`, by the full scan of every ball and pair, which
 /// must too.
@@ -87,7 +87,7 @@ struct SoakSummary
   /// Each regime's shots and the time their checks took (one thread's): its shots per second.
   std::map<std::string, long> regime_shots;
   std::map<std::string, double> regime_seconds;
-  std::map<std::string, long> violations;                     ///< by kind
+  std::map<std::string, long> violations;  ///< by kind
   /// Each shot that broke something: its number, what, and the scene file that reproduces it.
   std::vector<std::string> reports;
   double seconds = 0;

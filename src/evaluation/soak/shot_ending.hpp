@@ -3,8 +3,8 @@
 
 #include <string>
 
-#include "cue_sim/physics/table_state.hpp"
 #include "cue_sim/physics/physics_params.hpp"
+#include "cue_sim/physics/table_state.hpp"
 
 namespace cue_sim
 {

@@ -169,8 +169,9 @@ std::string difference(const std::vector<Event<double>>& events, const TableStat
 }
 
 /// The same shot advanced in uneven steps (from a millisecond to a third of a second, in a
-/// fixed pattern), and continued by a copy of the simulation half way: the events up to `last`.
-void runStepped(const Engine<double>& engine, const TableState<double>& struck, double last,
+/// fixed pattern), and continued by a copy of the simulation half way: the events up to `last` (and,
+/// if the first run came to rest, the steps after them).
+void runStepped(const Engine<double>& engine, const TableState<double>& struck, double last, bool at_rest,
                 std::vector<Event<double>>& events, TableState<double>& state)
 {
   physics::Simulation<double> simulation(engine, struck);
@@ -183,11 +184,20 @@ void runStepped(const Engine<double>& engine, const TableState<double>& struck, 
       simulation = physics::Simulation<double>(simulation);  // a copy finds its search afresh
   }
   simulation.advance(last, &events);
+  // The steps of a group that comes to rest after the last event (an event found instead is one
+  // the first run did not have).
+  if (at_rest)
+  {
+    const Event<double> e = simulation.step();
+    if (e.valid())
+      events.push_back(e);
+  }
   state = simulation.state();
 }
 
-/// The same shot by the full scan of every ball and pair, for as many events as the first run had.
-void runScanned(const Engine<double>& engine, const TableState<double>& struck, std::size_t count,
+/// The same shot by the full scan of every ball and pair, for as many events as the first run had
+/// (and, if that came to rest, the steps after them).
+void runScanned(const Engine<double>& engine, const TableState<double>& struck, std::size_t count, bool at_rest,
                 std::vector<Event<double>>& events, TableState<double>& state)
 {
   state = struck;
@@ -198,6 +208,13 @@ void runScanned(const Engine<double>& engine, const TableState<double>& struck, 
       break;
     events.push_back(e);
   }
+  // The steps of a group that comes to rest after the last event (an event found instead is one
+  // the first run did not have).
+  if (!at_rest)
+    return;
+  const Event<double> e = scanStep(engine, state);
+  if (e.valid())
+    events.push_back(e);
 }
 }  // namespace
 
@@ -271,7 +288,7 @@ SceneCheck checkScene(const Scene& scene, bool full_scan)
     // 2. In steps, with a copy half way.
     std::vector<Event<double>> stepped_events;
     TableState<double> stepped;
-    runStepped(engine, struck, last, stepped_events, stepped);
+    runStepped(engine, struck, last, check.at_rest, stepped_events, stepped);
     why = difference(stepped_events, stepped, events, simulation.state(), check.at_rest);
     if (!why.empty())
       check.violations.push_back({"not_repeatable", "advanced in steps: " + why});
@@ -281,7 +298,7 @@ SceneCheck checkScene(const Scene& scene, bool full_scan)
     {
       std::vector<Event<double>> scanned_events;
       TableState<double> scanned;
-      runScanned(engine, struck, events.size(), scanned_events, scanned);
+      runScanned(engine, struck, events.size(), check.at_rest, scanned_events, scanned);
       why = difference(scanned_events, scanned, events, simulation.state(), check.at_rest);
       if (!why.empty())
         check.violations.push_back({"scan_mismatch", "the full scan: " + why});

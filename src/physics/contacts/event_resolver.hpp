@@ -5,7 +5,6 @@
 #pragma once
 
 #include <algorithm>
-
 #include <vector>
 
 #include "cue_sim/physics/engine.hpp"
@@ -140,10 +139,7 @@ private:
   /// stops.
   void wallImpact(Ball<S>& ball, const Vec3<S>& normal) const;
   void pocketBall(Ball<S>& ball, int pocket);
-  bool heldHere(int index) const
-  {
-    return std::find(held_here_.begin(), held_here_.end(), index) != held_here_.end();
-  }
+  bool heldHere(int index) const { return std::find(held_here_.begin(), held_here_.end(), index) != held_here_.end(); }
   void changed(int index) { (context_.changed ? *context_.changed : changed_here_).push_back(index); }
   /// The balls in play that may be within `distance` of `point`, ascending.
   void nearBalls(const Vec2<S>& point, S distance, std::vector<int>& out) const;
