@@ -756,3 +756,62 @@ TEST(AirborneWalls, ABallThatBouncedToRestIsMetByAHopLikeAFullScanMeetsIt)
   }
   EXPECT_TRUE(met_in_the_air);
 }
+
+// Issue 53: a ball placed in the air falls where it is: over the cloth onto the slate; over a
+// pocket (inside its capture circle) into it; over a cushion's rail onto the rail; beyond the
+// table's edge to the floor. The full scan and the kept search agree on each.
+TEST(AirborneWalls, ABallPlacedInTheAirFallsWhereItIs)
+{
+  const auto table = sevenFoot();
+  const Engine<double> engine(table, PhysicsParams<double>());
+  const PhysicsParams<double>& p = engine.params();
+  const double R = p.ball_radius, nose_y = 0.9906 / 2, edge_y = table->edge().high.y();
+  struct Place
+  {
+    const char* what;
+    double x, y;
+    EventKind kind;
+    int obstacle;  ///< the pocket, the OffTablePlace, or -1
+  };
+  std::vector<Place> places = {{"over the cloth", 0.3, 0.2, EventKind::BallSlate, -1},
+                               {"over the rail", 0.5, (nose_y + edge_y) / 2, EventKind::OffTable, kLandsOnRail},
+                               {"beyond the edge", 0.5, edge_y + 0.1, EventKind::OffTable, kLandsOffTable},
+                               {"beyond the foot", 1.5, 0.0, EventKind::OffTable, kLandsOffTable}};
+  for (std::size_t k = 0; k < table->pockets().size(); ++k)
+  {
+    const Pocket& pocket = table->pockets()[k];
+    places.push_back(
+        {"over a pocket's centre", pocket.centre.x(), pocket.centre.y(), EventKind::Pocketed, static_cast<int>(k)});
+    // Inside its capture circle, on the cloth's side of it.
+    const Eigen::Vector2d in = pocket.centre - 0.9 * pocket.radius * pocket.centre.normalized();
+    places.push_back({"inside a pocket's capture circle", in.x(), in.y(), EventKind::Pocketed, static_cast<int>(k)});
+  }
+  for (const Place& place : places)
+    for (const double height : {0.05, 0.3})
+    {
+      SCOPED_TRACE(std::string(place.what) + " (" + std::to_string(place.x) + ", " + std::to_string(place.y) + ") at " +
+                   std::to_string(height) + " m");
+      TableState<double> s;
+      s.balls.push_back(inTheAir(0, place.x, place.y, height));
+      ASSERT_EQ(engine.whyInvalid(s), "");
+      const std::vector<Event<double>> scanned = runChecked(engine, s);
+      ASSERT_FALSE(scanned.empty());
+      EXPECT_EQ(scanned[0].kind, place.kind) << eventKindName(scanned[0].kind);
+      if (place.obstacle >= 0)
+        EXPECT_EQ(scanned[0].obstacle, place.obstacle);
+      if (place.kind == EventKind::BallSlate)
+        EXPECT_NEAR(scanned[0].time, std::sqrt(2 * height / p.gravity), 1e-12);
+      Simulation<double> kept(engine, s);
+      for (const Event<double>& e : scanned)
+      {
+        const Event<double> k = kept.step();
+        EXPECT_EQ(k.kind, e.kind);
+        EXPECT_EQ(k.time, e.time);
+      }
+      const Ball<double>& b = kept.state().balls[0];
+      if (place.kind == EventKind::OffTable && place.obstacle == kLandsOnRail)
+        EXPECT_NEAR(b.r.z(), p.cushion_height + R, 1e-12) << "on the rail's top";
+      if (place.kind != EventKind::BallSlate)
+        EXPECT_FALSE(b.inPlay());
+    }
+}

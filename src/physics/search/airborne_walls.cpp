@@ -29,6 +29,12 @@ public:
 
   void run()
   {
+    // A ball in the air beyond the table's edge (placed there) falls to the floor now, where it is.
+    if (!touching_ && !((p_.c0.array() >= g_.edge_low.array()).all() && (p_.c0.array() <= g_.edge_high.array()).all()))
+    {
+      keep(S(0), Candidate<S>::Overboard, 0);
+      return;
+    }
     // A flight that stays in the clear box about the cloth's centre meets no wall.
     bool clear = true;
     for (int axis = 0; axis < 2 && clear; ++axis)
@@ -281,6 +287,13 @@ private:
   void pocket(const Circle& pocket, std::size_t k)
   {
     const Vec2<S> rel = p_.c0 - pocket.centre;
+    // In the capture circle already (placed there, over the pocket): it drops in, or, above the
+    // noses, wherever departureOf says it comes down.
+    if (!touching_ && rel.squaredNorm() < pocket.radius * pocket.radius)
+    {
+      keep(S(0), Candidate<S>::Pocket, k);
+      return;
+    }
     if (cannotMeet<S>(rel, p_.c1, p_.c2, pocket.radius, limit()))
       return;
     const S tau = contactTime(distanceGap<S>(rel, p_.c1, p_.c2, pocket.radius), limit(), S(0),
