@@ -104,8 +104,11 @@ def _show(summary: dict, total: int, begin: float, show: bool) -> None:
         return
     rate = summary["shots"] / max(time.perf_counter() - begin, 1e-9)
     left = (total - summary["shots"]) / rate if rate > 0 else 0.0
+    rates = regime_rates(summary)
+    slowest = min(rates, key=rates.get) if rates else None
+    regime = f", slowest regime {slowest} {rates[slowest]:,.0f}/s a core" if slowest else ""
     print(f"\rcue_sim.soak: {summary['shots']}/{total} shots ({100.0 * summary['shots'] / total:.1f} %), "
-          f"{rate:,.0f} shots/s, {summary['events']} events, {_violation_count(summary)} violations, "
+          f"{rate:,.0f} shots/s{regime}, {summary['events']} events, {_violation_count(summary)} violations, "
           f"{left:.0f} s left   ", end="", file=sys.stderr, flush=True)
 
 
