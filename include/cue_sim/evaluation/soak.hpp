@@ -44,8 +44,8 @@ struct Violation
 /// Scene k of the campaign with this seed. With `airborne` (issue 33), balls also fly: some are
 /// thrown (up to 0.3 m above the cloth, up to 6 m/s, up or down at up to 3 m/s), one may be dropped
 /// onto another, and the ball-table and cue models are drawn too (the sequential cue lifts the
-/// struck ball). A scene file cannot yet hold a ball in the air: such a shot is reproduced by its
-/// seed and number with --airborne.
+/// struck ball). Its violations' scene files hold the balls in the air too (their height and
+/// vertical speed).
 Scene soakScene(std::uint64_t seed, long k, bool airborne = false);
 
 struct SceneCheck
