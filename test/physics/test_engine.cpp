@@ -309,3 +309,75 @@ TEST(Engine, SustainedContactJoinsTheBallsInsteadOfEndlessBounces)
   EXPECT_FALSE(s.anyMoving());
   EXPECT_EQ(engine.whyInvalid(s), "");
 }
+
+// Issue 53 (../shared/repro/sticky_cluster_overlap.yaml: balls 22 and 59 ended 2e-8 m into each
+// other): two touching balls rolling past each other, closing or parting within rounding of zero,
+// whose rolling resistances turn them into each other about as fast as their passing turns them
+// apart (d . (a_b - a_a) against -|v_rel|^2), meet at the touch and never go into each other, by
+// the kept search and the full scan alike.
+TEST(Engine, TouchingBallsRollingPastEachOtherMeetAtTheTouch)
+{
+  const PhysicsParams<double> p;
+  const Engine<double> engine(sevenFoot(), p);
+  const double R = p.ball_radius, roll = p.mu_roll * p.gravity;
+  int cases = 0;
+  for (const double heading : {0.0, 0.7, 2.0})
+    for (const double speed_a : {0.0, 0.002, 0.01})
+      for (const double v_rel : {0.01, 0.02})
+        for (const double share : {0.5, 0.9, 0.99, 1.0, 1.01, 1.1, 2.0})
+          for (const double closing : {-1e-14, -1e-15, 0.0, 1e-15, 1e-14})
+          {
+            // Both move along -n (from b towards a) at the same w, so they neither close nor part
+            // but by `closing`; b passes a along u at v_rel. Each rolling resistance is along its own
+            // heading, so b's has less of -n than a's: b is turned into a by (a_b - a_a) . n =
+            // roll w (1/|v_a| - 1/|v_b|) (w < 0), set to share of the passing's -|v_rel|^2 / 2R.
+            const Eigen::Vector2d u(std::cos(heading), std::sin(heading)), n(-u.y(), u.x());
+            const auto turn = [&](double w) {
+              const double a = std::hypot(speed_a, w), b = std::hypot(speed_a + v_rel, w);
+              return roll * w * (1 / a - 1 / b) + share * v_rel * v_rel / (2 * R);
+            };
+            double lo = -1.0, hi = -1e-9, best = hi;
+            for (double w = hi; w > lo; w *= 1.05)  // the strongest turn, then the root above it
+              if (turn(w) < turn(best))
+                best = w;
+            if (!(turn(best) < 0))
+              continue;  // no heading turns them that hard
+            lo = best;
+            for (int k = 0; k < 200; ++k)
+              (turn(0.5 * (lo + hi)) < 0 ? lo : hi) = 0.5 * (lo + hi);
+            const double w = hi;
+            const Eigen::Vector2d va = speed_a * u + w * n, vb = (speed_a + v_rel) * u + (w - closing) * n;
+            TableState<double> s;
+            for (int id = 0; id < 2; ++id)
+            {
+              Ball<double> b;
+              b.id = id;
+              const Eigen::Vector2d v = id == 0 ? va : vb;
+              const Eigen::Vector2d at = id == 0 ? Eigen::Vector2d(0, 0) : Eigen::Vector2d(2 * R * n);
+              b.r = Vec3<double>(at.x(), at.y(), R);
+              b.v = Vec3<double>(v.x(), v.y(), 0);
+              b.w = Vec3<double>(-v.y() / R, v.x() / R, 0);  // rolling
+              settleMotion(b, R);
+              s.balls.push_back(b);
+            }
+            ++cases;
+            TableState<double> kept = s, scanned = s;
+            double deepest = 0;
+            for (int e = 0; e < 200; ++e)
+            {
+              const Event<double> next = scanNextEvent(engine, scanned);
+              if (!next.valid())
+                break;
+              for (int k = 1; k <= 16; ++k)
+                deepest = std::max(deepest,
+                                   -smallestGap(engine, scanned, scanned.time + (next.time - scanned.time) * k / 16));
+              scanStep(engine, scanned);
+            }
+            simulateToRest(engine, kept);
+            EXPECT_LE(deepest, 1e-9) << "heading " << heading << ", speed " << speed_a << ", v_rel " << v_rel
+                                     << ", share " << share << ", closing " << closing;
+            for (int i = 0; i < 2; ++i)
+              EXPECT_EQ(kept.balls[i].r, scanned.balls[i].r) << "ball " << i;
+          }
+  EXPECT_GT(cases, 300);
+}

@@ -40,6 +40,21 @@ S contactTime(const Poly4<S>& gap, S limit, S approach_slope, S touch, bool pres
     return firstDownCrossing(gap, S(0), limit);
   if (gap[1] < approach_slope || (pressing_is_contact && gap[1] <= S(0) && gap[2] < S(0)))
     return S(0);
+  // Closing within rounding (or not at all): the gap goes as gap[2] + gap[3] tau + gap[4] tau^2
+  // times tau^2. Pressing at once, they are in contact now; else they slide past each other, and the
+  // gap returns to its start where that turns negative. (By the form below, a rounding's closing
+  // left (gap(tau) - gap(0)) / tau negative from the start, with no down-crossing to find: two balls
+  // rolling past each other went 2e-8 m into each other,
+  // TouchingBallsRollingPastEachOtherMeetAtTheTouch.)
+  if (pressing_is_contact && gap[1] <= S(0))
+  {
+    const bool closes_at_once =
+        gap[2] < S(0) || (gap[2] == S(0) && (gap[3] < S(0) || (gap[3] == S(0) && gap[4] < S(0))));
+    if (closes_at_once)
+      return S(0);
+    const Poly4<S> curvature = {gap[2], gap[3], gap[4], S(0), S(0)};
+    return firstDownCrossing(curvature, S(0), limit);
+  }
   const Poly4<S> relative = {gap[1], gap[2], gap[3], gap[4], S(0)};
   return firstDownCrossing(relative, S(0), limit);
 }
