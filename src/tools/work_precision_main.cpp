@@ -2,8 +2,9 @@
 //   rosrun cue_sim work_precision --out doc/work_precision        (full report, minutes)
 //   rosrun cue_sim work_precision --quick --out build/wp_quick     (single shots, coarse steps)
 // Writes results.csv, results.md and, with gnuplot installed, work_precision.png; and for the
-// integrated impacts cushion_impact.{csv,md,png} and ball_impact.{csv,md,png} (--impacts-only
-// for these alone).
+// integrated impacts cushion_impact.{csv,md,png} and ball_impact.{csv,md,png}, and for sustained
+// contact in the air contact_precision.{csv,md,png} (--impacts-only for these alone,
+// --contacts-only for the last).
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <cstdlib>
@@ -14,6 +15,7 @@
 #include <sstream>
 
 #include "cue_sim/evaluation/ball_impact_precision.hpp"
+#include "cue_sim/evaluation/contact_precision.hpp"
 #include "cue_sim/evaluation/cushion_precision.hpp"
 #include "cue_sim/evaluation/work_precision.hpp"
 
@@ -143,6 +145,54 @@ void writeImpactReport(const std::filesystem::path& dir, const ImpactReport& rep
   runGnuplot(dir / (report.stem + ".gp"));
 }
 
+/// Sustained contact in the air: contact_tolerance against the error of balls on their supports
+/// after 0.5 s, against long double at the registry's tightest tolerance (contact_precision.*).
+void contactSection(const std::filesystem::path& dir, bool quick)
+{
+  namespace ev = cue_sim::evaluation;
+  constexpr double kReference = 1e-12, kDuration = 0.5;
+  const std::vector<double> tolerances =
+      quick ? std::vector<double>{2e-10, 1e-11} : std::vector<double>{2e-10, 1e-10, 5e-11, 2e-11, 1e-11, 5e-12, 2e-12};
+  std::cerr << "work_precision: sustained contact (contact_tolerance), reference " << kReference << " in long double\n";
+  const std::vector<ev::ContactPrecision> results =
+      ev::contactPrecision(tolerances, kReference, kDuration, quick ? 1 : 5);
+  std::ofstream csv(dir / "contact_precision.csv");
+  std::ofstream md(dir / "contact_precision.md");
+  csv << "tolerance,seconds,max_position_error,max_velocity_error\n";
+  md << "### Sustained contact in the air: error against contact_tolerance\n\n";
+  for (const std::string& scene : ev::contactPrecisionScenes())
+    md << "- " << scene << "\n";
+  md << "\nEach run for " << kDuration << " s of the table's time at the default coefficients; the reference is each "
+     << "in long double at contact_tolerance " << kReference << ". Time: the four runs, median of repeats.\n\n"
+     << "| contact_tolerance [m] | time [s] | largest position error [m] | largest velocity error [m/s] | "
+        "position error by scene [m] |\n"
+     << "|---|---|---|---|---|\n";
+  for (const ev::ContactPrecision& r : results)
+  {
+    csv << r.tolerance << "," << r.seconds_per_run << "," << r.max_position_error << "," << r.max_velocity_error
+        << "\n";
+    md << std::setprecision(3) << "| " << r.tolerance << " | " << r.seconds_per_run << " | " << r.max_position_error
+       << " | " << r.max_velocity_error << " |";
+    for (const double e : r.position_error)
+      md << " " << e;
+    md << " |\n";
+    std::cerr << "  contact_tolerance " << r.tolerance << ": " << r.seconds_per_run << " s, position error "
+              << r.max_position_error << " m\n";
+  }
+  csv.close();
+  std::ofstream gp(dir / "contact_precision.gp");
+  gp << "set terminal pngcairo size 900,600 font ',10'\n"
+     << "set output '" << (dir / "contact_precision.png").string() << "'\n"
+     << "set datafile separator ','\nset logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n"
+     << "set xlabel 'run time of the four scenes [s]'\nset ylabel 'largest error after 0.5 s'\nset grid\n"
+     << "set title 'sustained contact: error against run time (labels: contact\\_tolerance)'\nset key top right\n"
+     << "plot '" << (dir / "contact_precision.csv").string()
+     << "' using 2:3 skip 1 with linespoints pointsize 1.5 title 'position [m]', '' using 2:4 skip 1 with linespoints "
+        "pointsize 1.5 title 'velocity [m/s]', '' using 2:3:1 skip 1 with labels offset 0,1 notitle\n";
+  gp.close();
+  runGnuplot(dir / "contact_precision.gp");
+}
+
 /// The integrated impacts (mathavan2010 at the cushion, mathavan2014 between balls): each one's
 /// error against its tolerance and run time, and every model of its kind beside it.
 void impactSections(const std::filesystem::path& dir, bool quick)
@@ -177,6 +227,9 @@ int main(int argc, char** argv)
   app.add_option("--budget", budget, "stop refining a method once one run takes longer [s]");
   bool plot_only = false;
   app.add_flag("--plot-only", plot_only, "only redraw the plot from the folder's results.csv");
+  bool contacts_only = false;
+  app.add_flag("--contacts-only", contacts_only,
+               "only sustained contact's error against contact_tolerance (contact_precision.*)");
   bool impacts_only = false;
   app.add_flag("--impacts-only", impacts_only,
                "only the integrated impacts' error against their tolerance (cushion_impact.*, ball_impact.*)");
@@ -184,9 +237,15 @@ int main(int argc, char** argv)
 
   const std::filesystem::path dir(out_dir);
   std::filesystem::create_directories(dir);
+  if (contacts_only)
+  {
+    contactSection(dir, quick);
+    return 0;
+  }
   if (impacts_only)
   {
     impactSections(dir, quick);
+    contactSection(dir, quick);
     return 0;
   }
   if (plot_only)
@@ -290,9 +349,11 @@ int main(int argc, char** argv)
            << r.stepper.energy_gain << " | " << r.stepper.slip_reversals << " | " << r.max_error << " |\n";
       }
   }
-  md << "\nThe integrated cushion impact's error against its tolerance: cushion_impact.md, cushion_impact.png.\n";
+  md << "\nThe integrated cushion impact's error against its tolerance: cushion_impact.md, cushion_impact.png; "
+        "sustained contact's against contact_tolerance: contact_precision.md, contact_precision.png.\n";
   md.close();
   impactSections(dir, quick);
+  contactSection(dir, quick);
   csv.close();
   std::cout << verdicts.str();
   writePlot(dir, scene_names);
