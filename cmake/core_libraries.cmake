@@ -146,3 +146,19 @@ find_package(Ceres REQUIRED)
 add_library(cue_sim_least_squares ${CUE_SIM_ROOT}/src/calibration/arrow_least_squares.cpp)
 target_include_directories(cue_sim_least_squares PUBLIC ${CUE_SIM_ROOT}/include)
 target_link_libraries(cue_sim_least_squares PRIVATE Ceres::ceres)
+
+# The soak campaign: random scenes on the bundled tables, each checked at every event. No ROS; the
+# `soak` program and the Python module (cue_sim.soak, its shards on Dask) run it.
+add_library(cue_sim_soak ${CUE_SIM_ROOT}/src/evaluation/soak/soak_scenes.cpp
+  ${CUE_SIM_ROOT}/src/evaluation/soak/soak_checks.cpp ${CUE_SIM_ROOT}/src/evaluation/soak/soak_campaign.cpp
+  ${CUE_SIM_ROOT}/src/evaluation/soak/shot_ending.cpp)
+target_include_directories(cue_sim_soak PUBLIC ${CUE_SIM_ROOT}/include PRIVATE ${CUE_SIM_ROOT}/src)
+target_link_libraries(cue_sim_soak PUBLIC cue_sim_table_description)
+
+# The Python module cue_sim._core's sources and libraries, for both builds to make it from.
+set(CUE_SIM_PYTHON_SOURCES ${CUE_SIM_ROOT}/src/python/module.cpp ${CUE_SIM_ROOT}/src/python/state_arrays.cpp
+  ${CUE_SIM_ROOT}/src/python/game_bindings.cpp ${CUE_SIM_ROOT}/src/python/learning_bindings.cpp
+  ${CUE_SIM_ROOT}/src/python/calibration_bindings.cpp ${CUE_SIM_ROOT}/src/python/least_squares_bindings.cpp
+  ${CUE_SIM_ROOT}/src/python/soak_bindings.cpp)
+set(CUE_SIM_PYTHON_LIBRARIES cue_sim_session cue_sim_table_description cue_sim_learning cue_sim_calibration
+  cue_sim_least_squares cue_sim_soak)
