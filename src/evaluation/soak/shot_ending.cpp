@@ -52,8 +52,10 @@ std::string endlessByPhysics(const physics::TableState<double>& state, const phy
   for (const physics::Ball<double>& b : state.balls)
   {
     const std::string ball = "ball " + std::to_string(b.id);
-    if (b.motion == Motion::Rolling && p.mu_roll == 0)
-      return ball + " rolls with mu_roll = 0";
+    // With no rolling resistance a ball that moves on or over the cloth rolls for ever once its
+    // slide (or its flight) ends, and may go on setting the others moving.
+    if (b.translating() && p.mu_roll == 0)
+      return ball + " moves, and rolls for ever once it rolls: mu_roll = 0";
     if (b.motion == Motion::Sliding && p.mu_slide == 0)
       return ball + " slides with mu_slide = 0";
     if (b.moving() && !b.airborne() && b.w.z() != 0 && p.mu_spin == 0)

@@ -17,9 +17,9 @@ namespace evaluation
 /// motion it leaves goes on for ever (endlessByPhysics).
 double stoppingTime(const physics::TableState<double>& struck, const physics::PhysicsParams<double>& p);
 
-/// Why a shot that has not stopped cannot stop: a ball rolls with no rolling resistance, slides with
-/// no sliding friction or spins with no spin friction (it may go on hitting the others for ever);
-/// empty if no ball's motion goes on for ever by its coefficients.
+/// Why a shot that has not stopped cannot stop: a ball moves with no rolling resistance (it rolls for
+/// ever once its slide ends), slides with no sliding friction or spins with no spin friction (it may
+/// go on hitting the others for ever); empty if no ball's motion goes on for ever by its coefficients.
 std::string endlessByPhysics(const physics::TableState<double>& state, const physics::PhysicsParams<double>& p);
 
 }  // namespace evaluation
