@@ -95,7 +95,7 @@ TEST(Soak, TheScenesEarlierCampaignsBrokeOnNowPass)
        {"stiff_slide_to_roll", "nose_near_the_top", "crawling_on_frictionless_cloth", "wedged_across_a_carom_table",
         "chain_against_the_cushions", "drift_below_zero_speed", "column_across_a_pool_table",
         "corner_wedge_circling_in_rounding", "group_at_rest_after_the_last_event",
-        "held_beside_a_ball_sliding_on_frictionless_cloth"})
+        "held_beside_a_ball_sliding_on_frictionless_cloth", "sliding_at_the_limit_without_rolling_resistance"})
   {
     const Scene scene = loadSceneFile(std::string(CUE_SIM_SOURCE_DIR) + "/test/data/soak/" + name + ".yaml");
     const SceneCheck check = checkScene(scene, true);
