@@ -320,6 +320,39 @@ TEST(MathavanCushion, FrictionsCoupledTooStronglyToSweepAreStillCoulombs)
   }
 }
 
+TEST(MathavanCushion, StronglyCoupledFrictionsScaleDownToRounding)
+{
+  // Frictions coupled too strongly to sweep (mu_cushion 2.2 at a nose at 1.28 R, mu_slide 4.1 on
+  // the cloth; soak seed 8, shot 5521) are solved contact by contact, which must judge a slip's
+  // direction against the impact's own speed scale as the sweeps do: a ball pressed on a cushion
+  // at a few zeroSpeed() (a held ball's rounding) rebounds as it does at 1 m/s, scaled. While the
+  // solve measured slips against zeroSpeed() itself, the two disagreed at every step and such an
+  // impact took 16384 steps (0.3 s) to a different rebound.
+  PhysicsParams<double> p;
+  p.ball_radius = 0.0593495;
+  p.cushion_height = 0.0759674;
+  p.mu_cushion = 2.15701;
+  p.mu_slide = 4.09287;
+  p.e_cushion_work = 0.98;
+  const Vec3<double> v(0.127, -0.999, 0), w(-3.43, 5.82, -1.23), into_play(0.45883612734398488, 0.88852091041459147, 0);
+  const auto reboundAt = [&](double scale) {
+    Ball<double> b;
+    b.r = Vec3<double>(0, 0, p.ball_radius);
+    b.v = scale * v;
+    b.w = scale * w;
+    makeCushionModel<double>("mathavan2010")->resolve(b, into_play, p);
+    return std::make_pair(Vec3<double>(b.v / scale), Vec3<double>(b.w / scale));
+  };
+  const auto unit = reboundAt(1);
+  const double speed_scale = v.norm() + p.ball_radius * w.norm();
+  for (const double scale : {1e-12, 3e-14})
+  {
+    const auto small = reboundAt(scale);
+    EXPECT_LT((small.first - unit.first).norm(), p.cushion_impact_tolerance * speed_scale) << scale;
+    EXPECT_LT(p.ball_radius * (small.second - unit.second).norm(), p.cushion_impact_tolerance * speed_scale) << scale;
+  }
+}
+
 TEST(CushionModels, AMirroredShotReboundsMirrored)
 {
   // Reflecting the shot in the plane through the cushion's normal (x -> -x) reflects the

@@ -46,7 +46,7 @@ typename FrictionalImpact<S, Contacts, Bodies>::Vec2 FrictionalImpact<S, Contact
   // through every step and the step would be halved to nothing.
   const Vec2& heading = sliding.norm() > S(kUnsettledSlip) * slip_without.norm() ? sliding : slip_without;
   const S speed = heading.norm();
-  if (!(speed > std::min(zeroSpeed<S>(), S(kWorkRounding) * speed_scale_)))
+  if (!(speed > slipFloor()))
     return Vec2::Zero();
   return -(limit / speed) * heading;
 }
@@ -106,8 +106,11 @@ bool FrictionalImpact<S, Contacts, Bodies>::solvedContactByContact(const Slips& 
   int assignments = 1;
   for (int c = 0; c < Contacts; ++c)
     assignments *= 3;
-  for (int assignment = 0; assignment < assignments; ++assignment)
+  // The assignment that held at the last step is tried first: contacts change what they do a
+  // few times in an impact.
+  for (int tried = 0; tried < assignments; ++tried)
   {
+    const int assignment = (assignment_hint_ + tried) % assignments;
     Eigen::Matrix<S, kFrictions, kFrictions> a = Eigen::Matrix<S, kFrictions, kFrictions>::Zero();
     Eigen::Matrix<S, kFrictions, 1> b = Eigen::Matrix<S, kFrictions, 1>::Zero();
     std::array<ContactDoes, Contacts> does{};
@@ -123,7 +126,7 @@ bool FrictionalImpact<S, Contacts, Bodies>::solvedContactByContact(const Slips& 
       }
       a.template block<2, 2>(2 * c, 2 * c).setIdentity();
       const Vec2 heading = sliding.template segment<2>(2 * c);
-      if (does[c] == ContactDoes::kUnloaded || !(heading.norm() > zeroSpeed<S>()))
+      if (does[c] == ContactDoes::kUnloaded || !(heading.norm() > slipFloor()))
         continue;
       const Vec2 against = (mu_[c] / heading.norm()) * heading;
       a.template middleRows<2>(2 * c) += against * load_.row(c).template rightCols<kFrictions>();
@@ -135,7 +138,10 @@ bool FrictionalImpact<S, Contacts, Bodies>::solvedContactByContact(const Slips& 
     solved(0) = dp;
     solved.template tail<kFrictions>() = lu.solve(b);
     if (isCoulomb(start, solved, sliding))
+    {
+      assignment_hint_ = assignment;
       return true;
+    }
   }
   return false;
 }

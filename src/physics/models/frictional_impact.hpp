@@ -79,8 +79,10 @@ private:
   static constexpr int kMaxHalvings = 12;
   /// Gauss-Seidel sweeps over the frictions of a step at most, and the relative change at which
   /// they have settled (a sticking contact's impulse is linear in the others': the sweeps
-  /// contract, a few tens reach rounding).
-  static constexpr int kMaxFrictionSweeps = 64;
+  /// contract). A weak coupling settles in a sweep or two; a strong one (mu_cushion 2 and mu_slide
+  /// 4 at a nose: tens of sweeps) is found sooner contact by contact from the last step's
+  /// assignment, a 4x4 or 6x6 solve: 64 sweeps took an impact there 0.4 ms, 4 take it 0.08 ms.
+  static constexpr int kMaxFrictionSweeps = 4;
   static constexpr double kSweepSettled = 1e-15;
   /// A linear solution of a step agrees with Coulomb's law when friction() gives back each of
   /// its frictions within this share of the step's impulses (rounding of a small solve).
@@ -99,6 +101,9 @@ private:
   /// without friction is taken from the latter: the slip has only begun.
   static constexpr double kUnsettledSlip = 1e-2;
 
+  /// A slip below this has no direction: within rounding of zeroSpeed, or of the impact's own
+  /// speed scale when that is itself near rounding (a ball pressed on a cushion at 1e-12 m/s).
+  S slipFloor() const { return std::min(zeroSpeed<S>(), S(kWorkRounding) * speed_scale_); }
   Slips slipsAt(const Impulses& y) const { return slip0_ + slip_per_impulse_ * y; }
   S approachAt(const Impulses& y) const { return approach0_ + approach_per_impulse_.dot(y); }
   /// The main contact's closing speed falls by this per unit P without friction.
@@ -152,6 +157,8 @@ private:
   std::array<Eigen::Matrix<S, 2, 2>, Contacts> stop_;  ///< friction impulse per unit slip that stops it
   S radius_, speed_scale_;
   Impulses impulses_ = Impulses::Zero();
+  /// Where solvedContactByContact starts: the assignment it found last.
+  mutable int assignment_hint_ = 0;
 };
 
 }  // namespace physics

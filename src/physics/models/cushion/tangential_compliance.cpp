@@ -36,6 +36,16 @@ int maxSegments(double eta)
   return 64 + 16 * static_cast<int>(std::ceil(std::min(eta, 1e6)));
 }
 
+/// A rotation's rounding grows by about an ulp a grid point (a stuck phase has at most 4 eta / rate
+/// + 8 of them, under 500): an excess within this share of the stretch's scale is computed afresh
+/// before its sign is trusted.
+constexpr double kRotationTrust = 1e-12;
+/// Newton's steps to a stick's end before bisection takes over (from the secant's point in a
+/// bracket finer than both oscillations it takes about four).
+constexpr int kMaxRootSteps = 16;
+/// A Newton step this small relative to psi has reached rounding.
+constexpr double kRootSettled = 4e-16;
+
 template <typename S>
 class CompliantTangent
 {
@@ -82,48 +92,140 @@ private:
 
   /// Stuck, the spring vibrates freely at eta (eta / rate in psi) from its stretch and rate at
   /// psi_a. It holds while its stretch is within the limit; the first psi past it is bracketed on
-  /// a grid of an eighth of the vibration's half period and of pi/16 in psi, then bisected.
+  /// a grid of an eighth of the vibration's half period and of pi/16 in psi, then found to the
+  /// last bit (firstExcess).
   void stick(const Phase<S>& phase, TangentState<S>& state) const
   {
     const S kappa = eta_ / phase.rate, quarter_turn = phase.end - phase.begin;  // each phase is pi/2 in psi
     const S step = std::min(quarter_turn / (S(4) * kappa), quarter_turn / S(8));
-    S before = state.psi;
+    const StuckSpring spring(state, kappa, eta_, limit_);
+    // The grid turns the spring's phase and psi by fixed rotations: no sine or cosine per point.
+    // A rotation's rounding grows by an ulp a point, so a point whose excess is within
+    // kRotationTrust of the limit's scale is computed afresh, and the grid starts afresh there.
+    const S turn_cos = std::cos(kappa * step), turn_sin = std::sin(kappa * step);
+    const S psi_cos = std::cos(step), psi_sin = std::sin(step);
+    S before = state.psi, cos_u = 1, sin_u = 0, cos_psi = std::cos(before), sin_psi = std::sin(before);
+    Sample held{before, spring.excess(before).value};
     while (before < phase.end)
     {
-      const S after = std::min(before + step, phase.end);
-      if (excess(state, kappa, after) > S(0))
+      S after = before + step;
+      Sample next{};
+      if (after >= phase.end)
       {
-        slideFrom(state, kappa, firstExcess(state, kappa, before, after));
+        after = phase.end;
+        next = {after, spring.excess(after).value};
+      }
+      else
+      {
+        rotate(cos_u, sin_u, turn_cos, turn_sin);
+        rotate(cos_psi, sin_psi, psi_cos, psi_sin);
+        next = {after, std::abs(spring.stretch(cos_u, sin_u)) - limit_ * sin_psi};
+        if (std::abs(next.excess) <= S(kRotationTrust) * (std::abs(spring.amplitude()) + limit_))
+        {
+          next.excess = spring.excess(after).value;
+          spring.phaseAt(after, cos_u, sin_u);
+          cos_psi = std::cos(after);
+          sin_psi = std::sin(after);
+        }
+      }
+      if (next.excess > S(0))
+      {
+        slideFrom(state, kappa, firstExcess(spring, held, next));
         return;
       }
       before = after;
+      held = next;
     }
     moveStuck(state, kappa, phase.end);
   }
 
-  /// The stretch beyond the friction limit at psi, stuck since state.psi.
-  S excess(const TangentState<S>& state, S kappa, S psi) const
+  static void rotate(S& c, S& s, S turn_cos, S turn_sin)
   {
-    return std::abs(stretchAt(state, kappa, psi)) - limit_ * std::sin(psi);
+    const S c1 = c * turn_cos - s * turn_sin;
+    s = s * turn_cos + c * turn_sin;
+    c = c1;
+  }
+
+  /// A point's excess: the stretch beyond the friction limit, and its rate in psi.
+  struct Excess
+  {
+    S value, slope;
+  };
+
+  /// The spring stuck since psi_a: stretch x(u) = x_a cos u + (s_a / eta) sin u at u = kappa
+  /// (psi - psi_a), against the limit `limit` sin(psi).
+  class StuckSpring
+  {
+  public:
+    StuckSpring(const TangentState<S>& state, S kappa, S eta, S limit)
+      : psi_(state.psi), kappa_(kappa), x_(state.spring), v_(state.slip / eta), limit_(limit)
+    {
+    }
+    S stretch(S cos_u, S sin_u) const { return x_ * cos_u + v_ * sin_u; }
+    S amplitude() const { return std::hypot(x_, v_); }
+    void phaseAt(S psi, S& cos_u, S& sin_u) const
+    {
+      const S u = kappa_ * (psi - psi_);
+      cos_u = std::cos(u);
+      sin_u = std::sin(u);
+    }
+    Excess excess(S psi) const
+    {
+      S cos_u, sin_u;
+      phaseAt(psi, cos_u, sin_u);
+      const S x = stretch(cos_u, sin_u), rate = kappa_ * (v_ * cos_u - x_ * sin_u);
+      return {std::abs(x) - limit_ * std::sin(psi), (x < S(0) ? -rate : rate) - limit_ * std::cos(psi)};
+    }
+
+  private:
+    S psi_, kappa_, x_, v_, limit_;
+  };
+
+  /// A psi and the excess there.
+  struct Sample
+  {
+    S psi, excess;
+  };
+
+  /// The first psi in (held, past] where the stretch exceeds the limit: excess(held) <= 0 <
+  /// excess(past), with no other crossing between them (the grid is finer than both
+  /// oscillations). Newton's steps from the secant's point, kept inside the bracket (a bisection
+  /// where one would leave it), each narrowing it; then the bracket's ends walked to adjacent
+  /// numbers. The answer is on the side past the limit.
+  S firstExcess(const StuckSpring& spring, Sample held, Sample past) const
+  {
+    S psi = held.psi - held.excess * (past.psi - held.psi) / (past.excess - held.excess);
+    for (int n = 0; n < kMaxRootSteps; ++n)
+    {
+      const S middle = held.psi + (past.psi - held.psi) / 2;
+      if (!(middle > held.psi && middle < past.psi))
+        return past.psi;
+      if (!(psi > held.psi && psi < past.psi))
+        psi = middle;
+      const Excess at = spring.excess(psi);
+      (at.value > S(0) ? past : held) = {psi, at.value};
+      const S newton = psi - at.value / at.slope;
+      // Converged: the other side is the neighbouring number.
+      if (newton == psi || std::abs(newton - psi) <= S(kRootSettled) * std::abs(psi))
+        psi = at.value > S(0) ? std::nextafter(psi, held.psi) : std::nextafter(psi, past.psi);
+      else
+        psi = newton;
+    }
+    // Rounding keeps Newton from settling: bisection to the last bit.
+    for (;;)
+    {
+      const S middle = held.psi + (past.psi - held.psi) / 2;
+      if (!(middle > held.psi && middle < past.psi))
+        return past.psi;
+      const S value = spring.excess(middle).value;
+      (value > S(0) ? past : held) = {middle, value};
+    }
   }
 
   S stretchAt(const TangentState<S>& state, S kappa, S psi) const
   {
     const S u = kappa * (psi - state.psi);
     return state.spring * std::cos(u) + state.slip / eta_ * std::sin(u);
-  }
-
-  /// The first psi in (held, past] where the stretch exceeds the limit: excess(held) <= 0 <
-  /// excess(past). Bisection to the last bit; the answer is on the side past the limit.
-  S firstExcess(const TangentState<S>& state, S kappa, S held, S past) const
-  {
-    for (;;)
-    {
-      const S middle = held + (past - held) / 2;
-      if (!(middle > held && middle < past))
-        return past;
-      (excess(state, kappa, middle) > S(0) ? past : held) = middle;
-    }
   }
 
   void moveStuck(TangentState<S>& state, S kappa, S psi) const
