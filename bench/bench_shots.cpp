@@ -2,9 +2,13 @@
 // bench`. Each reports the time per shot, the events per shot and the time per event.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <chrono>
+
 #include "bench_scenes.hpp"
 #include "cue_sim/evaluation/ball_impact_precision.hpp"
 #include "cue_sim/evaluation/cushion_precision.hpp"
+#include "cue_sim/evaluation/soak.hpp"
 #include "cue_sim/physics/batch.hpp"
 #include "cue_sim/session/live_table.hpp"
 
@@ -146,6 +150,53 @@ void registerImpactCost(const std::string& name, std::vector<Arrival> arrivals, 
   })->Unit(benchmark::kMicrosecond);
 }
 
+/// Coefficients across the registry's ranges: those of the soak's first kRangeScenes scenes
+/// (each coefficient its default half the time, else a bound or between them), and the speed
+/// scales an impact meets: a shot's, a ball pressed on another's, a held ball's rounding.
+constexpr long kRangeScenes = 64;
+const double kRangeSpeedScales[] = {1.0, 1e-6, 1e-13};
+
+std::vector<PhysicsParams<double>> registryRangeParams()
+{
+  std::vector<PhysicsParams<double>> params;
+  for (long k = 0; k < kRangeScenes; ++k)
+    params.push_back(cue_sim::evaluation::soakScene(1, k, false).params);
+  return params;
+}
+
+/// A model's impacts over the registry's ranges, `arrivals(p)` at each coefficient set and speed
+/// scale, each timed: the mean and the worst single impact (worst_us, the figure issue 53 holds
+/// under a millisecond).
+template <typename Arrivals, typename Resolve>
+void registerImpactCostOverRanges(const std::string& name, Arrivals arrivals, Resolve resolve)
+{
+  benchmark::RegisterBenchmark(name.c_str(), [arrivals, resolve](benchmark::State& s) {
+    static const std::vector<PhysicsParams<double>> ranges = registryRangeParams();
+    double worst = 0;
+    long impacts = 0;
+    for (auto _ : s)
+      for (const PhysicsParams<double>& p : ranges)
+        for (auto arrival : arrivals(p))
+          for (const double scale : kRangeSpeedScales)
+          {
+            const auto start = std::chrono::steady_clock::now();
+            benchmark::DoNotOptimize(resolve(arrival, scale, p));
+            worst = std::max(worst, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+            ++impacts;
+          }
+    s.counters["ns_per_impact"] =
+        benchmark::Counter(static_cast<double>(impacts), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    s.counters["worst_us"] = worst * 1e6;
+  })->Unit(benchmark::kMillisecond);
+}
+
+Ball<double> scaled(Ball<double> b, double scale)
+{
+  b.v *= scale;
+  b.w *= scale;
+  return b;
+}
+
 /// The 8-ball break with these models, as eight_ball_break_<model>.
 void registerBreak(const std::string& model, const ModelChoice& models)
 {
@@ -176,6 +227,15 @@ const int registered = [] {
                          return b;
                        });
     registerBreak(model, ModelChoice(ModelChoice().ball_ball, model));
+    registerImpactCostOverRanges(
+        "cushion_impact_" + model + "_over_the_registry",
+        [](const PhysicsParams<double>& q) { return cue_sim::evaluation::cushionArrivals(q); },
+        [resolver = std::shared_ptr(makeCushionModel<double>(model))](const Ball<double>& arrival, double scale,
+                                                                      const PhysicsParams<double>& q) {
+          Ball<double> b = scaled(arrival, scale);
+          resolver->resolve(b, Vec3<double>(0, -1, 0), q);
+          return b;
+        });
   }
   for (const std::string& model : ballBallModelNames())
   {
@@ -185,6 +245,15 @@ const int registered = [] {
                          return pair;
                        });
     registerBreak(model, ModelChoice(model, ModelChoice().cushion));
+    registerImpactCostOverRanges(
+        "ball_impact_" + model + "_over_the_registry",
+        [](const PhysicsParams<double>& q) { return cue_sim::evaluation::ballArrivals(q); },
+        [resolver = std::shared_ptr(makeBallBallModel<double>(model))](const auto& arrival, double scale,
+                                                                       const PhysicsParams<double>& q) {
+          auto pair = std::make_pair(scaled(arrival.first, scale), scaled(arrival.second, scale));
+          resolver->resolve(pair.first, pair.second, q);
+          return pair;
+        });
   }
   return 0;
 }();
