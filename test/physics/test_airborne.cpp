@@ -760,39 +760,68 @@ TEST(AirborneWalls, ABallThatBouncedToRestIsMetByAHopLikeAFullScanMeetsIt)
 // Issue 53: a ball placed in the air falls where it is: over the cloth onto the slate; over a
 // pocket (inside its capture circle) into it; over a cushion's rail onto the rail; beyond the
 // table's edge to the floor. The full scan and the kept search agree on each.
-TEST(AirborneWalls, ABallPlacedInTheAirFallsWhereItIs)
+namespace
 {
-  const auto table = sevenFoot();
+/// Balls placed in the air all over `table`, each run by the full scan against the kept search.
+void placedBallsFallWhereTheyAre(const std::shared_ptr<const TableModel>& table)
+{
   const Engine<double> engine(table, PhysicsParams<double>());
   const PhysicsParams<double>& p = engine.params();
-  const double R = p.ball_radius, nose_y = 0.9906 / 2, edge_y = table->edge().high.y();
+  const double R = p.ball_radius;
+  const Eigen::Vector2d centre = table->clothCentre();
+  const Eigen::Vector2d nose(table->clothLength() / 2, table->clothWidth() / 2);
+  const Eigen::Vector2d edge = table->edge().high - centre;
+  const Eigen::Vector2d rail = (nose + edge) / 2;  // half way across the rail
   struct Place
   {
-    const char* what;
-    double x, y;
+    std::string what;
+    Eigen::Vector2d at;  // from the cloth's centre
     EventKind kind;
     int obstacle;  ///< the pocket, the OffTablePlace, or -1
   };
-  std::vector<Place> places = {{"over the cloth", 0.3, 0.2, EventKind::BallSlate, -1},
-                               {"over the rail", 0.5, (nose_y + edge_y) / 2, EventKind::OffTable, kLandsOnRail},
-                               {"beyond the edge", 0.5, edge_y + 0.1, EventKind::OffTable, kLandsOffTable},
-                               {"beyond the foot", 1.5, 0.0, EventKind::OffTable, kLandsOffTable}};
+  std::vector<Place> places = {{"over the cloth", {0.3, 0.2}, EventKind::BallSlate, -1},
+                               {"beyond the edge", {0.5, edge.y() + 0.1}, EventKind::OffTable, kLandsOffTable},
+                               {"beyond the foot", {edge.x() + 0.1, 0.0}, EventKind::OffTable, kLandsOffTable},
+                               {"far off the table", {40.0, -30.0}, EventKind::OffTable, kLandsOffTable}};
+  for (const double side : {-1.0, 1.0})
+  {
+    places.push_back({"over a long rail", {0.4 * nose.x(), side * rail.y()}, EventKind::OffTable, kLandsOnRail});
+    places.push_back({"over a short rail", {side * rail.x(), 0.0}, EventKind::OffTable, kLandsOnRail});
+    if (table->pockets().empty())
+      places.push_back(
+          {"over a corner's rail", {side * rail.x(), -side * rail.y()}, EventKind::OffTable, kLandsOnRail});
+    // Beyond both cushions' lines, just inside the table's outer corner: on a carom table its
+    // rail; on a pool table, where the corner pocket's capture circle reaches it, the pocket.
+    for (const double other : {-1.0, 1.0})
+    {
+      const Eigen::Vector2d at(side * (edge.x() - 0.01), other * (edge.y() - 0.01));
+      Place place{"inside the table's outer corner", at, EventKind::OffTable, kLandsOnRail};
+      for (std::size_t k = 0; k < table->pockets().size(); ++k)
+        if ((centre + at - table->pockets()[k].centre).norm() < table->pockets()[k].radius)
+          place = {"inside the table's outer corner, in a capture circle", at, EventKind::Pocketed,
+                   static_cast<int>(k)};
+      places.push_back(place);
+    }
+  }
   for (std::size_t k = 0; k < table->pockets().size(); ++k)
   {
     const Pocket& pocket = table->pockets()[k];
-    places.push_back(
-        {"over a pocket's centre", pocket.centre.x(), pocket.centre.y(), EventKind::Pocketed, static_cast<int>(k)});
+    const Eigen::Vector2d at = pocket.centre - centre;
+    places.push_back({"over a pocket's centre", at, EventKind::Pocketed, static_cast<int>(k)});
     // Inside its capture circle, on the cloth's side of it.
-    const Eigen::Vector2d in = pocket.centre - 0.9 * pocket.radius * pocket.centre.normalized();
-    places.push_back({"inside a pocket's capture circle", in.x(), in.y(), EventKind::Pocketed, static_cast<int>(k)});
+    places.push_back({"inside a pocket's capture circle", at - 0.9 * pocket.radius * at.normalized(),
+                      EventKind::Pocketed, static_cast<int>(k)});
   }
   for (const Place& place : places)
     for (const double height : {0.05, 0.3})
     {
-      SCOPED_TRACE(std::string(place.what) + " (" + std::to_string(place.x) + ", " + std::to_string(place.y) + ") at " +
+      SCOPED_TRACE(place.what + " (" + std::to_string(place.at.x()) + ", " + std::to_string(place.at.y()) + ") at " +
                    std::to_string(height) + " m");
+      if (place.kind == EventKind::OffTable && place.obstacle == kLandsOnRail)
+        for (const Pocket& pocket : table->pockets())
+          ASSERT_GT((centre + place.at - pocket.centre).norm(), pocket.radius) << "a rail's place in a capture circle";
       TableState<double> s;
-      s.balls.push_back(inTheAir(0, place.x, place.y, height));
+      s.balls.push_back(inTheAir(0, centre.x() + place.at.x(), centre.y() + place.at.y(), height));
       ASSERT_EQ(engine.whyInvalid(s), "");
       const std::vector<Event<double>> scanned = runChecked(engine, s);
       ASSERT_FALSE(scanned.empty());
@@ -814,4 +843,19 @@ TEST(AirborneWalls, ABallPlacedInTheAirFallsWhereItIs)
       if (place.kind != EventKind::BallSlate)
         EXPECT_FALSE(b.inPlay());
     }
+}
+}  // namespace
+
+TEST(AirborneWalls, ABallPlacedInTheAirFallsWhereItIs)
+{
+  // On each kind of table (pool of two sizes, with pockets; carom, without): over the cloth, the
+  // rails on every side, the corners where there is no pocket, the table's outer corners, beyond
+  // its edge and far off it, and over and inside every pocket's capture circle.
+  for (const auto& table :
+       {sevenFoot(), std::make_shared<const TableModel>(TableModel::pool("9ft", 2.54, 1.27, 0.118, 0.137)),
+        std::make_shared<const TableModel>(TableModel::carom("carom", 2.84, 1.42))})
+  {
+    SCOPED_TRACE(table->name());
+    placedBallsFallWhereTheyAre(table);
+  }
 }

@@ -35,6 +35,14 @@ public:
       keep(S(0), Candidate<S>::Overboard, 0);
       return;
     }
+    // Beyond both cushions' lines at once and clear of the noses (placed over a corner's rail, or
+    // behind a corner pocket outside its capture circle): no cushion's line runs beside it for a
+    // segment to find it over its top, so it comes down now where departureOf says.
+    if (!touching_ && aboveTop(S(0)) > S(0) && beyondBothCushionLines() && !inACaptureCircle())
+    {
+      keep(S(0), Candidate<S>::Overboard, 0);
+      return;
+    }
     // A flight that stays in the clear box about the cloth's centre meets no wall.
     bool clear = true;
     for (int axis = 0; axis < 2 && clear; ++axis)
@@ -95,6 +103,18 @@ private:
 
   /// The centre's height above the walls' top at tau (the path's height is the ball's lowest
   /// point's, R below the centre).
+  bool beyondBothCushionLines() const
+  {
+    const auto beyond = [&](int axis) { return p_.c0[axis] < g_.cloth_low[axis] || p_.c0[axis] > g_.cloth_high[axis]; };
+    return beyond(0) && beyond(1);
+  }
+  bool inACaptureCircle() const
+  {
+    for (const Circle& pocket : g_.pockets)
+      if ((p_.c0 - pocket.centre).squaredNorm() < pocket.radius * pocket.radius)
+        return true;
+    return false;
+  }
   S aboveTop(S tau) const { return p_.heightAt(tau) + R_ - g_.nose_height; }
 
   void segment(const Segment& seg, std::size_t k)
