@@ -777,7 +777,8 @@ void placedBallsFallWhereTheyAre(const std::shared_ptr<const TableModel>& table)
     std::string what;
     Eigen::Vector2d at;  // from the cloth's centre
     EventKind kind;
-    int obstacle;  ///< the pocket, the OffTablePlace, or -1
+    int obstacle;                                        ///< the pocket, the OffTablePlace, or -1
+    Eigen::Vector2d throw_to = Eigen::Vector2d::Zero();  ///< thrown level to land this far away
   };
   std::vector<Place> places = {{"over the cloth", {0.3, 0.2}, EventKind::BallSlate, -1},
                                {"beyond the edge", {0.5, edge.y() + 0.1}, EventKind::OffTable, kLandsOffTable},
@@ -790,6 +791,16 @@ void placedBallsFallWhereTheyAre(const std::shared_ptr<const TableModel>& table)
     if (table->pockets().empty())
       places.push_back(
           {"over a corner's rail", {side * rail.x(), -side * rail.y()}, EventKind::OffTable, kLandsOnRail});
+    // Thrown level from over a rail to come down on the cloth's centre (the throw's speed is
+    // set per height below): over the nose, onto the cloth.
+    const Eigen::Vector2d long_rail(0.4 * nose.x(), side * rail.y()), short_rail(side * rail.x(), 0.0);
+    places.push_back({"thrown in from a long rail", long_rail, EventKind::BallSlate, -1, -long_rail});
+    places.push_back({"thrown in from a short rail", short_rail, EventKind::BallSlate, -1, -short_rail});
+    if (table->pockets().empty())
+    {
+      const Eigen::Vector2d corner(side * rail.x(), -side * rail.y());
+      places.push_back({"thrown in from a corner's rail", corner, EventKind::BallSlate, -1, -corner});
+    }
     // Beyond both cushions' lines, just inside the table's outer corner: on a carom table its
     // rail; on a pool table, where the corner pocket's capture circle reaches it, the pocket.
     for (const double other : {-1.0, 1.0})
@@ -821,7 +832,10 @@ void placedBallsFallWhereTheyAre(const std::shared_ptr<const TableModel>& table)
         for (const Pocket& pocket : table->pockets())
           ASSERT_GT((centre + place.at - pocket.centre).norm(), pocket.radius) << "a rail's place in a capture circle";
       TableState<double> s;
-      s.balls.push_back(inTheAir(0, centre.x() + place.at.x(), centre.y() + place.at.y(), height));
+      const double fall = std::sqrt(2 * height / p.gravity);
+      const Eigen::Vector2d velocity = place.throw_to / fall;
+      s.balls.push_back(inTheAir(0, centre.x() + place.at.x(), centre.y() + place.at.y(), height,
+                                 Vec3<double>(velocity.x(), velocity.y(), 0.0)));
       ASSERT_EQ(engine.whyInvalid(s), "");
       const std::vector<Event<double>> scanned = runChecked(engine, s);
       ASSERT_FALSE(scanned.empty());
@@ -829,7 +843,7 @@ void placedBallsFallWhereTheyAre(const std::shared_ptr<const TableModel>& table)
       if (place.obstacle >= 0)
         EXPECT_EQ(scanned[0].obstacle, place.obstacle);
       if (place.kind == EventKind::BallSlate)
-        EXPECT_NEAR(scanned[0].time, std::sqrt(2 * height / p.gravity), 1e-12);
+        EXPECT_NEAR(scanned[0].time, fall, 1e-12);
       Simulation<double> kept(engine, s);
       for (const Event<double>& e : scanned)
       {
@@ -842,6 +856,10 @@ void placedBallsFallWhereTheyAre(const std::shared_ptr<const TableModel>& table)
         EXPECT_NEAR(b.r.z(), p.cushion_height + R, 1e-12) << "on the rail's top";
       if (place.kind != EventKind::BallSlate)
         EXPECT_FALSE(b.inPlay());
+      else if (place.throw_to.isZero())
+        EXPECT_TRUE(b.inPlay());
+      else  // a throw comes down on the cloth's centre (and may bounce on and off the table)
+        EXPECT_NEAR((engine.ballAt(s, 0, fall).r.head<2>() - centre).norm(), 0.0, 1e-9);
     }
 }
 }  // namespace
@@ -850,7 +868,8 @@ TEST(AirborneWalls, ABallPlacedInTheAirFallsWhereItIs)
 {
   // On each kind of table (pool of two sizes, with pockets; carom, without): over the cloth, the
   // rails on every side, the corners where there is no pocket, the table's outer corners, beyond
-  // its edge and far off it, and over and inside every pocket's capture circle.
+  // its edge and far off it, and over and inside every pocket's capture circle; and thrown from
+  // over the rails and corners back onto the cloth.
   for (const auto& table :
        {sevenFoot(), std::make_shared<const TableModel>(TableModel::pool("9ft", 2.54, 1.27, 0.118, 0.137)),
         std::make_shared<const TableModel>(TableModel::carom("carom", 2.84, 1.42))})

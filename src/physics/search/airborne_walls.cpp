@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/models/flight.hpp"
 #include "physics/search/contact_times.hpp"
 
 namespace cue_sim
@@ -35,10 +36,12 @@ public:
       keep(S(0), Candidate<S>::Overboard, 0);
       return;
     }
-    // Beyond both cushions' lines at once and clear of the noses (placed over a corner's rail, or
-    // behind a corner pocket outside its capture circle): no cushion's line runs beside it for a
-    // segment to find it over its top, so it comes down now where departureOf says.
-    if (!touching_ && aboveTop(S(0)) > S(0) && beyondBothCushionLines() && !inACaptureCircle())
+    // Beyond both cushions' lines at once, clear of the noses and coming down there (placed over
+    // a corner's rail, or behind a corner pocket outside its capture circle): no cushion's line
+    // runs beside it for a segment to find it over its top, so it comes down now where
+    // departureOf says.
+    if (!touching_ && aboveTop(S(0)) > S(0) && beyondBothCushionLines() && !inACaptureCircle() &&
+        comesDownBeyondTheCushions())
     {
       keep(S(0), Candidate<S>::Overboard, 0);
       return;
@@ -101,8 +104,7 @@ private:
     return best;
   }
 
-  /// The centre's height above the walls' top at tau (the path's height is the ball's lowest
-  /// point's, R below the centre).
+  /// Whether the centre is beyond the cushions' lines on both axes now (a corner).
   bool beyondBothCushionLines() const
   {
     const auto beyond = [&](int axis) { return p_.c0[axis] < g_.cloth_low[axis] || p_.c0[axis] > g_.cloth_high[axis]; };
@@ -115,6 +117,19 @@ private:
         return true;
     return false;
   }
+  /// Whether the flight comes down to the rails' top (where departureOf lands it) beyond the
+  /// cushions' lines, rather than back over the cloth: a ball placed over a rail and thrown
+  /// towards the table flies over the nose and lands on the cloth.
+  bool comesDownBeyondTheCushions() const
+  {
+    S tau = timeToHeight(R_ + p_.h0, p_.h1, R_ + g_.rail_height, S(-2) * p_.h2);
+    if (!std::isfinite(static_cast<double>(tau)))
+      tau = S(0);  // below the rails' top already: it comes down where it is
+    const Vec2<S> spot = p_.at(tau);
+    return !((spot.array() >= g_.cloth_low.array()).all() && (spot.array() <= g_.cloth_high.array()).all());
+  }
+  /// The centre's height above the walls' top at tau (the path's height is the ball's lowest
+  /// point's, R below the centre).
   S aboveTop(S tau) const { return p_.heightAt(tau) + R_ - g_.nose_height; }
 
   void segment(const Segment& seg, std::size_t k)
@@ -167,7 +182,8 @@ private:
     // Over the top: the centre crosses the nose's line above it, beside the cushion or over the
     // jaws and posts at its ends (where a flight over them would otherwise come down behind the
     // cushion's line; where the ball lands, a pocket included, departureOf decides).
-    if (across[0] <= S(0) && aboveTop(S(0)) > S(0) && along[0] >= -ends && along[0] <= seg.length + ends)
+    if (across[0] <= S(0) && aboveTop(S(0)) > S(0) && along[0] >= -ends && along[0] <= seg.length + ends &&
+        comesDownBeyondTheCushions())
       keep(S(0), Candidate<S>::Overboard, k);  // over the cushion's top already (placed there)
     else if (across[0] > S(0))
     {

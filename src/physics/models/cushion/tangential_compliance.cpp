@@ -158,10 +158,18 @@ private:
   {
   public:
     StuckSpring(const TangentState<S>& state, S kappa, S eta, S limit)
-      : psi_(state.psi), kappa_(kappa), x_(state.spring), v_(state.slip / eta), limit_(limit)
+      : psi_(state.psi),
+        kappa_(kappa),
+        eta_(eta),
+        x_(state.spring),
+        slip_(state.slip),
+        v_(state.slip / eta),
+        limit_(limit)
     {
     }
     S stretch(S cos_u, S sin_u) const { return x_ * cos_u + v_ * sin_u; }
+    /// The contact's slip: s_a cos u - eta x_a sin u.
+    S slip(S cos_u, S sin_u) const { return slip_ * cos_u - eta_ * x_ * sin_u; }
     S amplitude() const { return std::hypot(x_, v_); }
     void phaseAt(S psi, S& cos_u, S& sin_u) const
     {
@@ -178,7 +186,7 @@ private:
     }
 
   private:
-    S psi_, kappa_, x_, v_, limit_;
+    S psi_, kappa_, eta_, x_, slip_, v_, limit_;
   };
 
   /// A psi and the excess there.
@@ -222,18 +230,13 @@ private:
     }
   }
 
-  S stretchAt(const TangentState<S>& state, S kappa, S psi) const
-  {
-    const S u = kappa * (psi - state.psi);
-    return state.spring * std::cos(u) + state.slip / eta_ * std::sin(u);
-  }
-
   void moveStuck(TangentState<S>& state, S kappa, S psi) const
   {
-    const S u = kappa * (psi - state.psi);
-    const S slip = state.slip * std::cos(u) - eta_ * state.spring * std::sin(u);
-    state.spring = stretchAt(state, kappa, psi);
-    state.slip = slip;
+    const StuckSpring spring(state, kappa, eta_, limit_);
+    S cos_u, sin_u;
+    spring.phaseAt(psi, cos_u, sin_u);
+    state.spring = spring.stretch(cos_u, sin_u);
+    state.slip = spring.slip(cos_u, sin_u);
     state.psi = psi;
   }
 
