@@ -3,6 +3,8 @@
 // motion-state switches are located on each accepted step's dense output (cubic Hermite in
 // position and in velocity), the step is then redone exactly to the event, and the event is
 // resolved with the engine's own models.
+#include "physics/numerics/dormand_prince.hpp"
+
 #include <array>
 #include <limits>
 
@@ -42,19 +44,8 @@ BallVector rate(const StepperModel& m, Motion motion, const BallVector& y)
   return f;
 }
 
-// The Dormand-Prince tableau.
-constexpr double c[7] = {0, 1.0 / 5, 3.0 / 10, 4.0 / 5, 8.0 / 9, 1, 1};
-constexpr double a[7][6] = {
-    {0, 0, 0, 0, 0, 0},
-    {1.0 / 5, 0, 0, 0, 0, 0},
-    {3.0 / 40, 9.0 / 40, 0, 0, 0, 0},
-    {44.0 / 45, -56.0 / 15, 32.0 / 9, 0, 0, 0},
-    {19372.0 / 6561, -25360.0 / 2187, 64448.0 / 6561, -212.0 / 729, 0, 0},
-    {9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656, 0},
-    {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84},
-};
-// Fifth-order weights minus the embedded fourth-order ones: the local error estimate.
-constexpr double e[7] = {71.0 / 57600, 0, -71.0 / 16695, 71.0 / 1920, -17253.0 / 339200, 22.0 / 525, -1.0 / 40};
+using dormand_prince::kA;
+using dormand_prince::kE;
 
 struct Step
 {
@@ -76,14 +67,14 @@ Step takeStep(const StepperModel& m, const std::vector<Ball<double>>& balls, dou
     {
       BallVector y = y0;
       for (int j = 0; j < s; ++j)
-        y += h * a[s][j] * k[j];
+        y += h * kA[s][j] * k[j];
       k[s] = rate(m, b.motion, y);
     }
     BallVector y1 = y0, error = BallVector::Zero();
     for (int s = 0; s < 7; ++s)
     {
-      y1 += h * a[6][s < 6 ? s : 0] * (s < 6 ? k[s] : BallVector::Zero());
-      error += h * e[s] * k[s];
+      y1 += h * kA[6][s < 6 ? s : 0] * (s < 6 ? k[s] : BallVector::Zero());
+      error += h * kE[s] * k[s];
     }
     if (b.moving())
       for (int i = 0; i < 9; ++i)

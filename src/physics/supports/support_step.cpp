@@ -4,25 +4,17 @@
 #include <array>
 #include <cmath>
 
+#include "physics/numerics/dormand_prince.hpp"
+
 namespace cue_sim
 {
 namespace physics
 {
 namespace
 {
-// The Dormand-Prince tableau (the fifth-order solution's weights are its last row).
-constexpr double kC[7] = {0, 1.0 / 5, 3.0 / 10, 4.0 / 5, 8.0 / 9, 1, 1};
-constexpr double kA[7][6] = {
-    {0, 0, 0, 0, 0, 0},
-    {1.0 / 5, 0, 0, 0, 0, 0},
-    {3.0 / 40, 9.0 / 40, 0, 0, 0, 0},
-    {44.0 / 45, -56.0 / 15, 32.0 / 9, 0, 0, 0},
-    {19372.0 / 6561, -25360.0 / 2187, 64448.0 / 6561, -212.0 / 729, 0, 0},
-    {9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656, 0},
-    {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84},
-};
-// The fifth-order weights less the embedded fourth-order ones: the local error's estimate.
-constexpr double kE[7] = {71.0 / 57600, 0, -71.0 / 16695, 71.0 / 1920, -17253.0 / 339200, 22.0 / 525, -1.0 / 40};
+using dormand_prince::kA;
+using dormand_prince::kC;
+using dormand_prince::kE;
 
 /// Steps tried before the shortest is taken whatever its error: a step is halved at most this often
 /// from its first try.
