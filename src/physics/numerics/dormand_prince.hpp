@@ -1,8 +1,8 @@
 // Dormand and Prince's embedded Runge-Kutta 5(4) tableau (Dormand and Prince 1980; Hairer,
-// Norsett and Wanner, "Solving Ordinary Differential Equations I", II.5), shared by every
-// integrator in the project: the resting contacts' (supports/support_step.cpp), the integrated
-// impacts' (models/frictional_impact.cpp) and the work-precision chart's time stepper. The
-// fifth-order solution's weights are the last row of kA (the method is "first same as last").
+// Norsett and Wanner, "Solving Ordinary Differential Equations I", II.5), shared by the
+// project's integrators: the resting contacts' (supports/support_step.cpp) and the work-precision
+// chart's time stepper (evaluation/dormand_prince.cpp). The fifth-order solution's weights are
+// the last row of kA (the method is "first same as last").
 #pragma once
 
 namespace cue_sim
