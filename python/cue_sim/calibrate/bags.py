@@ -2,8 +2,9 @@
 (launch/calibration_record.launch), or any bag with the same topics.
 
 Each strike on the strikes topic (cue_sim/ExecutedShot, the node's ~shots) starts a shot; its
-track runs from `before` seconds ahead of the strike until the next shot's track begins, the bag
-ends, or `longest` seconds have passed. The balls' positions come from one source:
+track runs from `before` seconds ahead of the strike until the next shot's track begins, the
+table is placed anew (~set_state or a reset: the table's state shows balls where they could not
+have rolled), the bag ends, or `longest` seconds have passed. The balls' positions come from one source:
 
 - ``ground_truth``: the simulated camera's cue_sim/CameraGroundTruth (each ball with its id, where
   it is in view);
@@ -19,7 +20,7 @@ requested shot is kept as the track's `commanded` (what an execution-noise fit c
 """
 from __future__ import annotations
 
-from typing import Dict, List, Optional, Sequence
+from typing import Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -34,6 +35,12 @@ SHOTS_TOPIC = "/table/shots"
 #: The node's camera's shutter time by default (config/table_node.yaml, ~camera/exposure) [s].
 NODE_EXPOSURE = 0.004
 STATE_TOPIC = "/table/state"
+#: A ball that moved between two table states further than its speed at either, sped up by
+#: PLACEMENT_KICK over the interval, carries it, plus PLACEMENT_ROUNDING, was placed there.
+#: [m/s^2]: far above the cloth's and cushions' decelerations, so a collision's kick is
+#: counted in the states' speeds; [m]: the states' rounding.
+PLACEMENT_KICK = 100.0
+PLACEMENT_ROUNDING = 1e-4
 #: A ball frame lower than this share of a radius above the cloth is a pocketed ball's (the node
 #: puts those below the cloth): not seen.
 POCKETED_HEIGHT_SHARE = 0.5
@@ -106,6 +113,40 @@ def _state_before(messages, state_topic: str, stamp: float) -> Optional[Dict[int
     return {int(b.id): np.array([b.position.x, b.position.y]) for b in last.balls if not b.pocketed}
 
 
+def _placements(messages, state_topic: str) -> List[Tuple[float, float]]:
+    """Each placement (a table state whose balls stand where they could not have rolled to from
+    the one before, or a different set of balls) as the stamps of the states either side of it."""
+    last = None
+    out = []
+    for topic, m in messages:
+        if topic != state_topic:
+            continue
+        if last is not None and _placed_between(last, m):
+            out.append((last.header.stamp.to_sec(), m.header.stamp.to_sec()))
+        last = m
+    return out
+
+
+def _placed_between(before, after) -> bool:
+    dt = max(0.0, after.header.stamp.to_sec() - before.header.stamp.to_sec())
+    earlier = {int(b.id): b for b in before.balls}
+    later = {int(b.id): b for b in after.balls}
+    if set(earlier) != set(later):
+        return True
+    for ball_id, b in later.items():
+        a = earlier[ball_id]
+        if a.pocketed != b.pocketed:
+            return a.pocketed  # one back out of a pocket was placed; one going in fell
+        if a.pocketed:
+            continue
+        moved = np.linalg.norm([b.position.x - a.position.x, b.position.y - a.position.y, b.position.z - a.position.z])
+        speed = max(np.linalg.norm([a.velocity.x, a.velocity.y, a.velocity.z]),
+                    np.linalg.norm([b.velocity.x, b.velocity.y, b.velocity.z]))
+        if moved > (speed + PLACEMENT_KICK * dt) * dt + PLACEMENT_ROUNDING:
+            return True
+    return False
+
+
 def tracks_from_bag(path, source: str = "detections", topic: Optional[str] = None, shots_topic: str = SHOTS_TOPIC,
                     state_topic: str = STATE_TOPIC, known: Sequence[str] = (), before: float = 0.5,
                     longest: float = 15.0, table_frame: str = "table", ball_frame_prefix: str = "ball_",
@@ -130,11 +171,16 @@ def tracks_from_bag(path, source: str = "detections", topic: Optional[str] = Non
         end = bag.get_end_time()
     strikes = _strikes(messages, shots_topic)
     frames = _frames(messages, source, topic, table_frame, ball_frame_prefix, ball_radius)
+    placements = _placements(messages, state_topic)
     tracks = []
     for index, (stamp, shot) in enumerate(strikes):
         commanded = _shot_fields(shot.requested)
         begin = stamp - before
         finish = min(strikes[index + 1][0] - before if index + 1 < len(strikes) else end, stamp + longest)
+        # A placement after the strike ends the track (the balls seen after it stand for the next
+        # shot); one less than `before` ahead of it starts the track after it.
+        finish = min([finish] + [last for last, _ in placements if last >= stamp])
+        begin = max([begin] + [first for _, first in placements if first <= stamp])
         mine = [(s, f) for s, f in frames if begin <= s <= finish]
         name = f"{path} shot {index}"
         if source == "detections":
