@@ -41,6 +41,8 @@ target_link_libraries(accuracy_tests cue_sim_evaluation gtest_main)
 
 catkin_add_gtest(evaluation_tests test/evaluation/test_soak.cpp)
 target_link_libraries(evaluation_tests cue_sim_soak gtest_main)
+# When a campaign's shot must have ended (src/evaluation/soak/shot_ending.hpp) is tested on its own too.
+target_include_directories(evaluation_tests PRIVATE src)
 target_compile_definitions(evaluation_tests PRIVATE CUE_SIM_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 
 catkin_add_gtest(scene_tests

@@ -10,6 +10,7 @@
 #include "cue_sim/physics/engine.hpp"
 #include "cue_sim/physics/simulation.hpp"
 #include "cue_sim/table_description/table_catalog.hpp"
+#include "evaluation/soak/shot_ending.hpp"
 
 using namespace cue_sim;
 using namespace cue_sim::evaluation;
@@ -191,6 +192,27 @@ TEST(Soak, AShotThatCannotEndByPhysicsIsToldApart)
     EXPECT_FALSE(check.at_rest);
     EXPECT_NE(check.endless.find(c.why), std::string::npos) << check.endless;
   }
+}
+
+TEST(Soak, AnEndlessShotsSteadyEventsAreToldFromAStorm)
+{
+  // A shot that cannot end may reach the event limit before its stopping time: its events come
+  // steadily (balls on a frictionless cloth meeting cushions and each other). Soak seed 12's shot
+  // 39701 did instead end in a storm: a ball spinning at 22 rad/s on a frictionless cloth,
+  // wedged by mu_cushion 4.6 in a carom table's corner, meeting its two cushions 25 ns apart at
+  // 2e-9 m/s. That stays a violation.
+  std::vector<double> steady, corner;
+  for (int k = 0; k < 5000; ++k)
+  {
+    steady.push_back(20.0 + 0.0009 * k);
+    corner.push_back(24.5798 + 2.48e-8 * k);
+  }
+  EXPECT_FALSE(endsInAStorm(steady));
+  EXPECT_TRUE(endsInAStorm(corner));
+  corner.resize(500);  // too few to tell
+  EXPECT_FALSE(endsInAStorm(corner));
+  steady.insert(steady.end(), corner.begin(), corner.end());
+  EXPECT_FALSE(endsInAStorm(steady));
 }
 
 TEST(Soak, ASlowShotRunsUntilItsCoefficientsStopIt)

@@ -35,7 +35,8 @@ struct Violation
   /// still_moving (moving when every ball's coefficients must have stopped it, none of them zero),
   /// not_repeatable (advanced in steps, or copied mid-shot, it did not give the same events and
   /// state bit for bit), scan_mismatch (the kept search and the full scan of every ball and pair
-  /// disagree), event_limit, invalid_start (the campaign made a scene validation refuses),
+  /// disagree), event_limit (unless the shot cannot end by physics and its events were not a
+  /// storm at one instant: then it is endless), invalid_start (the campaign made a scene validation refuses),
   /// invalid_end (the balls at rest make a scene validation refuses), error (anything thrown).
   std::string kind;
   std::string detail;

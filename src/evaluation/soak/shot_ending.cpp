@@ -19,6 +19,12 @@ constexpr double kStopMargin = 2.0;
 /// No shot runs longer than this [s] of simulated time (a ball at 6 m/s rolling against a resistance
 /// of 1e-3 under a tenth of the Earth's gravity stops after 6e4 s).
 constexpr double kLongestShot = 1e5;
+/// An event storm: this many events within this span [s] of simulated time. A shot that cannot
+/// end meets cushions and balls at most a few hundred times a second (a ball at the registry's
+/// 12 m/s crosses its own radius of 1 mm in a tenth of a millisecond); a storm's events are
+/// rounding apart.
+constexpr std::size_t kStormEvents = 1000;
+constexpr double kStormSpan = 1e-3;
 
 /// Time [s] for a motion of size `amount` to be taken out at `rate` per second; none if the rate is
 /// zero (that motion never stops: endlessByPhysics).
@@ -62,6 +68,13 @@ std::string endlessByPhysics(const physics::TableState<double>& state, const phy
       return ball + " spins with mu_spin = 0";
   }
   return "";
+}
+
+bool endsInAStorm(const std::vector<double>& times)
+{
+  if (times.size() < kStormEvents)
+    return false;
+  return times.back() - times[times.size() - kStormEvents] < kStormSpan;
 }
 
 }  // namespace evaluation

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "cue_sim/physics/physics_params.hpp"
 #include "cue_sim/physics/table_state.hpp"
@@ -21,6 +22,11 @@ double stoppingTime(const physics::TableState<double>& struck, const physics::Ph
 /// ever once its slide ends), slides with no sliding friction or spins with no spin friction (it may
 /// go on hitting the others for ever); empty if no ball's motion goes on for ever by its coefficients.
 std::string endlessByPhysics(const physics::TableState<double>& state, const physics::PhysicsParams<double>& p);
+
+/// Whether the last kStormEvents of `times` (events' times, in order) fell within kStormSpan of
+/// simulated time: an event storm at one instant, which is a defect whatever the coefficients,
+/// not the steady events of a shot that cannot end.
+bool endsInAStorm(const std::vector<double>& times);
 
 }  // namespace evaluation
 }  // namespace cue_sim
