@@ -329,6 +329,8 @@ void EventResolver<S>::resolveWall(Ball<S>& ball, const Event<S>& event)
   if (flying)
     ball.v.z() = S(0);
   wallImpact(ball, normal);
+  if (!flying)
+    cornerImpact(ball);
   if (flying)
     ball.v.z() = v_before.z();
   settleMotion(ball, params_.ball_radius);
@@ -352,6 +354,39 @@ void EventResolver<S>::wallImpact(Ball<S>& ball, const Vec3<S>& normal) const
   for (int impulse = 0; impulse == 0 || (impulse < kMaxWallImpulses && ball.v.dot(normal) < -zeroSpeed<S>()); ++impulse)
     engine_.cushionModel().resolve(ball, normal, params_);
   stopClosing(ball, normal);
+}
+
+template <typename S>
+void EventResolver<S>::cornerImpact(Ball<S>& ball) const
+{
+  // A ball touching two walls at once (a corner, a jaw beside its cushion) meets them as one
+  // impact: each wall's impulses in turn while it closes on it, as the impact groups take
+  // theirs, and what kMaxWallImpulses rounds leave closing, the walls stop. Met one wall at a
+  // time, a ball spun against both by friction above one (mu_cushion 4.6 on a frictionless
+  // carom cloth, soak seed 12, shot 39701) bounced between them every 25 ns for ever.
+  const std::vector<Vec3<S>> walls = touchingWalls(ball);
+  if (walls.size() < 2)
+    return;
+  for (int round = 0; round < kMaxWallImpulses; ++round)
+  {
+    bool any = false;
+    for (const Vec3<S>& wall : walls)
+      if (ball.v.dot(wall) < -zeroSpeed<S>())
+      {
+        engine_.cushionModel().resolve(ball, wall, params_);
+        any = true;
+      }
+    if (!any)
+      return;
+  }
+  for (int sweep = 0; sweep < kInelasticSweeps; ++sweep)
+  {
+    bool any = false;
+    for (const Vec3<S>& wall : walls)
+      any = stopClosing(ball, wall) || any;
+    if (!any)
+      return;
+  }
 }
 
 template <typename S>

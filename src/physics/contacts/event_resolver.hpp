@@ -138,6 +138,9 @@ private:
   /// longer closes; what kMaxWallImpulses of them leave of its motion into the wall, the wall
   /// stops.
   void wallImpact(Ball<S>& ball, const Vec3<S>& normal) const;
+  /// After a wall's impact, a ball on the cloth that touches another wall too meets them all as
+  /// one impact (see the definition).
+  void cornerImpact(Ball<S>& ball) const;
   void pocketBall(Ball<S>& ball, int pocket);
   bool heldHere(int index) const { return std::find(held_here_.begin(), held_here_.end(), index) != held_here_.end(); }
   void changed(int index) { (context_.changed ? *context_.changed : changed_here_).push_back(index); }
