@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace cue_sim
 {
@@ -214,6 +215,7 @@ typename FrictionalImpact<S, Contacts, Bodies>::Impulses FrictionalImpact<S, Con
   // step is halved until that is within the tolerance and no friction works with its slip; the
   // two half steps are taken. The shortest step is taken as it is, or without friction if that
   // would work with a slip.
+  S last_error = std::numeric_limits<S>::infinity();
   for (int halving = 0;; ++halving, dp /= S(2))
   {
     Impulses full = step(from, dp);
@@ -228,8 +230,15 @@ typename FrictionalImpact<S, Contacts, Bodies>::Impulses FrictionalImpact<S, Con
     error = ((velocity_per_impulse_ * difference).norm() + radius_ * (spin_per_impulse_ * difference).norm()) /
             speed_scale_;
     const bool dissipative = frictionWorksAgainstTheSlips(from, halves);
-    if (dissipative && (error <= tolerance || halving >= kMaxHalvings))
+    // An error that falls no faster than the step as it is halved (first order, not the
+    // method's second) comes from a switch inside the step that halving cannot remove: contacts
+    // switching between sticking, sliding and unloaded in a sliding mode. Below
+    // kSlidingModeStep of the frictionless impulse such a step is taken as it is.
+    const bool switching = error > last_error / S(kSecondOrderFall) && dp <= S(kSlidingModeStep) * total_;
+    if (dissipative && (error <= tolerance || halving >= kMaxHalvings || switching))
       return halves;
+    // One whose friction would work with a slip however short it is made is taken without
+    // friction after kMaxHalvings.
     if (halving >= kMaxHalvings)
     {
       Impulses next = from;
@@ -237,6 +246,7 @@ typename FrictionalImpact<S, Contacts, Bodies>::Impulses FrictionalImpact<S, Con
       error = 0;
       return next;
     }
+    last_error = error;
   }
 }
 
@@ -247,6 +257,7 @@ void FrictionalImpact<S, Contacts, Bodies>::integrate(S e_work, S tolerance)
   if (!(approach0 > S(0)))
     return;
   const S total = (S(1) + e_work) * approach0 / frictionlessRate();  // without friction
+  total_ = total;
   S next_step = total / S(kFirstSteps);
 
   // W, the work the normal force has taken: approach * dP summed. Each step goes straight from

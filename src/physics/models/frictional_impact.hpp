@@ -89,6 +89,11 @@ private:
   static constexpr double kCoulombAgreement = 1e-12;
   /// The first step: this share of the frictionless impulse.
   static constexpr int kFirstSteps = 16;
+  /// A halved step's error falls by 8 at second order; one that falls by less than this is
+  /// first order: a switch inside the step. Below this share of the frictionless impulse a step
+  /// with such a switch is taken as it is (see controlledStep).
+  static constexpr double kSecondOrderFall = 4;
+  static constexpr double kSlidingModeStep = 1.0 / 1024;
   /// Steps an impact may take.
   static constexpr int kMaxSteps = 16384;
   /// A friction's work within rounding of none, per unit impulse and unit of the impact's speed
@@ -156,6 +161,7 @@ private:
   std::array<S, Contacts> mu_;
   std::array<Eigen::Matrix<S, 2, 2>, Contacts> stop_;  ///< friction impulse per unit slip that stops it
   S radius_, speed_scale_;
+  S total_ = 0;  ///< the frictionless impulse of the impact being integrated
   Impulses impulses_ = Impulses::Zero();
   /// Where solvedContactByContact starts: the assignment it found last.
   mutable int assignment_hint_ = 0;
