@@ -56,6 +56,8 @@ inline std::vector<Event<double>> runChecked(const Engine<double>& engine, Table
       const Ball<double> a = engine.ballAt(s, i, t);
       EXPECT_TRUE(isFinite(a.r) && isFinite(a.v) && isFinite(a.w)) << "ball " << a.id << " at " << t;
       EXPECT_GE(a.r.z(), R - 1e-12) << "ball " << a.id << " below the slate at t = " << t;
+      if (a.airborne())  // between events too: a wall met late is a ball inside it for a while
+        EXPECT_EQ(engine.table().whyInTheWalls(a.r, R, p.cushion_height), "") << "ball " << a.id << " at t = " << t;
       for (std::size_t j = i + 1; j < s.balls.size(); ++j)
       {
         if (s.balls[j].inPlay())

@@ -129,6 +129,14 @@ public:
   /// behind a cushion, a jaw or a pocket); otherwise why not. Distances within `tolerance` [m]
   /// count as touching.
   std::string whyNotPlaceable(const Eigen::Vector2d& p, double ball_radius, double tolerance = 1e-9) const;
+  /// Empty unless a ball of radius R in the air with its centre at `r` reaches into a wall by
+  /// more than `tolerance` [m]: a straight cushion is the block behind its nose line, from the
+  /// slate to the noses' height `nose_height`, along its length (its top running back to the
+  /// table's edge where the rails are flush with the noses); a jaw or post the cylinder of its
+  /// radius as high. Beyond the table's edge there is no wall. Where the rails are not flush only
+  /// the faces and the noses' edges count.
+  std::string whyInTheWalls(const Eigen::Vector3d& r, double ball_radius, double nose_height,
+                            double tolerance = 1e-9) const;
 
   /// Empty if the cushions, jaws and pockets close the playing area (every way out from the
   /// cloth's centre across its edge meets one, within 1 m of the edge) and every straight

@@ -65,6 +65,14 @@ public:
       if (b.airborne() && b.r.z() < R - kOverlapTolerance)
         note(found, "below_slate", describe(when, t) + ": ball " + std::to_string(b.id) + " is below the slate");
     for (const Ball<double>& b : balls_)
+      if (b.inPlay() && b.airborne())
+      {
+        const std::string where =
+            engine_.table().whyInTheWalls(b.r, R, engine_.params().cushion_height, kOverlapTolerance);
+        if (!where.empty())
+          note(found, "off_table", describe(when, t) + ": ball " + std::to_string(b.id) + " " + where);
+      }
+    for (const Ball<double>& b : balls_)
       if (b.inPlay() && !b.airborne())  // a ball in the air may fly over a cushion or a pocket
       {
         const std::string where = engine_.table().whyNotPlaceable(b.r.head<2>(), R, kOverlapTolerance);

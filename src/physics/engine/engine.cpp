@@ -165,7 +165,12 @@ std::string whyBallInvalid(const TableModel& table, const Ball<S>& b, S R, S nos
   else if (std::abs(static_cast<double>(b.r.z() - R)) > tolerance)
     return label + ": a ball on the cloth has z = R = " + std::to_string(static_cast<double>(R)) + " m";
   if (b.airborne() && b.r.z() > nose_height)
-    return {};  // above the cushions' noses: over the rails is a place it may be
+  {
+    // Above the cushions' noses: over the rails is a place it may be, clear of the walls.
+    const std::string where = table.whyInTheWalls(b.r.template cast<double>(), static_cast<double>(R),
+                                                  static_cast<double>(nose_height), tolerance);
+    return where.empty() ? where : label + ": " + where;
+  }
   const std::string where =
       table.whyNotPlaceable(b.r.template head<2>().template cast<double>(), static_cast<double>(R), tolerance);
   return where.empty() ? where : label + ": " + where;

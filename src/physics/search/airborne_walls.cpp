@@ -156,12 +156,18 @@ private:
     const Poly4<S> edge = distanceGap<S>(Vec2<S>(across[0], S(0)), Vec2<S>(across[1], S(0)), Vec2<S>(across[2], S(0)),
                                          p_.h0 + R_ - g_.nose_height, p_.h1, p_.h2, R_);
     const S edge_touch = touchTolerance(R_ * R_);
+    // Within the edge's reach at the start, beyond the cushion's end (over its jaw, which meets it
+    // there): the edge is met where the gap next comes down through zero beside the cushion. The
+    // gap's return to its start, which contactTime takes for a touching ball, is later, and the
+    // ball 0.3 mm into the nose's edge by then (a ball off a jaw onto the next cushion's edge).
+    const bool within_reach = edge[0] < -edge_touch && !beside(S(0));
     S from = S(0);
     for (int root = 0; root < 4; ++root)
     {
       // Touching and pressed on by gravity, it is met now (as a ball pressed on a cushion is).
-      const S tau = root == 0 ? contactTime(edge, limit(), -S(2) * R_ * zeroSpeed<S>(), edge_touch, true)
-                              : firstDownCrossing(edge, from, limit());
+      const S tau = root == 0 && !within_reach
+                        ? contactTime(edge, limit(), -S(2) * R_ * zeroSpeed<S>(), edge_touch, true)
+                        : firstDownCrossing(edge, from, limit());
       if (!(tau <= limit()))
         break;
       if (evaluatePoly(across, tau) >= S(0) && aboveTop(tau) > S(0) && beside(tau))
@@ -169,11 +175,11 @@ private:
         keep(tau, Candidate<S>::Segment, k);
         break;
       }
-      // Inside the edge's reach at the start and not met there (low beside a pocket's mouth,
+      // Touching the edge's reach at the start and not met there (low beside a pocket's mouth,
       // where the jaw is met instead): the first root found may be the gap's return to its start,
       // not its crossing. The search starts again from the start for the ball coming down onto
       // the edge once beside the cushion.
-      if (root == 0 && edge[0] <= edge_touch)
+      if (root == 0 && !within_reach && edge[0] <= edge_touch)
         continue;
       if (!(tau > from))
         break;

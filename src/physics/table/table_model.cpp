@@ -253,6 +253,46 @@ std::string TableModel::whyNotPlaceable(const Eigen::Vector2d& p, double R, doub
          " lies between it and the cloth";
 }
 
+std::string TableModel::whyInTheWalls(const Eigen::Vector3d& r, double R, double h, double tolerance) const
+{
+  const Eigen::Vector2d c = r.head<2>();
+  if ((c.array() < edge_.low.array()).any() || (c.array() > edge_.high.array()).any())
+    return {};
+  const bool flush = !std::isfinite(edge_.rail_height);
+  const double up = r.z() - h;
+  // From the wall, by how far the centre is out of its face (or beyond its axis's reach) and up
+  // from its top; negative inside it.
+  const auto distance = [&](double out) {
+    if (out >= 0)
+      return up > 0 ? std::hypot(out, up) : out;
+    if (!flush)
+      return R;  // behind the nose over a rail of another height: not looked at
+    return up > 0 ? up : std::max(out, up);
+  };
+  std::ostringstream why;
+  why.precision(17);
+  for (const auto& s : segments_)
+  {
+    const double along = (c - s.start).dot(s.direction);
+    const double d = distance((c - s.start).dot(s.normal));
+    if (along >= 0 && along <= s.length && d < R - tolerance)
+    {
+      why << "in the air " << R - d << " m into " << s.name << " (its nose " << h << " m above the slate)";
+      return why.str();
+    }
+  }
+  for (const auto& post : circles_)
+  {
+    const double d = distance((c - post.centre).norm() - post.radius);
+    if (d < R - tolerance)
+    {
+      why << "in the air " << R - d << " m into " << post.name << " (its top " << h << " m above the slate)";
+      return why.str();
+    }
+  }
+  return {};
+}
+
 std::string TableModel::whyNoPocket(const std::string& name, int& index) const
 {
   index = -1;
