@@ -382,6 +382,48 @@ TEST(Stability, ABallSpunIntoACornerMeetsBothCushionsAsOneImpact)
       }
 }
 
+TEST(Stability, BallsWedgedAcrossTheTableSlideAlongItsCushionsAsOne)
+{
+  // Two large balls touching each other, one on each long cushion, wedged across the table,
+  // sliding along it together with any spin: the walls hold them both ways, so their slip
+  // across is taken out. Held against one wall at a time, the slip was left a few ulps into the
+  // other, and the pair was pressed into it again within nanoseconds, hundreds of times (soak
+  // seed 12, shot 19678: its balls, 0.69 m across on the 9 ft table, 3 million events in 0.65
+  // s on cushions 2e-13 rad from parallel). Every model pair, spins every way.
+  std::mt19937 rng(19678);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  const auto nine_foot = std::make_shared<const TableModel>(TableModel::pool("9ft", 2.54, 1.27, 0.118, 0.137));
+  for (const std::string& ball_ball : ballBallModelNames())
+    for (const std::string& cushion : cushionModelNames())
+      for (int k = 0; k < 8; ++k)
+      {
+        SCOPED_TRACE(ball_ball + "/" + cushion + ", case " + std::to_string(k));
+        const bool on_carom = k % 2 == 1;
+        PhysicsParams<double> p;
+        p.ball_radius = on_carom ? 0.4 : 0.34709503521035645;
+        p.cushion_height = 2 * p.ball_radius - 0.0017;
+        p.mu_ball_b = k < 4 ? 10.0 : p.mu_ball_b;  // shot 19678's grip between the balls
+        p.e_cushion = 0.0152;
+        const Engine<double> engine(on_carom ? carom() : nine_foot, p, {ball_ball, cushion});
+        const double width = on_carom ? 1.42 : 1.27;
+        const double dy = width - 2 * p.ball_radius, dx = std::sqrt(4 * p.ball_radius * p.ball_radius - dy * dy);
+        // Up to 0.2 m/s, on the cushions' middle: they stop short of a pocket's jaws.
+        const double speed = 0.1 * (1 + unit(rng)) * (k % 4 < 2 ? 1 : -1), x = on_carom ? 0.1 : -0.6;
+        TableState<double> s;
+        s.balls.push_back(ball(0, x + dx / 2, width / 2 - p.ball_radius, speed, 0, p));
+        s.balls.push_back(ball(1, x - dx / 2, -width / 2 + p.ball_radius, speed, 0, p));
+        for (Ball<double>& b : s.balls)
+        {
+          b.w = Vec3<double>(unit(rng), unit(rng), unit(rng)) * 2.0;
+          settleMotion(b, p.ball_radius);
+        }
+        ASSERT_EQ(engine.whyInvalid(s), "");
+        // Energy never gained, no overlap, nothing in a cushion or a jaw, to rest in a few events.
+        EXPECT_LT(checkInvariantsEventByEvent(engine, s, 1000), 100);
+        EXPECT_EQ(engine.whyInvalid(s), "");
+      }
+}
+
 TEST(Stability, GrazingAJawAndRollingAlongACushion)
 {
   // A ball rolling along the top cushion past the side pocket: its path is tangent to both of

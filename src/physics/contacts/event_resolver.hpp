@@ -63,6 +63,12 @@ bool stopClosing(Ball<S>& ball, const Vec3<S>& normal)
 /// rounding.
 constexpr double kTouchingSlack = 1e-12;
 
+/// Two walls' normals are parallel within this (1 - |cos|). Opposed, the walls face each other
+/// across the table (the long cushions); alike, a ball touching both touches one surface (a jaw
+/// where the cushion tangent to it ends: within a micrometre of the tangent point, since it
+/// touches both within kTouchingSlack).
+constexpr double kParallelWalls = 1e-6;
+
 /// Impulses of the cushion model one wall contact may take before the wall stops what is left of
 /// the ball's motion into it: each removes a share (1 + e) cos^2(theta) of it, so 64 leave less
 /// than 1e-4 of it unless that share is under 14 % (a nose within 3 % of R of the ball's top).
@@ -213,12 +219,18 @@ private:
   /// Ends an inelastic collapse (EngineLimits::collapse_events): every ball touching the event's
   /// balls (`second` -1 for a wall event) moves as one body, or stops.
   void collapse(S time, int first, int second, bool stop);
-  /// Unit normals (into play) of the cushions and jaws the ball touches.
+  /// Unit normals (into play) of the cushions and jaws the ball touches; a jaw parallel to a
+  /// cushion it touches too (where the cushion ends) is that cushion's surface, not another wall.
   std::vector<Vec3<S>> touchingWalls(const Ball<S>& ball) const;
   /// A sliding ball left on a wall with (almost) no normal speed while its slip drives it back
   /// in stays on the wall: the normal speed is removed and the slip's part into the wall is
   /// turned into spin by the cloth friction the wall balances.
   void holdAgainstWall(Ball<S>& ball, const Vec3<S>& normal) const;
+  /// Whether a wall among `walls` faces the one with this normal across the table.
+  static bool facedAcross(const Vec3<S>& normal, const std::vector<Vec3<S>>& walls);
+  /// A cluster touching walls that face each other across it: its motion and slip across them
+  /// are taken out.
+  void holdAcross(Ball<S>& joined, const Vec3<S>& normal) const;
 
 private:
   const Engine<S>& engine_;
