@@ -32,14 +32,6 @@ Eigen::Isometry3d toIsometry(const urdf::Pose& pose)
   return t;
 }
 
-/// A level pose turned within this [rad] of the table's axes is on them (the cloth must be; a
-/// cushion is put there). A yaw written to 12 decimals, 3.141592653590, turns a cushion by 2e-13
-/// rad, and a ball sliding along it at 0.2 m/s closes on it at 4e-14 m/s, above the engine's
-/// rounding of speeds (zeroSpeed): balls wedged across the table between cushions that face
-/// each other nearly but not quite in parallel were pressed into one of them every nanosecond
-/// (soak seed 12, shot 19678, on the bundled 9 ft table).
-constexpr double kOnTheAxes = 1e-9;
-
 bool startsWith(const std::string& s, const std::string& prefix)
 {
   return s.compare(0, prefix.size(), prefix) == 0;
@@ -62,7 +54,7 @@ public:
     const Eigen::Vector3d top = cloth_pose * Eigen::Vector3d(0, 0, cloth_box.z() / 2);
     if (std::abs(top.z()) > 1e-6)
       fail("the top of link 'cloth' must be at z = 0 in the table frame, it is at z = " + std::to_string(top.z()));
-    if (!isLevel(cloth_pose) || std::abs(std::remainder(yawOf(cloth_pose), M_PI / 2)) > kOnTheAxes)
+    if (!isLevel(cloth_pose) || std::abs(std::remainder(yawOf(cloth_pose), M_PI / 2)) > 1e-9)
       fail("link 'cloth' must be level and aligned with the table axes");
     const bool swapped = std::abs(std::sin(yawOf(cloth_pose))) > 0.5;
     const double length = swapped ? cloth_box.y() : cloth_box.x();
@@ -82,10 +74,9 @@ public:
       }
       if (startsWith(name, "cushion_"))
       {
-        const auto [box_pose, size] = boxOf(*link);
-        if (!isLevel(box_pose))
+        const auto [pose, size] = boxOf(*link);
+        if (!isLevel(pose))
           fail("link '" + name + "' must be level (rotated about z only)");
-        const Eigen::Isometry3d pose = onTheAxesIfNear(box_pose);
         const Eigen::Vector3d start = pose * Eigen::Vector3d(-size.x() / 2, size.y() / 2, 0);
         const Eigen::Vector3d end = pose * Eigen::Vector3d(size.x() / 2, size.y() / 2, 0);
         segments.push_back(TableModel::makeSegment(name, start.head<2>(), end.head<2>()));
@@ -214,19 +205,6 @@ private:
     return (pose.linear().col(2) - Eigen::Vector3d::UnitZ()).norm() < 1e-9;
   }
   static double yawOf(const Eigen::Isometry3d& pose) { return std::atan2(pose.linear()(1, 0), pose.linear()(0, 0)); }
-  /// A level pose within kOnTheAxes of a quarter turn, turned exactly by it: its axes are then
-  /// the table's, to the last bit.
-  static Eigen::Isometry3d onTheAxesIfNear(Eigen::Isometry3d pose)
-  {
-    const double quarters = yawOf(pose) / (M_PI / 2);
-    const double nearest = std::round(quarters);
-    if (std::abs(quarters - nearest) * (M_PI / 2) > kOnTheAxes)
-      return pose;
-    static constexpr int kCos[4] = {1, 0, -1, 0}, kSin[4] = {0, 1, 0, -1};
-    const int quarter = static_cast<int>(nearest) & 3;
-    pose.linear() << kCos[quarter], -kSin[quarter], 0, kSin[quarter], kCos[quarter], 0, 0, 0, 1;
-    return pose;
-  }
 
   const urdf::ModelInterface& model_;
   std::string root_;

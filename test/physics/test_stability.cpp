@@ -388,8 +388,8 @@ TEST(Stability, BallsWedgedAcrossTheTableSlideAlongItsCushionsAsOne)
   // sliding along it together with any spin: the walls hold them both ways, so their slip
   // across is taken out. Held against one wall at a time, the slip was left a few ulps into the
   // other, and the pair was pressed into it again within nanoseconds, hundreds of times (soak
-  // seed 12, shot 19678: its balls, 0.69 m across on the 9 ft table, 3 million events in 0.65
-  // s on cushions 2e-13 rad from parallel). Every model pair, spins every way.
+  // seed 12, shot 19678, whose balls, 0.69 m across on the 9 ft table, made 3 million events in
+  // 0.65 s). Every model pair, spins every way, on tables whose cushions lie on their axes.
   std::mt19937 rng(19678);
   std::uniform_real_distribution<double> unit(-1, 1);
   const auto nine_foot = std::make_shared<const TableModel>(TableModel::pool("9ft", 2.54, 1.27, 0.118, 0.137));

@@ -231,7 +231,8 @@ void EventResolver<S>::holdAcross(Ball<S>& joined, const Vec3<S>& normal) const
   // v.n - R w.(z x n), is then nothing, exactly on walls along the table's axes, and the
   // cluster slides along the walls without being found against either again at once (a slip
   // left a hair into one wall, by rounding, pressed the cluster into it every nanosecond: soak
-  // seed 12, shot 19678). Taking components out removes energy.
+  // seed 12, shot 19678, whose cushions are also 2e-13 rad from parallel, doc/accuracy.md).
+  // Taking components out removes energy.
   const Vec3<S> axis = Vec3<S>::UnitZ().cross(normal);
   joined.v -= joined.v.dot(normal) * normal;
   joined.w -= joined.w.dot(axis) * axis;
