@@ -108,15 +108,17 @@ void EventResolver<S>::moveAsOne(Ball<S>& joined, const std::vector<int>& cluste
       walls.push_back(normal);
   for (const Vec3<S>& normal : walls)
   {
+    if (facedAcross(normal, walls))
+    {
+      holdAcross(joined, normal);  // takes out all the motion and slip across: a hold would be undone
+      continue;
+    }
     const S into = joined.v.dot(normal);
     if (into < -zeroSpeed<S>())
       joined.v -= into * normal;
     settleMotion(joined, params_.ball_radius);
     holdAgainstWall(joined, normal);
   }
-  for (const Vec3<S>& normal : walls)
-    if (facedAcross(normal, walls))
-      holdAcross(joined, normal);
   for (int c : cluster)
   {
     state_.balls[c].v = joined.v;
